@@ -5,13 +5,19 @@
 //! Data flows one way: instance file → [`Region`] → algorithm → [`CycleCover`] →
 //! [`checker`] → result row → statistics → CSV and plots.
 
+pub mod algorithms;
+pub mod bounds;
 pub mod checker;
 pub mod draw;
 pub mod error;
+pub mod exact;
 pub mod generate;
 pub mod gridfile;
+pub mod harness;
 pub mod instance;
+pub mod lawn_check;
 pub mod region;
+pub mod strip_cover;
 pub mod topology;
 pub mod tour;
 pub mod wkt;

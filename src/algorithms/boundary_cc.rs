@@ -1,0 +1,216 @@
+//! `boundary-cc`: the minimum-turn cycle cover of the boundary (Section 4.1 and Theorem 4.1 of
+//! *Optimal covering tours with turn costs*).
+//!
+//! # Construction
+//! A boundary link is the offset, half a pixel inwards, of a maximal boundary edge, shrunk by
+//! half a pixel at each end: on the grid, a maximal run of pixels in one row (column) that all
+//! have their south, or all their north (west, east) side on the boundary; see
+//! [`boundary_links`] for links sharing a line. By Lemma 4.1 an
+//! optimal cycle cover of the boundary contains every link within one of its own links, so it
+//! is the links joined end to end by connecting paths. A link's ports leave it straight on,
+//! outwards (two collinear disjoint links are at turn distance 0); a minimum-weight perfect
+//! matching of the ports under the turn distance joins the links into a cycle cover whose turns
+//! are exactly the matching's weight (all turns are on connecting paths).
+//!
+//! One-pixel links at one pixel may be matched into a cycle that never moves; see
+//! [`drop_still_duplicates`] for how we count and remove those.
+//!
+//! # Guarantee
+//! Exact for the boundary pixels P̄ (Theorem 4.1). When every pixel is a boundary pixel the
+//! cover is a cycle cover of the whole region, and optimal: every cycle cover of the region is
+//! one of its boundary.
+
+use crate::algorithms::endpoint_matching::{COMPLETE_LIMIT, PortMatching, match_ports};
+use crate::algorithms::strips_matching::join_links;
+use crate::algorithms::turn_distance::{Port, bit};
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective};
+use crate::error::{Error, Result};
+use crate::region::{Dir, Region};
+use crate::topology::is_boundary;
+use crate::tour::CycleCover;
+
+/// A boundary link: first and last pixel (west to east, or south to north).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BoundaryLink {
+    pub first: usize,
+    pub last: usize,
+    pub horizontal: bool,
+}
+
+/// The boundary links of the region, in pixel order of their first pixel, horizontal first.
+///
+/// Links along the south and the north side of one row lie on the same line (the row's pixel
+/// centres); where they share a pixel we take their union as one link, since a cycle link
+/// covering one of them passes through the shared pixel and continues along the other (our
+/// grid reading of Lemma 4.1; without it a width-1 ring would need two rounds).
+///
+/// # Complexity
+/// O(N).
+pub fn boundary_links(region: &Region) -> Vec<BoundaryLink> {
+    let mut links = Vec::new();
+    for horizontal in [true, false] {
+        let (back, fwd) = if horizontal {
+            (Dir::W, Dir::E)
+        } else {
+            (Dir::S, Dir::N)
+        };
+        let sides = if horizontal {
+            [Dir::N, Dir::S]
+        } else {
+            [Dir::E, Dir::W]
+        };
+        let on_link = |j: usize| sides.iter().any(|&d| region.neighbor(j, d).is_none());
+        for i in 0..region.len() {
+            if !on_link(i) || region.neighbor(i, back).is_some_and(on_link) {
+                continue;
+            }
+            let mut last = i;
+            while let Some(j) = region.neighbor(last, fwd).filter(|&j| on_link(j)) {
+                last = j;
+            }
+            links.push(BoundaryLink {
+                first: i,
+                last,
+                horizontal,
+            });
+        }
+    }
+    links
+}
+
+/// The minimum-turn cycle cover of the boundary links, with its matching.
+///
+/// # Complexity
+/// The matching dominates: see [`match_ports`].
+pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching)> {
+    let links = boundary_links(region);
+    let mut ports = Vec::with_capacity(2 * links.len());
+    for l in &links {
+        let (back, fwd) = if l.horizontal {
+            (Dir::W, Dir::E)
+        } else {
+            (Dir::S, Dir::N)
+        };
+        ports.push(Port {
+            pixel: l.first,
+            leave: bit(back),
+        });
+        ports.push(Port {
+            pixel: l.last,
+            leave: bit(fwd),
+        });
+    }
+    let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
+    let matching = match_ports(region, &ports, &partner)?;
+    if !matching.complete {
+        return Err(Error::invalid(format!(
+            "boundary-cc is exact only with a complete candidate graph: {} ports exceed {}",
+            ports.len(),
+            COMPLETE_LIMIT
+        )));
+    }
+    let pairs: Vec<(usize, usize)> = links.iter().map(|l| (l.first, l.last)).collect();
+    let cover = join_links(region, &pairs, &ports, &matching)?;
+    Ok((drop_still_duplicates(cover), matching))
+}
+
+/// Removes closed walks of one pixel whose pixel another kept walk visits.
+///
+/// One-pixel links at one pixel can be matched into a cycle that never moves: it costs its
+/// in-place turns (possibly 0) in the matching, but a one-pixel walk counts 4 turns. Such a
+/// walk covers nothing another walk does not, so we drop it when its pixel is visited
+/// elsewhere and keep one otherwise (our treatment of a case the paper does not discuss).
+pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
+    let mut visited: std::collections::HashSet<crate::region::Pixel> = cover
+        .cycles
+        .iter()
+        .filter(|w| w.len() > 1)
+        .flatten()
+        .copied()
+        .collect();
+    let cycles = cover
+        .cycles
+        .into_iter()
+        .filter(|w| w.len() > 1 || visited.insert(w[0]))
+        .collect();
+    CycleCover::new(cycles)
+}
+
+/// `boundary-cc` applies when every pixel is a boundary pixel (then it covers the region).
+pub fn precondition(region: &Region) -> Result<()> {
+    crate::algorithms::merge::connected(region)?;
+    match (0..region.len()).find(|&i| !is_boundary(region, i)) {
+        None => Ok(()),
+        Some(i) => Err(Error::invalid(format!(
+            "boundary-cc covers only boundary pixels, and pixel {} has all four neighbours",
+            region.pixel(i)
+        ))),
+    }
+}
+
+/// Runs `boundary-cc`: the boundary cycle cover (objective `cc-turns`), certificate `w_m`.
+pub fn run(
+    region: &Region,
+    _opts: &crate::algorithms::Options,
+) -> Result<crate::algorithms::Solution> {
+    let (cover, matching) = boundary_cycle_cover(region)?;
+    let mut sol = crate::algorithms::Solution::default();
+    sol.outputs.push(crate::algorithms::Output {
+        objective: crate::algorithms::Objective::CcTurns,
+        cover,
+    });
+    sol.certificates
+        .insert("w_m".to_string(), matching.total as i64);
+    sol.certificates
+        .insert("links".to_string(), (matching.mate.len() / 2) as i64);
+    Ok(sol)
+}
+
+/// The registry entry.
+pub const ALGORITHM: Algorithm = Algorithm {
+    name: "boundary-cc",
+    summary: "minimum-turn cycle cover of the boundary links by a minimum-weight perfect matching (regions of boundary pixels only)",
+    objectives: &[Objective::CcTurns],
+    guarantees: &[Guarantee {
+        objective: Objective::CcTurns,
+        num: 1,
+        den: 1,
+        add: 0,
+        against: Against::Opt,
+        source: "Theorem 4.1 of Optimal covering tours with turn costs",
+    }],
+    precondition: precondition,
+    run,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::checker::{Mode, check};
+
+    #[test]
+    fn links_of_a_rectangle_and_an_l() {
+        assert_eq!(boundary_links(&Region::rectangle(3, 2)).len(), 4);
+        // An L: six boundary edges, the two along the bottom row's sides one link.
+        let l = Region::from_ascii("#.\n##\n");
+        assert_eq!(boundary_links(&l).len(), 4);
+    }
+
+    #[test]
+    fn ring_and_corridor_covers() {
+        // A width-1 ring: one cycle with 4 turns.
+        let ring = Region::from_ascii("####\n#..#\n#..#\n####\n");
+        let (cover, m) = boundary_cycle_cover(&ring).unwrap();
+        let rep = check(&ring, &cover, Mode::Milling);
+        assert!(rep.valid, "{:?}", rep.error);
+        assert_eq!((rep.turns, m.total), (4, 4));
+        // A corridor: out and back, 4 turns.
+        let bar = Region::rectangle(5, 1);
+        let (cover, _) = boundary_cycle_cover(&bar).unwrap();
+        assert_eq!(check(&bar, &cover, Mode::Milling).turns, 4);
+        // One pixel: a still walk, 4 turns.
+        let dot = Region::rectangle(1, 1);
+        let (cover, _) = boundary_cycle_cover(&dot).unwrap();
+        assert_eq!(check(&dot, &cover, Mode::Milling).turns, 4);
+    }
+}

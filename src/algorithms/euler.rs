@@ -1,0 +1,158 @@
+//! An Eulerian multigraph on the pixels of a region and its Euler circuits (Hierholzer).
+//!
+//! The milling constructions of Sections 5–7 of *Lawn mowing and milling* build a connected
+//! multigraph with even degrees (contours, strips, matchings, detours, doubled edges) and walk
+//! it once: the closed walk visits every pixel that has an edge and uses every edge once, so
+//! its length is the number of edges.
+
+use crate::region::{Dir, Pixel, Region};
+use crate::tour::Walk;
+
+/// Edge multiplicities of a multigraph on the grid graph of a region: `mult[i][d]` copies of
+/// the edge from pixel `i` in direction `d` (kept symmetric).
+#[derive(Clone, Debug)]
+pub struct GridMultigraph {
+    mult: Vec<[u32; 4]>,
+}
+
+impl GridMultigraph {
+    /// The empty multigraph on `n` pixels.
+    pub fn new(n: usize) -> Self {
+        GridMultigraph { mult: vec![[0; 4]; n] }
+    }
+
+    /// Copies of the edge from `i` in direction `d`.
+    pub fn count(&self, i: usize, d: Dir) -> u32 {
+        self.mult[i][d.index()]
+    }
+
+    /// Adds one copy of the edge from `i` to its neighbour `j` in direction `d`.
+    pub fn add(&mut self, i: usize, j: usize, d: Dir) {
+        self.mult[i][d.index()] += 1;
+        self.mult[j][d.opposite().index()] += 1;
+    }
+
+    /// Removes one copy of the edge from `i` to `j` (direction `d`); false if there is none.
+    pub fn remove(&mut self, i: usize, j: usize, d: Dir) -> bool {
+        if self.mult[i][d.index()] == 0 {
+            return false;
+        }
+        self.mult[i][d.index()] -= 1;
+        self.mult[j][d.opposite().index()] -= 1;
+        true
+    }
+
+    /// Adds the edge between two adjacent pixels, looked up in `region`.
+    pub fn add_between(&mut self, region: &Region, a: usize, b: usize) {
+        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        self.add(a, b, d);
+    }
+
+    /// Removes one copy of the edge between two adjacent pixels; false if there is none.
+    pub fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
+        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        self.remove(a, b, d)
+    }
+
+    /// Whether the edge between two adjacent pixels has at least one copy.
+    pub fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
+        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        self.count(a, d) > 0
+    }
+
+    /// Adds every step of a closed walk of region pixels (wrap-around included).
+    pub fn add_closed_walk(&mut self, region: &Region, walk: &[usize]) {
+        if walk.len() < 2 {
+            return;
+        }
+        for k in 0..walk.len() {
+            self.add_between(region, walk[k], walk[(k + 1) % walk.len()]);
+        }
+    }
+
+    /// Adds every step of an open path of region pixels.
+    pub fn add_path(&mut self, region: &Region, path: &[usize]) {
+        for w in path.windows(2) {
+            self.add_between(region, w[0], w[1]);
+        }
+    }
+
+    /// Degree of pixel `i` (with multiplicities).
+    pub fn degree(&self, i: usize) -> u32 {
+        self.mult[i].iter().sum()
+    }
+
+    /// Total number of edges (with multiplicities).
+    pub fn edge_count(&self) -> u64 {
+        self.mult.iter().map(|m| u64::from(m[0] + m[1])).sum()
+    }
+
+    /// An Euler circuit starting at `start` (Hierholzer's algorithm), as pixel indices
+    /// without the closing repeat of `start`. Uses up the edges reachable from `start`; the
+    /// caller guarantees even degrees and connectivity.
+    ///
+    /// # Complexity
+    /// O(number of edges + N).
+    pub fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
+        let mut circuit = Vec::new();
+        let mut stack = vec![start];
+        while let Some(&v) = stack.last() {
+            match Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0) {
+                Some(d) => {
+                    let w = region.neighbor(v, d).expect("edges join pixels of the region");
+                    self.remove(v, w, d);
+                    stack.push(w);
+                }
+                None => {
+                    circuit.push(v);
+                    stack.pop();
+                }
+            }
+        }
+        if circuit.len() > 1 {
+            circuit.pop();
+        }
+        circuit
+    }
+
+    /// The Euler circuit as a walk of pixels; a single pixel when there are no edges.
+    pub fn into_walk(mut self, region: &Region, start: usize) -> Walk {
+        self.euler_circuit(region, start).into_iter().map(|i| region.pixel(i)).collect::<Vec<Pixel>>()
+    }
+}
+
+/// Converts a walk given as pixel indices into pixels, ensuring a non-empty walk.
+pub fn indices_to_walk(region: &Region, walk: &[usize]) -> Walk {
+    walk.iter().map(|&i| region.pixel(i)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::checker::{Mode, check};
+    use crate::tour::CycleCover;
+
+    #[test]
+    fn euler_circuit_of_two_squares_sharing_a_pixel() {
+        let r = Region::from_ascii("##.\n###\n.##\n");
+        let idx = |x, y| r.index_of(Pixel::new(x, y)).unwrap();
+        let mut g = GridMultigraph::new(r.len());
+        g.add_closed_walk(&r, &[idx(0, 1), idx(1, 1), idx(1, 2), idx(0, 2)]);
+        g.add_closed_walk(&r, &[idx(1, 0), idx(2, 0), idx(2, 1), idx(1, 1)]);
+        assert_eq!(g.edge_count(), 8);
+        let walk = g.clone().into_walk(&r, idx(0, 1));
+        let rep = check(&r, &CycleCover::tour(walk), Mode::Milling);
+        assert!(rep.valid, "{:?}", rep.error);
+        assert_eq!(rep.length, 8);
+    }
+
+    #[test]
+    fn doubled_edge_is_a_back_and_forth() {
+        let r = Region::rectangle(2, 1);
+        let mut g = GridMultigraph::new(2);
+        g.add(0, 1, Dir::E);
+        g.add(0, 1, Dir::E);
+        assert_eq!(g.degree(0), 2);
+        assert_eq!(g.into_walk(&r, 0), vec![Pixel::new(0, 0), Pixel::new(1, 0)]);
+    }
+}

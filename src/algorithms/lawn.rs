@@ -1,0 +1,679 @@
+//! Section 4 of *Lawn mowing and milling* (Theorems 2 and 3): lawn mowing by a TSP tour of
+//! the lattice cells that meet the grass, and the bounding-box method of Fig. 9.
+//!
+//! S is the set of lattice points whose cells meet the grass ([`required_cells`]): pixel
+//! centres for the unit square, hexagon centres (diameter-2 hexagons) for the unit disk. Any
+//! tour of S mows the lawn (Lemma 1). The TSP heuristics here run on S in the motion's metric
+//! (L1 for the square under rectilinear motion, Euclidean otherwise):
+//!
+//! - `lawn-mst`: double a minimum spanning tree and shortcut (preorder), αTSP = 2;
+//! - `lawn-christofides`: MST plus a minimum-weight perfect matching of its odd-degree nodes
+//!   (rustworkx-core's blossom `max_weight_matching` on the complete graph), Euler circuit,
+//!   shortcut, αTSP = 3/2;
+//! - `lawn-2opt`: 2-opt and Or-opt on k-nearest-neighbour candidates, started from the better
+//!   of the two tours above (from the MST tour alone above [`CHRISTOFIDES_LIMIT`] points);
+//! - `lawn-box`: the concentric rectangles of Fig. 9 over the bounding box, joined by edge
+//!   swaps, and the shorter of that and the Christofides tour, which removes the additive term
+//!   of Theorem 2 (the paper's θ = 3/10).
+//!
+//! Theorem 2/3: a TSP tour with factor αTSP is at most αTSP (3ℓ* + 6) for the square with
+//! rectilinear motion, times β = √2/√(2 + √2) ≈ 1.08 under free motion and γ = 2/√3 ≈ 1.15
+//! for the disk. The registry states the rectilinear bounds (the default cutter); the others
+//! are irrational factors and are in the docs of each function.
+//!
+//! Outputs: for the square with rectilinear motion every hop is expanded into a staircase of
+//! unit moves (same L1 length), so the tour goes through the core [`checker`](crate::checker)
+//! in lawn mode; for free motion and the disk the tour is the list of lattice points, checked
+//! by [`crate::lawn_check`] with Euclidean lengths in milli-units.
+
+use super::euler::GridMultigraph;
+use super::{Against, Algorithm, Cutter, Guarantee, Objective, Options, Output, Solution};
+use crate::error::{Error, Result};
+use crate::lawn_check::{centre, distance, required_cells};
+use crate::region::{Pixel, Region};
+use crate::tour::{CycleCover, Walk};
+use std::collections::HashMap;
+
+/// Above this many points `lawn-2opt` starts from the MST tour only (the blossom matching is
+/// cubic in the number of odd-degree nodes).
+pub const CHRISTOFIDES_LIMIT: usize = 3000;
+
+/// The grass must be non-empty.
+pub fn precondition(region: &Region) -> Result<()> {
+    if region.is_empty() {
+        return Err(Error::Invalid("the lawn has no grass".into()));
+    }
+    Ok(())
+}
+
+/// Points of S with their metric.
+struct Points {
+    cutter: Cutter,
+    pts: Vec<Pixel>,
+}
+
+impl Points {
+    fn new(region: &Region, cutter: Cutter) -> Points {
+        Points { cutter, pts: required_cells(region, cutter) }
+    }
+
+    fn len(&self) -> usize {
+        self.pts.len()
+    }
+
+    fn dist(&self, i: usize, j: usize) -> f64 {
+        distance(self.cutter, self.pts[i], self.pts[j])
+    }
+
+    /// An exact integer key, monotone in the distance (L1, or the squared norm).
+    fn key(&self, i: usize, j: usize) -> u64 {
+        let (a, b) = (self.pts[i], self.pts[j]);
+        let (dx, dy) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
+        match self.cutter {
+            Cutter::Square => (dx.abs() + dy.abs()) as u64,
+            Cutter::SquareFree => (dx * dx + dy * dy) as u64,
+            Cutter::Disk => (dx * dx + dx * dy + dy * dy) as u64,
+        }
+    }
+
+    /// The lattice neighbours at the smallest distance (4 on the square, 6 on the hexagons).
+    fn unit_steps(&self) -> &'static [(i32, i32)] {
+        match self.cutter {
+            Cutter::Square | Cutter::SquareFree => &[(1, 0), (0, 1), (-1, 0), (0, -1)],
+            Cutter::Disk => &[(1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)],
+        }
+    }
+
+    fn tour_length(&self, tour: &[usize]) -> f64 {
+        (0..tour.len()).map(|k| self.dist(tour[k], tour[(k + 1) % tour.len()])).sum()
+    }
+}
+
+/// A spatial hash of points in real coordinates, for nearest-neighbour searches.
+struct Buckets {
+    size: f64,
+    map: HashMap<(i64, i64), Vec<u32>>,
+    lo: (i64, i64),
+    hi: (i64, i64),
+}
+
+impl Buckets {
+    fn new(p: &Points, ids: impl Iterator<Item = usize>, size: f64) -> Buckets {
+        let mut map: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+        let (mut lo, mut hi) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
+        for i in ids {
+            let c = Self::cell(p, i, size);
+            lo = (lo.0.min(c.0), lo.1.min(c.1));
+            hi = (hi.0.max(c.0), hi.1.max(c.1));
+            map.entry(c).or_default().push(i as u32);
+        }
+        Buckets { size, map, lo, hi }
+    }
+
+    fn cell(p: &Points, i: usize, size: f64) -> (i64, i64) {
+        let (x, y) = centre(p.cutter, p.pts[i]);
+        ((x / size).floor() as i64, (y / size).floor() as i64)
+    }
+
+    /// The nearest point j with `accept(j)`, by (key, j): a search over rings of buckets,
+    /// stopping when a ring is farther than the best point found.
+    fn nearest(&self, p: &Points, i: usize, accept: impl Fn(usize) -> bool) -> Option<(u64, usize)> {
+        if self.map.is_empty() {
+            return None;
+        }
+        let (cx, cy) = Self::cell(p, i, self.size);
+        let reach = [self.hi.0 - cx, cx - self.lo.0, self.hi.1 - cy, cy - self.lo.1]
+            .into_iter()
+            .map(i64::abs)
+            .max()
+            .unwrap_or(0);
+        let mut best: Option<(u64, usize)> = None;
+        for ring in 0..=reach {
+            // Points in ring r are at least (r - 1) * size away (in L2, hence in L1).
+            if best.is_some_and(|(_, j)| (ring - 1) as f64 * self.size > p.dist(i, j)) {
+                break;
+            }
+            for bx in cx - ring..=cx + ring {
+                let step = if (bx - cx).abs() == ring { 1 } else { (2 * ring).max(1) };
+                let mut by = cy - ring;
+                while by <= cy + ring {
+                    if let Some(list) = self.map.get(&(bx, by)) {
+                        for &j in list {
+                            let j = j as usize;
+                            if j != i && accept(j) {
+                                let cand = (p.key(i, j), j);
+                                if best.is_none_or(|b| cand < b) {
+                                    best = Some(cand);
+                                }
+                            }
+                        }
+                    }
+                    by += step;
+                }
+            }
+        }
+        best
+    }
+}
+
+struct UnionFind(Vec<u32>);
+
+impl UnionFind {
+    fn new(n: usize) -> Self {
+        UnionFind((0..n as u32).collect())
+    }
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.0[x] as usize != x {
+            let p = self.0[x] as usize;
+            self.0[x] = self.0[p];
+            x = p;
+        }
+        x
+    }
+    fn union(&mut self, a: usize, b: usize) -> bool {
+        let (a, b) = (self.find(a), self.find(b));
+        if a == b {
+            return false;
+        }
+        self.0[a] = b as u32;
+        true
+    }
+}
+
+/// An exact minimum spanning tree of S: Kruskal on the unit lattice edges (the smallest
+/// possible distance), then Borůvka rounds joining components by their nearest foreign
+/// points, searched only from points with a lattice neighbour outside their component (a
+/// closest pair between components always has such an endpoint: stepping towards the other
+/// point along a lattice direction gets strictly closer). Ties are broken by (key, i, j).
+fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
+    let n = p.len();
+    let index: HashMap<Pixel, usize> = p.pts.iter().enumerate().map(|(i, &q)| (q, i)).collect();
+    let mut uf = UnionFind::new(n);
+    let mut edges = Vec::with_capacity(n.saturating_sub(1));
+    for i in 0..n {
+        for &(dx, dy) in p.unit_steps() {
+            let q = Pixel::new(p.pts[i].x + dx, p.pts[i].y + dy);
+            if let Some(&j) = index.get(&q) {
+                if i < j && uf.union(i, j) {
+                    edges.push((i, j));
+                }
+            }
+        }
+    }
+    while edges.len() + 1 < n {
+        let border: Vec<usize> = (0..n)
+            .filter(|&i| {
+                let ri = uf.find(i);
+                p.unit_steps().iter().any(|&(dx, dy)| {
+                    let q = Pixel::new(p.pts[i].x + dx, p.pts[i].y + dy);
+                    index.get(&q).is_none_or(|&j| uf.find(j) != ri)
+                })
+            })
+            .collect();
+        let root: Vec<usize> = (0..n).map(|i| uf.find(i)).collect();
+        let spread = border.len().max(1) as f64;
+        let size = {
+            let b = crate::region::Region::from_pixels(border.iter().map(|&i| p.pts[i]))
+                .map(|r| (r.bbox().width() * r.bbox().height()) as f64)
+                .unwrap_or(1.0);
+            (b / spread).sqrt().clamp(2.0, 64.0)
+        };
+        let buckets = Buckets::new(p, border.iter().copied(), size);
+        let mut best: HashMap<usize, (u64, usize, usize)> = HashMap::new();
+        for &i in &border {
+            if let Some((k, j)) = buckets.nearest(p, i, |j| root[j] != root[i]) {
+                let cand = (k, i.min(j), i.max(j));
+                let e = best.entry(root[i]).or_insert(cand);
+                if cand < *e {
+                    *e = cand;
+                }
+            }
+        }
+        let mut chosen: Vec<(u64, usize, usize)> = best.into_values().collect();
+        chosen.sort_unstable();
+        for (_, i, j) in chosen {
+            if uf.union(i, j) {
+                edges.push((i, j));
+            }
+        }
+    }
+    edges
+}
+
+/// Preorder of a tree given by its edges, from node 0 (the doubled tree, shortcut).
+fn preorder(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
+    let mut adj = vec![Vec::new(); n];
+    for &(a, b) in edges {
+        adj[a].push(b);
+        adj[b].push(a);
+    }
+    let mut seen = vec![false; n];
+    let mut order = Vec::with_capacity(n);
+    let mut stack = vec![0];
+    while let Some(v) = stack.pop() {
+        if seen[v] {
+            continue;
+        }
+        seen[v] = true;
+        order.push(v);
+        for &w in adj[v].iter().rev() {
+            if !seen[w] {
+                stack.push(w);
+            }
+        }
+    }
+    order
+}
+
+/// Christofides: MST + minimum-weight perfect matching on the odd-degree nodes, Euler
+/// circuit, shortcut. Returns the tour and the matching's weight in the metric.
+fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, f64) {
+    let n = p.len();
+    let mut deg = vec![0u32; n];
+    for &(a, b) in mst {
+        deg[a] += 1;
+        deg[b] += 1;
+    }
+    let odd: Vec<usize> = (0..n).filter(|&i| deg[i] % 2 == 1).collect();
+    let mut graph = petgraph::graph::UnGraph::<(), i128>::with_capacity(odd.len(), odd.len() * odd.len() / 2);
+    for _ in &odd {
+        graph.add_node(());
+    }
+    // Exact integer weights: L1 lengths, or Euclidean lengths in micro-units.
+    let weight = |a: usize, b: usize| -> i128 {
+        match p.cutter {
+            Cutter::Square => i128::from(p.key(a, b) as i64),
+            _ => (p.dist(a, b) * 1e6).round() as i128,
+        }
+    };
+    let big: i128 = 1 << 60;
+    for x in 0..odd.len() {
+        for y in x + 1..odd.len() {
+            graph.add_edge(
+                petgraph::graph::NodeIndex::new(x),
+                petgraph::graph::NodeIndex::new(y),
+                big - weight(odd[x], odd[y]),
+            );
+        }
+    }
+    let mut matching: Vec<(usize, usize)> =
+        rustworkx_core::max_weight_matching::max_weight_matching(
+            &graph,
+            true,
+            |e: petgraph::graph::EdgeReference<i128>| Ok::<i128, std::convert::Infallible>(*e.weight()),
+            false,
+        )
+        .map(|set| set.into_iter().map(|(x, y)| (x.min(y), x.max(y))).collect())
+        .unwrap_or_default();
+    // Sorted, so that the tour does not depend on the hash set's iteration order.
+    matching.sort_unstable();
+    let mut edges: Vec<(usize, usize)> = mst.to_vec();
+    let mut matched = 0.0;
+    for &(x, y) in &matching {
+        edges.push((odd[x], odd[y]));
+        matched += p.dist(odd[x], odd[y]);
+    }
+    (euler_shortcut(n, &edges), matched)
+}
+
+/// Hierholzer's Euler circuit of a connected multigraph with even degrees (given by its
+/// edges), shortcut to a Hamiltonian tour by skipping repeated nodes.
+fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
+    let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        adj[a].push((b, e));
+        adj[b].push((a, e));
+    }
+    let mut used = vec![false; edges.len()];
+    let mut next = vec![0usize; n];
+    let mut stack = vec![0usize];
+    let mut circuit = Vec::with_capacity(edges.len() + 1);
+    while let Some(&v) = stack.last() {
+        while next[v] < adj[v].len() && used[adj[v][next[v]].1] {
+            next[v] += 1;
+        }
+        if next[v] < adj[v].len() {
+            let (w, e) = adj[v][next[v]];
+            used[e] = true;
+            stack.push(w);
+        } else {
+            circuit.push(v);
+            stack.pop();
+        }
+    }
+    let mut seen = vec![false; n];
+    circuit.into_iter().filter(|&v| !std::mem::replace(&mut seen[v], true)).collect()
+}
+
+/// 2-opt and Or-opt (segments of 1 to 3 points) on the 8 nearest neighbours of each point,
+/// until no improving move remains or 50 passes.
+fn two_opt(p: &Points, mut tour: Vec<usize>) -> Vec<usize> {
+    let n = tour.len();
+    if n < 5 {
+        return tour;
+    }
+    let buckets = Buckets::new(p, 0..n, 4.0);
+    let neighbours: Vec<Vec<usize>> = (0..n)
+        .map(|i| {
+            let mut out: Vec<usize> = Vec::new();
+            for _ in 0..8 {
+                match buckets.nearest(p, i, |j| !out.contains(&j)) {
+                    Some((_, j)) => out.push(j),
+                    None => break,
+                }
+            }
+            out
+        })
+        .collect();
+    let mut pos = vec![0usize; n];
+    const EPS: f64 = 1e-9;
+    for _pass in 0..50 {
+        let mut improved = false;
+        for (k, &t) in tour.iter().enumerate() {
+            pos[t] = k;
+        }
+        // 2-opt: replace (a, a+) and (c, c+) by (a, c) and (a+, c+).
+        for i in 0..n {
+            let a = tour[i];
+            let an = tour[(i + 1) % n];
+            for &c in &neighbours[a] {
+                let (pa, pc) = (pos[a], pos[c]);
+                let cn = tour[(pc + 1) % n];
+                if c == an || cn == a {
+                    continue;
+                }
+                let gain = p.dist(a, an) + p.dist(c, cn) - p.dist(a, c) - p.dist(an, cn);
+                if gain > EPS {
+                    // Reverse the segment a+ .. c (cyclically).
+                    let (mut lo, mut hi) = ((pa + 1) % n, pc);
+                    let len = (hi + n - lo) % n + 1;
+                    for _ in 0..len / 2 {
+                        tour.swap(lo, hi);
+                        pos[tour[lo]] = lo;
+                        pos[tour[hi]] = hi;
+                        lo = (lo + 1) % n;
+                        hi = (hi + n - 1) % n;
+                    }
+                    improved = true;
+                    break;
+                }
+            }
+        }
+        // Or-opt: move a segment of 1..=3 points next to a neighbour of its first point.
+        for seg in 1..=3usize {
+            let mut i = 0;
+            while i < n {
+                for (k, &t) in tour.iter().enumerate() {
+                    pos[t] = k;
+                }
+                let s0 = tour[i];
+                let s1 = tour[(i + seg - 1) % n];
+                let prev = tour[(i + n - 1) % n];
+                let next = tour[(i + seg) % n];
+                let removal = p.dist(prev, s0) + p.dist(s1, next) - p.dist(prev, next);
+                let mut best: Option<(f64, usize, bool)> = None;
+                for &c in &neighbours[s0] {
+                    let pc = pos[c];
+                    let in_seg = (pc + n - i) % n < seg;
+                    let cn = tour[(pc + 1) % n];
+                    if in_seg || c == prev || (pos[cn] + n - i) % n < seg {
+                        continue;
+                    }
+                    for reversed in [false, true] {
+                        let (x, y) = if reversed { (s1, s0) } else { (s0, s1) };
+                        let insert = p.dist(c, x) + p.dist(y, cn) - p.dist(c, cn);
+                        let gain = removal - insert;
+                        if gain > EPS && best.is_none_or(|b| gain > b.0) {
+                            best = Some((gain, c, reversed));
+                        }
+                    }
+                }
+                if let Some((_, c, reversed)) = best {
+                    let mut segment: Vec<usize> = (0..seg).map(|k| tour[(i + k) % n]).collect();
+                    if reversed {
+                        segment.reverse();
+                    }
+                    let rest: Vec<usize> =
+                        (0..n - seg).map(|k| tour[(i + seg + k) % n]).collect();
+                    let at = rest.iter().position(|&v| v == c).expect("c is outside the segment");
+                    let mut t = Vec::with_capacity(n);
+                    t.extend_from_slice(&rest[..=at]);
+                    t.extend_from_slice(&segment);
+                    t.extend_from_slice(&rest[at + 1..]);
+                    tour = t;
+                    improved = true;
+                }
+                i += 1;
+            }
+        }
+        if !improved {
+            break;
+        }
+    }
+    tour
+}
+
+/// Fig. 9: concentric rectangles of pixel centres over the bounding box, each joined to the
+/// next by swapping two facing edges of a common unit square (free); the innermost, when it
+/// is a single row or column, is joined by a doubled edge (the paper's extra two units).
+fn box_tour(region: &Region) -> Result<Walk> {
+    let b = region.bbox();
+    let (w, h) = (b.width() as i32, b.height() as i32);
+    let rect = Region::rectangle(w, h);
+    let mut g = GridMultigraph::new(rect.len());
+    let at = |x: i32, y: i32| rect.index_of(Pixel::new(x, y)).expect("inside the box");
+    let mut k = 0;
+    while 2 * k < w && 2 * k < h {
+        let (x0, y0, x1, y1) = (k, k, w - 1 - k, h - 1 - k);
+        // The ring as a closed walk (degenerate rings are back-and-forth paths).
+        let mut ring = Vec::new();
+        for x in x0..=x1 {
+            ring.push(at(x, y0));
+        }
+        for y in y0 + 1..=y1 {
+            ring.push(at(x1, y));
+        }
+        if y1 > y0 {
+            for x in (x0..x1).rev() {
+                ring.push(at(x, y1));
+            }
+        } else {
+            for x in (x0 + 1..x1).rev() {
+                ring.push(at(x, y0));
+            }
+        }
+        if x1 > x0 {
+            for y in (y0 + 1..y1).rev() {
+                ring.push(at(x0, y));
+            }
+        } else {
+            for y in (y0 + 1..y1).rev() {
+                ring.push(at(x0, y));
+            }
+        }
+        g.add_closed_walk(&rect, &ring);
+        if k > 0 {
+            // Join to ring k - 1 by swapping the two left sides of square (k-1..k, y0..y0+1).
+            let (a, b2, c, d) = (at(k - 1, y0), at(k - 1, y0 + 1), at(k, y0), at(k, y0 + 1));
+            if y1 > y0 && x1 > x0 && g.has_between(&rect, a, b2) && g.has_between(&rect, c, d) {
+                g.remove_between(&rect, a, b2);
+                g.remove_between(&rect, c, d);
+                g.add_between(&rect, a, c);
+                g.add_between(&rect, b2, d);
+            } else {
+                g.add_between(&rect, a, c);
+                g.add_between(&rect, a, c);
+            }
+        }
+        k += 1;
+    }
+    let walk = g.into_walk(&rect, 0);
+    Ok(walk.into_iter().map(|q| Pixel::new(q.x + b.min_x, q.y + b.min_y)).collect())
+}
+
+/// Turns a tour of S into the output walk: staircases of unit moves for rectilinear motion,
+/// the lattice points themselves otherwise.
+fn output_walk(p: &Points, tour: &[usize]) -> Walk {
+    if p.cutter != Cutter::Square {
+        return tour.iter().map(|&i| p.pts[i]).collect();
+    }
+    let mut walk = Vec::new();
+    for k in 0..tour.len() {
+        let (a, b) = (p.pts[tour[k]], p.pts[tour[(k + 1) % tour.len()]]);
+        let mut q = a;
+        walk.push(q);
+        while q.x != b.x {
+            q.x += (b.x - q.x).signum();
+            if q != b {
+                walk.push(q);
+            }
+        }
+        while q.y != b.y {
+            q.y += (b.y - q.y).signum();
+            if q != b {
+                walk.push(q);
+            }
+        }
+    }
+    walk
+}
+
+/// A lower bound on the optimal lawn tour from the area swept (covered area ≤ L·w + a), in
+/// the reported units (exact L1 units, or milli-units for Euclidean motion), rounded down.
+fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
+    let area = region.len() as f64;
+    let (w, a, scale) = match cutter {
+        Cutter::Square => (1.0, 1.0, 1.0),
+        Cutter::SquareFree => (std::f64::consts::SQRT_2, 1.0, 1000.0),
+        Cutter::Disk => (2.0, std::f64::consts::PI, 1000.0),
+    };
+    ((area - a).max(0.0) / w * scale).floor() as i64
+}
+
+fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> Solution {
+    let mut s = Solution::default();
+    s.outputs.push(Output { objective: Objective::LawnLength, cover: CycleCover::tour(output_walk(p, tour)) });
+    s.certificates.insert("points".into(), p.len() as i64);
+    s.certificates.insert("area_lower_bound".into(), area_lower_bound(region, p.cutter));
+    if let Some(w) = mst {
+        let scale = if p.cutter == Cutter::Square { 1.0 } else { 1000.0 };
+        s.certificates.insert("mst_weight".into(), (w * scale).floor() as i64);
+    }
+    s
+}
+
+fn mst_weight(p: &Points, mst: &[(usize, usize)]) -> f64 {
+    mst.iter().map(|&(a, b)| p.dist(a, b)).sum()
+}
+
+/// `lawn-mst`: doubled minimum spanning tree, shortcut. Length ≤ 2 · TSP(S) ≤ 2 (3ℓ* + 6)
+/// for the square with rectilinear motion (Theorem 2), × β (free motion), × γ (disk).
+///
+/// # Complexity
+/// O(N log N) expected for lawns of few components (Borůvka rounds over component borders).
+pub fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
+    precondition(region)?;
+    let p = Points::new(region, opts.cutter);
+    let mst = minimum_spanning_tree(&p);
+    let tour = preorder(p.len(), &mst);
+    Ok(solution(region, &p, &tour, Some(mst_weight(&p, &mst))))
+}
+
+/// `lawn-christofides`: length ≤ 3/2 · TSP(S) ≤ 3/2 (3ℓ* + 6) for the square with rectilinear
+/// motion (Theorem 2), × β (free motion), × γ (disk).
+///
+/// # Complexity
+/// O(N log N + M³) with M ≤ N the odd-degree nodes of the MST (blossom matching).
+pub fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
+    precondition(region)?;
+    let p = Points::new(region, opts.cutter);
+    let mst = minimum_spanning_tree(&p);
+    let (tour, matched) = christofides(&p, &mst);
+    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
+    let scale = if p.cutter == Cutter::Square { 1.0 } else { 1000.0 };
+    s.certificates.insert("matching_weight".into(), (matched * scale).floor() as i64);
+    Ok(s)
+}
+
+/// `lawn-2opt`: 2-opt and Or-opt from the better of the MST and Christofides tours (MST only
+/// above [`CHRISTOFIDES_LIMIT`] points); never longer than its start.
+pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
+    precondition(region)?;
+    let p = Points::new(region, opts.cutter);
+    let mst = minimum_spanning_tree(&p);
+    let mut start = preorder(p.len(), &mst);
+    if p.len() <= CHRISTOFIDES_LIMIT {
+        let (c, _) = christofides(&p, &mst);
+        if p.tour_length(&c) < p.tour_length(&start) {
+            start = c;
+        }
+    }
+    let tour = two_opt(&p, start);
+    Ok(solution(region, &p, &tour, Some(mst_weight(&p, &mst))))
+}
+
+/// `lawn-box`: the shorter of the Fig. 9 bounding-box tour and the Christofides tour (the
+/// paper's way to remove the additive term: factor 3αTSP + θ, θ = 3/10, for the square with
+/// rectilinear motion). Square cutters only: the disk variant (concentric circles in the
+/// smallest enclosing disk) is not implemented.
+pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
+    precondition(region)?;
+    if opts.cutter == Cutter::Disk {
+        return Err(Error::Invalid(
+            "lawn-box implements the bounding-box method for square cutters only (not --cutter disk)".into(),
+        ));
+    }
+    let p = Points::new(region, opts.cutter);
+    let mst = minimum_spanning_tree(&p);
+    let (tour, _) = christofides(&p, &mst);
+    let boxed = box_tour(region)?;
+    let box_len: f64 = (0..boxed.len()).map(|k| distance(p.cutter, boxed[k], boxed[(k + 1) % boxed.len()])).sum();
+    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
+    let chose_box = box_len < p.tour_length(&tour) - 1e-9;
+    if chose_box {
+        s.outputs[0].cover = CycleCover::tour(boxed);
+    }
+    s.certificates.insert("chose_box".into(), i64::from(chose_box));
+    Ok(s)
+}
+
+const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guarantee {
+    Guarantee { objective: Objective::LawnLength, num, den, add, against: Against::Opt, source }
+}
+
+/// Registry entries.
+pub const LAWN_MST: Algorithm = Algorithm {
+    name: "lawn-mst",
+    summary: "lawn mowing: doubled MST of the cell centres, shortcut (Theorems 2-3, alpha = 2)",
+    objectives: &[Objective::LawnLength],
+    guarantees: &[rectilinear(6, 1, 12, "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear")],
+    precondition,
+    run: lawn_mst,
+};
+
+pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
+    name: "lawn-christofides",
+    summary: "lawn mowing: Christofides on the cell centres (Theorems 2-3, alpha = 3/2)",
+    objectives: &[Objective::LawnLength],
+    guarantees: &[rectilinear(9, 2, 18, "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear")],
+    precondition,
+    run: lawn_christofides,
+};
+
+pub const LAWN_TWO_OPT: Algorithm = Algorithm {
+    name: "lawn-2opt",
+    summary: "lawn mowing: 2-opt/Or-opt from the better of the MST and Christofides tours",
+    objectives: &[Objective::LawnLength],
+    guarantees: &[rectilinear(6, 1, 12, "Theorem 2 of Lawn mowing and milling (its start), square, rectilinear")],
+    precondition,
+    run: lawn_two_opt,
+};
+
+pub const LAWN_BOX: Algorithm = Algorithm {
+    name: "lawn-box",
+    summary: "lawn mowing: shorter of the bounding-box rings (Fig. 9) and Christofides",
+    objectives: &[Objective::LawnLength],
+    guarantees: &[rectilinear(24, 5, 0, "Section 4 of Lawn mowing and milling (3 alpha + 3/10), square, rectilinear")],
+    precondition,
+    run: lawn_box,
+};

@@ -1,0 +1,265 @@
+//! Theorem 4 of *Lawn mowing and milling*: a milling tour of length at most 5/2 · OPT for
+//! regions with holes, read on the pixel grid.
+//!
+//! The construction of the proof of Theorem 4, with a unit square cutter moving between
+//! pixel centres:
+//!
+//! 1. δB_i: the [contour walk](super::contour) of every boundary component (the outer one and
+//!    one per hole), i.e. the boundary of the cutter's free space offset by 1/2. Their total
+//!    length L_δB is the paper's first lower bound on OPT.
+//! 2. The strips: every maximal horizontal run of pixels that no contour mills. Such a run
+//!    from x = a to x = b in row y is bounded by contour pixels (a − 1, y) and (b + 1, y), and
+//!    its strip line joins them (b − a + 2 moves). Their total length L_str is the paper's
+//!    second lower bound (an area argument); on the grid a strip of k pixels costs k + 1 moves,
+//!    so the certificate also reports the strip pixels, Σ k ≤ N ≤ OPT.
+//! 3. On every δB_i the strip-line endpoints split the walk into arcs; the two alternating
+//!    arc sets are the matchings M1(δB_i), M2(δB_i), and the shorter one M*(δB_i) (at most
+//!    half of δB_i) is doubled.
+//! 4. Contours + strip lines + M* is connected with even degrees; its Euler circuit
+//!    (Hierholzer) is the tour, of length L_δB + L_str + Σ|M*| ≤ L_δB + L_str + L_δB / 2.
+//!
+//! Grid reading (a detail the continuous proof leaves open): a strip endpoint pixel can lie
+//! on two contour walks, or twice on one (where the region is one pixel thick); we attach the
+//! endpoint to the visit of the walk that comes first in the walk list at that pixel, which
+//! keeps the construction valid because every endpoint is matched on the walk it is attached
+//! to. A walk that receives an odd number of endpoints (possible only in that degenerate
+//! case) gets its lone endpoint matched through the region instead; the certificate
+//! `odd_contours` counts such repairs (0 in every test so far).
+
+use super::contour::{ContourWalk, contour_walks};
+use super::euler::GridMultigraph;
+use super::{Output, Solution};
+use crate::error::{Error, Result};
+use crate::region::{Dir, Region};
+use crate::topology;
+use crate::tour::CycleCover;
+
+/// Theorem 4 needs a connected, non-empty region; holes are allowed.
+pub fn precondition(region: &Region) -> Result<()> {
+    if region.is_empty() {
+        return Err(Error::Invalid("the region is empty".into()));
+    }
+    if topology::components(region).count != 1 {
+        return Err(Error::Invalid("milling25 needs a connected region (one grid component)".into()));
+    }
+    Ok(())
+}
+
+/// A strip line: the pixels from contour pixel `from` to contour pixel `to` in one row.
+#[derive(Clone, Copy, Debug)]
+struct StripLine {
+    from: usize,
+    to: usize,
+    /// Unmilled pixels strictly between the two endpoints.
+    pixels: usize,
+}
+
+/// Runs the construction of Theorem 4 on `region`.
+///
+/// # Arguments
+/// A connected region (holes allowed).
+///
+/// # Returns
+/// One tour (objective length), with certificates `l_db` (L_δB), `l_str` (strip-line
+/// moves), `strip_pixels`, `l_match` (Σ|M*|), `contours`, `strips`, `odd_contours`.
+///
+/// # Complexity
+/// O(N) time and space.
+///
+/// # Guarantee
+/// Length ≤ 5/2 · OPT (Theorem 4 of Arkin, Fekete, Mitchell, *Approximation algorithms for
+/// lawn mowing and milling*); the certificate shows length = l_db + l_str + l_match with
+/// l_match ≤ l_db / 2.
+pub fn milling25(region: &Region) -> Result<Solution> {
+    precondition(region)?;
+    let contours = contour_walks(region);
+    let n = region.len();
+    let mut on_contour = vec![false; n];
+    for c in &contours {
+        for &i in &c.walk {
+            on_contour[i] = true;
+        }
+    }
+    let strips = strip_lines(region, &on_contour)?;
+
+    let mut graph = GridMultigraph::new(n);
+    let mut l_db = 0u64;
+    for c in &contours {
+        if c.walk.len() > 1 {
+            graph.add_closed_walk(region, &c.walk);
+            l_db += c.walk.len() as u64;
+        }
+    }
+    let mut l_str = 0u64;
+    let mut strip_pixels = 0u64;
+    for s in &strips {
+        let path = row_path(region, s.from, s.to);
+        graph.add_path(region, &path);
+        l_str += (path.len() - 1) as u64;
+        strip_pixels += s.pixels as u64;
+    }
+
+    // Attach every strip endpoint to one visit of one contour walk.
+    let mut first_visit: Vec<Option<(u32, u32)>> = vec![None; n];
+    for (ci, c) in contours.iter().enumerate() {
+        for (pos, &i) in c.walk.iter().enumerate() {
+            first_visit[i].get_or_insert((ci as u32, pos as u32));
+        }
+    }
+    let mut ends: Vec<Vec<usize>> = vec![Vec::new(); contours.len()];
+    for s in &strips {
+        for e in [s.from, s.to] {
+            let (ci, pos) = first_visit[e].expect("strip lines end on contour pixels");
+            ends[ci as usize].push(pos as usize);
+        }
+    }
+    let mut l_match = 0u64;
+    let mut odd_contours = 0i64;
+    let mut lone_ends = Vec::new();
+    for (c, positions) in contours.iter().zip(ends.iter_mut()) {
+        positions.sort_unstable();
+        if positions.len() % 2 == 1 {
+            odd_contours += 1;
+            lone_ends.push(c.walk[positions.pop().expect("odd count is non-zero")]);
+        }
+        l_match += add_shorter_matching(region, c, positions, &mut graph);
+    }
+    // Degenerate grid case only: pair up lone endpoints through the region.
+    for pair in lone_ends.chunks(2) {
+        if let [a, b] = *pair {
+            let path = shortest_path(region, a, b);
+            graph.add_path(region, &path);
+            l_match += (path.len() - 1) as u64;
+        }
+    }
+
+    let walk = graph.into_walk(region, contours[0].walk[0]);
+    let mut solution = Solution::default();
+    solution.outputs.push(Output { objective: super::Objective::Length, cover: CycleCover::tour(walk) });
+    let cert = &mut solution.certificates;
+    cert.insert("l_db".into(), l_db as i64);
+    cert.insert("l_str".into(), l_str as i64);
+    cert.insert("strip_pixels".into(), strip_pixels as i64);
+    cert.insert("l_match".into(), l_match as i64);
+    cert.insert("contours".into(), contours.len() as i64);
+    cert.insert("strips".into(), strips.len() as i64);
+    cert.insert("odd_contours".into(), odd_contours);
+    Ok(solution)
+}
+
+/// Maximal horizontal runs of pixels not on any contour, with their contour endpoints.
+fn strip_lines(region: &Region, on_contour: &[bool]) -> Result<Vec<StripLine>> {
+    let mut out = Vec::new();
+    for i in 0..region.len() {
+        if on_contour[i] {
+            continue;
+        }
+        let west = region.neighbor(i, Dir::W);
+        let starts = match west {
+            Some(w) => on_contour[w],
+            None => true,
+        };
+        if !starts {
+            continue;
+        }
+        // A pixel off every contour has all eight neighbours in the region.
+        let from = west.ok_or_else(|| Error::Invalid("a non-contour pixel lies on the boundary".into()))?;
+        let mut k = i;
+        let mut pixels = 1;
+        loop {
+            let e = region
+                .neighbor(k, Dir::E)
+                .ok_or_else(|| Error::Invalid("a non-contour pixel lies on the boundary".into()))?;
+            if on_contour[e] {
+                out.push(StripLine { from, to: e, pixels });
+                break;
+            }
+            k = e;
+            pixels += 1;
+        }
+    }
+    Ok(out)
+}
+
+/// The pixels of the row from `a` eastwards to `b`.
+fn row_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+    let mut path = vec![a];
+    let mut k = a;
+    while k != b {
+        k = region.neighbor(k, Dir::E).expect("strip lines run inside the region");
+        path.push(k);
+    }
+    path
+}
+
+/// Adds the shorter of the two alternating matchings of the sorted endpoint positions on
+/// contour `c` to the graph; returns its length.
+fn add_shorter_matching(
+    region: &Region,
+    c: &ContourWalk,
+    positions: &[usize],
+    graph: &mut GridMultigraph,
+) -> u64 {
+    let m = positions.len();
+    if m == 0 {
+        return 0;
+    }
+    let len = c.walk.len();
+    let arc = |k: usize| -> usize {
+        let (a, b) = (positions[k], positions[(k + 1) % m]);
+        if k + 1 < m { b - a } else { len - a + b }
+    };
+    let m1: usize = (0..m).step_by(2).map(arc).sum();
+    let m2: usize = (1..m).step_by(2).map(arc).sum();
+    let first = if m1 <= m2 { 0 } else { 1 };
+    for k in (first..m).step_by(2) {
+        let steps = arc(k);
+        let a = positions[k];
+        for t in 0..steps {
+            let (u, v) = (c.walk[(a + t) % len], c.walk[(a + t + 1) % len]);
+            graph.add_between(region, u, v);
+        }
+    }
+    m1.min(m2) as u64
+}
+
+/// A shortest path in the grid graph (breadth-first search); used only for degenerate repairs.
+fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+    let mut prev = vec![usize::MAX; region.len()];
+    prev[a] = a;
+    let mut queue = std::collections::VecDeque::from([a]);
+    while let Some(v) = queue.pop_front() {
+        if v == b {
+            break;
+        }
+        for w in region.neighbors(v) {
+            if prev[w] == usize::MAX {
+                prev[w] = v;
+                queue.push_back(w);
+            }
+        }
+    }
+    let mut path = vec![b];
+    while *path.last().expect("non-empty") != a {
+        path.push(prev[*path.last().expect("non-empty")]);
+    }
+    path.reverse();
+    path
+}
+
+/// The registry entry.
+pub const ALGORITHM: super::Algorithm = super::Algorithm {
+    name: "milling25",
+    summary: "contours + strips + shorter matchings, Euler tour (Theorem 4, milling paper)",
+    objectives: &[super::Objective::Length],
+    guarantees: &[super::Guarantee {
+        objective: super::Objective::Length,
+        num: 5,
+        den: 2,
+        add: 0,
+        against: super::Against::Opt,
+        source: "Theorem 4 of Lawn mowing and milling",
+    }],
+    precondition,
+    run: |region, _| milling25(region),
+};

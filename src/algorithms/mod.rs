@@ -1,0 +1,271 @@
+//! The one registry of approximation algorithms.
+//!
+//! Each entry has a stable name (the CLI's `--algo`), the objective it targets, the guarantees
+//! it proves and the theorem they come from. The CLI, the benchmark runner, the plots and the
+//! regression gate all read [`REGISTRY`]; nothing lists the algorithms a second time.
+//!
+//! An algorithm takes a region and returns closed walks ([`Output`]s): never its own cost. The
+//! caller runs every output through the [`checker`](crate::checker), which recounts length,
+//! turns and coverage; [`Guarantee::holds`] then compares the recount with the proven bound.
+
+use crate::checker::Mode;
+use crate::error::Result;
+use crate::region::Region;
+use crate::tour::CycleCover;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt;
+
+pub mod contour;
+pub mod euler;
+pub mod lawn;
+pub mod milling25;
+pub mod tsp65;
+// Turn-cost paper (issue 5).
+pub mod boundary_cc;
+pub mod endpoint_matching;
+pub mod merge;
+pub mod star_cover;
+pub mod strips_double;
+pub mod strips_matching;
+pub mod thin;
+pub mod turn_distance;
+
+/// What a result is measured by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Objective {
+    /// Length of a milling tour (one closed walk inside the region).
+    Length,
+    /// Total turns of a milling cycle cover.
+    CcTurns,
+    /// Turns of a milling tour.
+    Turns,
+    /// Length of a lawn-mowing tour (may leave the region), in the motion's metric.
+    LawnLength,
+}
+
+impl Objective {
+    pub const ALL: [Objective; 4] =
+        [Objective::Length, Objective::CcTurns, Objective::Turns, Objective::LawnLength];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Objective::Length => "length",
+            Objective::CcTurns => "cc-turns",
+            Objective::Turns => "turns",
+            Objective::LawnLength => "lawn-length",
+        }
+    }
+
+    /// The checker mode the outputs of this objective are validated in.
+    pub fn mode(self) -> Mode {
+        match self {
+            Objective::LawnLength => Mode::Lawn,
+            _ => Mode::Milling,
+        }
+    }
+
+    /// Whether outputs must be a single closed walk.
+    pub fn is_tour(self) -> bool {
+        !matches!(self, Objective::CcTurns)
+    }
+}
+
+impl fmt::Display for Objective {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// What a guarantee's factor multiplies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Against {
+    /// The optimum of the objective (known only where an exact solver proved it).
+    Opt,
+    /// The number of pixels N.
+    N,
+}
+
+/// A proven upper bound `value ≤ (num · X + add) / den`, X being OPT or N.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Guarantee {
+    pub objective: Objective,
+    pub num: i64,
+    pub den: i64,
+    pub add: i64,
+    pub against: Against,
+    /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling".
+    pub source: &'static str,
+}
+
+impl Guarantee {
+    /// The factor as a float, for tables and plots.
+    pub fn factor(&self) -> f64 {
+        self.num as f64 / self.den as f64
+    }
+
+    /// Whether `value ≤ (num · x + add) / den`, in exact integer arithmetic.
+    pub fn holds(&self, value: u64, x: u64) -> bool {
+        i128::from(self.den) * i128::from(value)
+            <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+    }
+
+    /// The bound's value for a given X, rounded down (values are integers).
+    pub fn bound(&self, x: u64) -> i64 {
+        ((i128::from(self.num) * i128::from(x) + i128::from(self.add)).div_euclid(i128::from(self.den)))
+            as i64
+    }
+}
+
+impl fmt::Display for Guarantee {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = match self.against {
+            Against::Opt => "OPT",
+            Against::N => "N",
+        };
+        let num = if self.num == 1 { String::new() } else { self.num.to_string() };
+        let add = match self.add {
+            0 => String::new(),
+            a if a > 0 => format!(" + {a}"),
+            a => format!(" - {}", -a),
+        };
+        if self.den == 1 {
+            write!(f, "{} <= {num}{x}{add} ({})", self.objective, self.source)
+        } else if add.is_empty() {
+            write!(f, "{} <= {num}/{} {x} ({})", self.objective, self.den, self.source)
+        } else {
+            write!(f, "{} <= ({num}{x}{add})/{} ({})", self.objective, self.den, self.source)
+        }
+    }
+}
+
+/// How cycle covers are merged into tours (turn-cost paper, Theorem 4.2).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Merge {
+    /// Merge at crossings, +2 turns each.
+    Naive,
+    /// Free merges first, then the cheapest merge.
+    #[default]
+    Smart,
+}
+
+/// Cutter and motion for lawn mowing (milling paper, Section 4).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Cutter {
+    /// Unit square, rectilinear motion (L1 lengths).
+    #[default]
+    Square,
+    /// Unit square, free motion (the grid with diagonals).
+    SquareFree,
+    /// Unit disk (hexagonal lattice).
+    Disk,
+}
+
+/// Options every algorithm receives; each uses the ones that concern it.
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    pub merge: Merge,
+    pub cutter: Cutter,
+    /// Post-process tours into ones covering each pixel at most 4 times (Theorem 5.6).
+    pub coverage4: bool,
+}
+
+/// One result of an algorithm: closed walks for one objective.
+#[derive(Clone, Debug)]
+pub struct Output {
+    pub objective: Objective,
+    pub cover: CycleCover,
+}
+
+/// What an algorithm returns: one output per objective it reports (a cycle-cover algorithm
+/// reports the cycle cover and the merged tour), and its certificates (named integers such as
+/// a strip cover size or a matching weight; never its own cost).
+#[derive(Clone, Debug, Default)]
+pub struct Solution {
+    pub outputs: Vec<Output>,
+    pub certificates: BTreeMap<String, i64>,
+}
+
+/// A registered algorithm.
+pub struct Algorithm {
+    /// Stable name: the CLI's `--algo`, the `algorithm` column of results.
+    pub name: &'static str,
+    /// One line on what it computes.
+    pub summary: &'static str,
+    /// The objectives it reports, in output order.
+    pub objectives: &'static [Objective],
+    /// Its proven guarantees (possibly several objectives).
+    pub guarantees: &'static [Guarantee],
+    /// Checks the theorem's preconditions; the error says which one fails.
+    pub precondition: fn(&Region) -> Result<()>,
+    pub run: fn(&Region, &Options) -> Result<Solution>,
+}
+
+impl fmt::Debug for Algorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Algorithm").field("name", &self.name).finish()
+    }
+}
+
+/// Every registered algorithm. Add an entry here when a module lands.
+pub static REGISTRY: &[Algorithm] = &[
+    milling25::ALGORITHM,
+    tsp65::ALGORITHM,
+    lawn::LAWN_MST,
+    lawn::LAWN_CHRISTOFIDES,
+    lawn::LAWN_TWO_OPT,
+    lawn::LAWN_BOX,
+    // Turn-cost paper (issue 5).
+    star_cover::ALGORITHM,
+    strips_double::ALGORITHM,
+    strips_matching::ALGORITHM,
+    boundary_cc::ALGORITHM,
+    thin::ALGORITHM_CC,
+    thin::ALGORITHM_MERGE,
+];
+
+/// The registered algorithm called `name`.
+pub fn find(name: &str) -> Option<&'static Algorithm> {
+    REGISTRY.iter().find(|a| a.name == name)
+}
+
+/// The registered names, for error messages.
+pub fn names() -> Vec<&'static str> {
+    REGISTRY.iter().map(|a| a.name).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn guarantee_arithmetic_is_exact() {
+        let g = Guarantee {
+            objective: Objective::Length,
+            num: 6,
+            den: 5,
+            add: -4,
+            against: Against::N,
+            source: "Theorem 5",
+        };
+        // N = 9: (54 - 4) / 5 = 10.
+        assert!(g.holds(10, 9));
+        assert!(!g.holds(11, 9));
+        assert_eq!(g.bound(9), 10);
+        assert_eq!(g.to_string(), "length <= (6N - 4)/5 (Theorem 5)");
+        let h = Guarantee { num: 5, den: 2, add: 0, against: Against::Opt, ..g };
+        assert!(h.holds(25, 10) && !h.holds(26, 10));
+        assert_eq!(h.to_string(), "length <= 5/2 OPT (Theorem 5)");
+    }
+
+    #[test]
+    fn names_are_unique() {
+        let mut names = names();
+        let n = names.len();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), n);
+    }
+}

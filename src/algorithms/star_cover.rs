@@ -1,0 +1,157 @@
+//! `star-cover`: a greedy rook placement, its star cover, one closed walk touring each star,
+//! merged into a tour (Lemmas 4.5–4.6, Theorem 5.1 and Corollary 5.2 of *Optimal covering
+//! tours with turn costs*).
+//!
+//! # Construction
+//! Pixels are scanned in index order; a rook is placed on every pixel whose horizontal and
+//! vertical maximal strips hold no rook yet. Then every pixel shares a strip with a rook, the
+//! rooks attack no one another, and r rooks ≤ the maximum rook placement = the minimum strip
+//! cover ≤ OPT (Lemmas 4.3–4.5). The star of a rook is its two strips; its walk runs from the
+//! rook to the east end, back to the west end, back to the rook, then likewise north, south and
+//! back: two U-turns per strip and a quarter turn at the rook between the two strips, at most
+//! 10 turns. Where a strip ends at the rook, or has one pixel, the walk simply has fewer turns.
+//!
+//! # Guarantee
+//! Cycle cover: ≤ 10r ≤ 10·OPT turns (ρ + 2δ = 2 + 8 in Theorem 5.1); tour: ≤ 10r + 2(r − 1)
+//! ≤ 12·OPT turns (Corollary 5.2). A pixel lies in at most one rook's row strip and one rook's
+//! column strip and each star walk passes it at most twice (the rook four times, and no other
+//! star reaches a rook), so every pixel is covered at most 4 times: a 4-approximation on length.
+
+use crate::algorithms::merge::cover_and_tour;
+use crate::algorithms::strips_double::{close_walk, extend_walk, straight};
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
+use crate::error::Result;
+use crate::region::{Dir, Pixel, Region};
+use crate::tour::{CycleCover, Walk};
+use std::collections::BTreeMap;
+
+/// The greedy rook placement of Lemma 4.5: rooks in pixel index order, none attacking another.
+///
+/// # Complexity
+/// O(N) time and space.
+pub fn greedy_rooks(region: &Region) -> Vec<usize> {
+    let n = region.len();
+    // Strip ids: a pixel takes the id of its west (south) neighbour, or a new one.
+    let mut row = vec![0u32; n];
+    let mut col = vec![0u32; n];
+    let (mut rows, mut cols) = (0u32, 0u32);
+    for i in 0..n {
+        row[i] = match region.neighbor(i, Dir::W) {
+            Some(j) => row[j],
+            None => {
+                rows += 1;
+                rows - 1
+            }
+        };
+        col[i] = match region.neighbor(i, Dir::S) {
+            Some(j) => col[j],
+            None => {
+                cols += 1;
+                cols - 1
+            }
+        };
+    }
+    let mut row_taken = vec![false; rows as usize];
+    let mut col_taken = vec![false; cols as usize];
+    let mut rooks = Vec::new();
+    for i in 0..n {
+        let (r, c) = (row[i] as usize, col[i] as usize);
+        if !row_taken[r] && !col_taken[c] {
+            row_taken[r] = true;
+            col_taken[c] = true;
+            rooks.push(i);
+        }
+    }
+    rooks
+}
+
+/// The last pixel reached from `i` going straight in direction `d`.
+fn far_end(region: &Region, mut i: usize, d: Dir) -> Pixel {
+    while let Some(j) = region.neighbor(i, d) {
+        i = j;
+    }
+    region.pixel(i)
+}
+
+/// The closed walk touring the star of the rook at pixel `i` (at most 10 turns).
+pub fn star_walk(region: &Region, i: usize) -> Walk {
+    let rook = region.pixel(i);
+    let (e, w) = (far_end(region, i, Dir::E), far_end(region, i, Dir::W));
+    let (n, s) = (far_end(region, i, Dir::N), far_end(region, i, Dir::S));
+    let mut walk = Vec::new();
+    for (a, b) in [(rook, e), (e, w), (w, rook), (rook, n), (n, s), (s, rook)] {
+        extend_walk(&mut walk, straight(a, b));
+    }
+    close_walk(walk)
+}
+
+/// The star cycle cover: one walk per greedy rook, and the number of rooks r.
+pub fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
+    let rooks = greedy_rooks(region);
+    (
+        CycleCover::new(rooks.iter().map(|&i| star_walk(region, i)).collect()),
+        rooks.len(),
+    )
+}
+
+/// Runs `star-cover`: the star cycle cover and its merged tour, certificate `rooks` = r.
+pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+    let (cover, r) = star_cycle_cover(region);
+    let mut certificates = BTreeMap::new();
+    certificates.insert("rooks".to_string(), r as i64);
+    cover_and_tour(region, cover, opts, certificates)
+}
+
+/// The registry entry.
+pub const ALGORITHM: Algorithm = Algorithm {
+    name: "star-cover",
+    summary: "greedy rook placement, one 10-turn walk per star, merged (linear time; each pixel covered at most 4 times)",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[
+        Guarantee {
+            objective: Objective::CcTurns,
+            num: 10,
+            den: 1,
+            add: 0,
+            against: Against::Opt,
+            source: "Theorem 5.1 / Corollary 5.2 of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            num: 12,
+            den: 1,
+            add: 0,
+            against: Against::Opt,
+            source: "Corollary 5.2 of Optimal covering tours with turn costs",
+        },
+    ],
+    precondition: crate::algorithms::merge::connected,
+    run,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::checker::{Mode, check};
+
+    #[test]
+    fn plus_is_one_star_of_ten_turns() {
+        let r = Region::from_ascii(".#.\n###\n.#.\n");
+        // Rooks in index order: (1, 0) takes the column and its one-pixel row, then (0, 1)
+        // takes the middle row (the minimum strip cover is 2 as well).
+        let (cover, rooks) = star_cycle_cover(&r);
+        let rep = check(&r, &cover, Mode::Milling);
+        assert!(rep.valid, "{:?}", rep.error);
+        assert_eq!(rooks, 2);
+        assert!(rep.turns <= 10 * rooks as u64);
+        assert!(rep.max_coverage <= 4);
+    }
+
+    #[test]
+    fn full_star_has_ten_turns() {
+        let r = Region::from_ascii(".#.\n###\n.#.\n");
+        let rep = check(&r, &CycleCover::tour(star_walk(&r, 2)), Mode::Milling);
+        assert!(rep.valid);
+        assert_eq!((rep.turns, rep.max_coverage), (10, 4));
+    }
+}

@@ -1,0 +1,221 @@
+//! `strips-matching`: an optimal strip cover whose strip ends are joined by a minimum-weight
+//! perfect matching under the turn distance (Theorem 5.5 of *Optimal covering tours with turn
+//! costs*), then merged into a tour (Corollary 4.1).
+//!
+//! # Construction
+//! Each strip of a minimum strip cover S (|S| = s) contributes its two end pixels as ports
+//! leaving orthogonally to the strip. A minimum-weight perfect matching M of the 2s ports
+//! under the turn distance w ([`turn_distance`](super::turn_distance)) together with the
+//! strips forms a 2-regular structure, i.e. cycles alternating strip, connecting path, strip,
+//! and so on. Each strip costs at most 2 turns (turning off it at one end, onto it at the
+//! other), each connecting path w(u, v) turns: the cycle cover has at most 2s + w(M) turns.
+//!
+//! # Guarantee
+//! Cycle cover: 2s + w(M) ≤ 2.5·OPT_cc, since s ≤ OPT (Lemma 4.2) and w(M) ≤ OPT/2 (every
+//! tour crosses each strip end orthogonally; Theorem 5.5). Tour: ≤ 3/2 of that, 3.75·OPT
+//! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching, which our matching is
+//! when it is computed on the complete graph (certificate `matching_complete = 1`, up to
+//! [`COMPLETE_LIMIT`](super::endpoint_matching::COMPLETE_LIMIT) ports); see
+//! [`endpoint_matching`](super::endpoint_matching) for the restriction on larger instances.
+
+use crate::algorithms::endpoint_matching::{PortMatching, match_ports};
+use crate::algorithms::merge::cover_and_tour;
+use crate::algorithms::strips_double::{close_walk, extend_walk, straight};
+use crate::algorithms::turn_distance::{Port, TurnSearch, bit};
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
+use crate::error::{Error, Result};
+use crate::region::Region;
+use crate::strip_cover::strip_cover;
+use crate::topology::Strip;
+use crate::tour::CycleCover;
+use std::collections::BTreeMap;
+
+/// The cycle cover of Theorem 5.5, with s, w(M) and the matching.
+#[derive(Clone, Debug)]
+pub struct StripMatchingCover {
+    pub cover: CycleCover,
+    pub s: usize,
+    pub matching: PortMatching,
+}
+
+/// Joins `links` (strips or boundary links, given by their end pixels) into closed walks by
+/// the perfect matching `mate` of their ports (port `2k` is link k's first pixel, `2k + 1` its
+/// last), each matched pair by a cheapest connecting path.
+pub fn join_links(
+    region: &Region,
+    links: &[(usize, usize)],
+    ports: &[Port],
+    matching: &PortMatching,
+) -> Result<CycleCover> {
+    let mut search = TurnSearch::new(region);
+    let mut done = vec![false; links.len()];
+    let mut cycles = Vec::new();
+    for first in 0..links.len() {
+        if done[first] {
+            continue;
+        }
+        let mut walk = Vec::new();
+        let mut port = 2 * first;
+        loop {
+            let k = port / 2;
+            done[k] = true;
+            let out = port ^ 1;
+            let (a, b) = (
+                region.pixel(ports[port].pixel),
+                region.pixel(ports[out].pixel),
+            );
+            extend_walk(&mut walk, straight(a, b));
+            let to = matching.mate[out];
+            let target = ports[to];
+            let w = matching.weight[out.min(to)];
+            search.run(region, ports[out], w, |p, h, _| {
+                p == target.pixel && target.arrive() & bit(h) != 0
+            });
+            let path = search.path_to(target).ok_or_else(|| {
+                Error::invalid(format!("no path between matched ports {out} and {to}"))
+            })?;
+            extend_walk(&mut walk, path.into_iter().map(|p| region.pixel(p)));
+            port = to;
+            if port == 2 * first {
+                break;
+            }
+        }
+        cycles.push(close_walk(walk));
+    }
+    Ok(CycleCover::new(cycles))
+}
+
+/// The ports of strips: port `2k` at strip k's start, `2k + 1` at its end.
+pub fn strip_ports(region: &Region, strips: &[Strip]) -> (Vec<(usize, usize)>, Vec<Port>) {
+    let mut links = Vec::with_capacity(strips.len());
+    let mut ports = Vec::with_capacity(2 * strips.len());
+    for s in strips {
+        let a = region.index_of(s.start).expect("strips lie in the region");
+        let b = region.index_of(s.end()).expect("strips lie in the region");
+        links.push((a, b));
+        ports.push(Port::strip_end(a, s.horizontal));
+        ports.push(Port::strip_end(b, s.horizontal));
+    }
+    (links, ports)
+}
+
+/// Computes the strips-matching cycle cover of Theorem 5.5.
+///
+/// # Complexity
+/// O(N √N) for the strip cover; the matching dominates (see
+/// [`match_ports`](super::endpoint_matching::match_ports)).
+pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
+    let cover = strip_cover(region);
+    let (links, ports) = strip_ports(region, &cover.strips);
+    let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
+    let matching = match_ports(region, &ports, &partner)?;
+    let cc = join_links(region, &links, &ports, &matching)?;
+    Ok(StripMatchingCover {
+        cover: cc,
+        s: cover.size(),
+        matching,
+    })
+}
+
+/// Runs `strips-matching`: the cycle cover and its merged tour, with certificates s, w(M)
+/// (`w_m`) and whether the matching was computed on the complete graph.
+pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+    let smc = strips_matching_cover(region)?;
+    let mut certificates = BTreeMap::new();
+    certificates.insert("s".to_string(), smc.s as i64);
+    certificates.insert("w_m".to_string(), smc.matching.total as i64);
+    certificates.insert(
+        "matching_complete".to_string(),
+        i64::from(smc.matching.complete),
+    );
+    cover_and_tour(region, smc.cover, opts, certificates)
+}
+
+/// The registry entry.
+pub const ALGORITHM: Algorithm = Algorithm {
+    name: "strips-matching",
+    summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[
+        Guarantee {
+            objective: Objective::CcTurns,
+            num: 5,
+            den: 2,
+            add: 0,
+            against: Against::Opt,
+            source: "Theorem 5.5 of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            num: 15,
+            den: 4,
+            add: 0,
+            against: Against::Opt,
+            source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
+        },
+    ],
+    precondition: crate::algorithms::merge::connected,
+    run,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algorithms::Merge;
+    use crate::checker::{Mode, check};
+    use crate::region::Pixel;
+
+    /// The square donut of Fig. 5: outer side `l`, width `k`.
+    pub fn donut(l: i32, k: i32) -> Region {
+        Region::from_pixels(
+            (0..l)
+                .flat_map(|y| (0..l).map(move |x| Pixel::new(x, y)))
+                .filter(|p| p.x < k || p.y < k || p.x >= l - k || p.y >= l - k),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn rectangle_cover_has_2s_plus_w_turns() {
+        let r = Region::rectangle(6, 4);
+        let smc = strips_matching_cover(&r).unwrap();
+        assert_eq!(smc.s, 4);
+        let rep = check(&r, &smc.cover, Mode::Milling);
+        assert!(rep.valid, "{:?}", rep.error);
+        assert!(rep.turns <= 2 * smc.s as u64 + smc.matching.total);
+        // The boustrophedon pairing: consecutive rows' ends face each other (w = 0).
+        assert_eq!(smc.matching.total, 0);
+        assert_eq!(rep.turns, 8);
+    }
+
+    #[test]
+    fn donut_separates_naive_and_smart_merging() {
+        for k in 1..=3 {
+            let l = 3 * k + 2;
+            let r = donut(l, k);
+            let smc = strips_matching_cover(&r).unwrap();
+            assert_eq!(smc.s, 4 * k as usize);
+            let cc = check(&r, &smc.cover, Mode::Milling);
+            assert!(cc.valid);
+            eprintln!(
+                "k {k}: cc turns {} cycles {} w {}",
+                cc.turns, cc.cycles, smc.matching.total
+            );
+            let mut turns = Vec::new();
+            for merge in [Merge::Naive, Merge::Smart] {
+                let sol = run(
+                    &r,
+                    &Options {
+                        merge,
+                        ..Options::default()
+                    },
+                )
+                .unwrap();
+                let rep = check(&r, &sol.outputs[1].cover, Mode::Milling);
+                assert!(rep.valid && rep.cycles == 1);
+                turns.push(rep.turns);
+            }
+            eprintln!("k {k}: naive {} smart {}", turns[0], turns[1]);
+        }
+    }
+}

@@ -1,0 +1,208 @@
+//! Thin pockets (Section 5.5 of *Optimal covering tours with turn costs*): `thin-cc`, an
+//! optimal min-turn cycle cover (Corollary 5.3), and `thin-merge`, the merging algorithm of
+//! Theorem 5.9. A thin region has no 2×2 block of pixels.
+//!
+//! # thin-cc
+//! In a thin region every pixel is a boundary pixel except the centres of plus shapes (a pixel
+//! with four neighbours and no diagonal one). The boundary cycle cover
+//! ([`boundary_cc`](super::boundary_cc)) is optimal for the boundary; Corollary 5.3 says it
+//! can be turned into a cover of the whole region. Our construction of that step: each arm
+//! pixel q next to an uncovered centre c has no neighbour but c and the rest of its arm, so a
+//! walk visiting q either passes into c or turns back at q having arrived heading towards c;
+//! there we insert the step into c and back, moving the U-turn from q to c (same turns).
+//!
+//! # thin-merge
+//! Step 1 is thin-cc; step 2 repeats (a) a merge of two cycles at no extra cost when one
+//! exists, else (c) a merge at a crossing with at most two more turns: this is the smart
+//! strategy of [`merge`](super::merge) (cheapest merge first, free merges being the cheapest),
+//! which thin-merge always uses, whatever `--merge` says.
+//!
+//! # Guarantee
+//! thin-cc: the cycle cover is optimal (Corollary 5.3), its merged tour at most 3/2·OPT
+//! (Corollary 4.1). thin-merge: at most 4/3·OPT turns (Theorem 5.9, tight by Fig. 6).
+
+use crate::algorithms::boundary_cc::boundary_cycle_cover;
+use crate::algorithms::merge::{connected, cover_and_tour};
+use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
+use crate::error::{Error, Result};
+use crate::region::Region;
+use crate::topology::is_thin;
+use crate::tour::CycleCover;
+use std::collections::BTreeMap;
+
+/// Precondition of the thin algorithms: connected and thin (no 2×2 block).
+pub fn precondition(region: &Region) -> Result<()> {
+    connected(region)?;
+    if !is_thin(region) {
+        return Err(Error::invalid(
+            "the region is not thin: it contains a 2x2 block of pixels",
+        ));
+    }
+    Ok(())
+}
+
+/// Inserts a step into every unvisited pixel `c` from a neighbour `q` where a walk turns back
+/// heading towards `c`. Returns the number of pixels that could not be reached that way (each
+/// then gets a plain detour, costing extra turns).
+fn cover_plus_centres(region: &Region, cover: &mut CycleCover) -> usize {
+    let mut visited = vec![false; region.len()];
+    for p in cover.cycles.iter().flatten() {
+        if let Some(i) = region.index_of(*p) {
+            visited[i] = true;
+        }
+    }
+    let mut fallbacks = 0;
+    for c in 0..region.len() {
+        if visited[c] {
+            continue;
+        }
+        let cp = region.pixel(c);
+        let mut done = false;
+        'search: for walk in &mut cover.cycles {
+            let m = walk.len();
+            for i in 0..m {
+                let (before, q, after) = (walk[(i + m - 1) % m], walk[i], walk[(i + 1) % m]);
+                let towards = before.dir_to(q);
+                if m >= 2 && before == after && towards.is_some() && towards == q.dir_to(cp) {
+                    walk.splice(i + 1..i + 1, [cp, q]);
+                    done = true;
+                    break 'search;
+                }
+            }
+        }
+        if !done {
+            // Not expected in a thin region (see the module docs); keep the cover valid.
+            let q = region
+                .neighbors(c)
+                .map(|j| region.pixel(j))
+                .find(|p| cover.cycles.iter().any(|w| w.contains(p)));
+            if let Some(q) = q {
+                for walk in &mut cover.cycles {
+                    if let Some(i) = walk.iter().position(|p| *p == q) {
+                        walk.splice(i + 1..i + 1, [cp, q]);
+                        break;
+                    }
+                }
+            }
+            fallbacks += 1;
+        }
+        visited[c] = true;
+    }
+    fallbacks
+}
+
+/// The optimal cycle cover of a thin region (Corollary 5.3), and how many pixels needed the
+/// fallback detour (0 whenever the construction of the module docs applies).
+pub fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, u64, usize)> {
+    let (mut cover, matching) = boundary_cycle_cover(region)?;
+    let fallbacks = cover_plus_centres(region, &mut cover);
+    Ok((cover, matching.total, fallbacks))
+}
+
+fn run_with(region: &Region, opts: &Options) -> Result<Solution> {
+    precondition(region)?;
+    let (cover, w, fallbacks) = thin_cycle_cover(region)?;
+    let mut certificates = BTreeMap::new();
+    certificates.insert("w_m".to_string(), w as i64);
+    certificates.insert("centre_fallbacks".to_string(), fallbacks as i64);
+    cover_and_tour(region, cover, opts, certificates)
+}
+
+/// Runs `thin-cc`: the optimal cycle cover and its tour merged by `--merge`.
+pub fn run_cc(region: &Region, opts: &Options) -> Result<Solution> {
+    run_with(region, opts)
+}
+
+/// Runs `thin-merge`: the optimal cycle cover merged by Theorem 5.9's algorithm.
+pub fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
+    run_with(
+        region,
+        &Options {
+            merge: Merge::Smart,
+            ..opts.clone()
+        },
+    )
+}
+
+/// The registry entry of `thin-cc`.
+pub const ALGORITHM_CC: Algorithm = Algorithm {
+    name: "thin-cc",
+    summary: "optimal min-turn cycle cover of a thin pocket (boundary links matched, plus centres inserted), merged by --merge",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[
+        Guarantee {
+            objective: Objective::CcTurns,
+            num: 1,
+            den: 1,
+            add: 0,
+            against: Against::Opt,
+            source: "Corollary 5.3 of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            num: 3,
+            den: 2,
+            add: 0,
+            against: Against::Opt,
+            source: "Corollary 5.3 of Optimal covering tours with turn costs",
+        },
+    ],
+    precondition,
+    run: run_cc,
+};
+
+/// The registry entry of `thin-merge`.
+pub const ALGORITHM_MERGE: Algorithm = Algorithm {
+    name: "thin-merge",
+    summary: "optimal cycle cover of a thin pocket merged free merges first, then at crossings",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[
+        Guarantee {
+            objective: Objective::CcTurns,
+            num: 1,
+            den: 1,
+            add: 0,
+            against: Against::Opt,
+            source: "Corollary 5.3 of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            num: 4,
+            den: 3,
+            add: 0,
+            against: Against::Opt,
+            source: "Theorem 5.9 of Optimal covering tours with turn costs",
+        },
+    ],
+    precondition,
+    run: run_merge,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::checker::{Mode, check};
+
+    #[test]
+    fn plus_centre_is_covered_at_no_cost() {
+        let r = Region::from_ascii(
+            "..#..\n\
+             ..#..\n\
+             #####\n\
+             ..#..\n\
+             ..#..\n",
+        );
+        let (cover, _, fallbacks) = thin_cycle_cover(&r).unwrap();
+        let rep = check(&r, &cover, Mode::Milling);
+        assert!(rep.valid, "{:?}", rep.error);
+        assert_eq!(fallbacks, 0);
+        // Two crossing corridors, each out and back: 8 turns.
+        assert_eq!(rep.turns, 8);
+    }
+
+    #[test]
+    fn refuses_thick_regions() {
+        let e = precondition(&Region::rectangle(2, 2)).unwrap_err();
+        assert!(e.to_string().contains("not thin"), "{e}");
+    }
+}

@@ -1,0 +1,705 @@
+//! Theorem 5 of *Lawn mowing and milling*: a tour of a simple grid graph without cut vertices
+//! of length at most (6N − 4)/5, hence a 6/5-approximation of milling simple integral
+//! rectilinear polygons with a unit square (Corollary 3).
+//!
+//! The construction of Section 6, as a connected multigraph with even degrees walked by
+//! Hierholzer ([`super::euler`]):
+//!
+//! 1. The contour C: the [contour walk](super::contour) of the block, a simple cycle through
+//!    the boundary nodes. Grid reading: a boundary node is a pixel with a side *or a corner* on
+//!    the region's boundary (some of its eight neighbours missing), since only then does C
+//!    exist as the paper states (at a reflex corner it passes the diagonal pixel); the other
+//!    pixels are the internal nodes V_I.
+//! 2. Lemma 5, the bottleneck decomposition: a unit square whose two opposite sides e, f are
+//!    edges of C and whose other two sides are not splits the graph into pieces H1, H2. Gluing
+//!    the pieces' tours removes e, f and the two far sides again, so the glued tour is C with
+//!    every piece's detours applied; what the decomposition changes is that each piece
+//!    chooses its own doublerow parity. We compute the pieces (components of G without the
+//!    bottleneck edges e, f) and, per piece, keep the parity that wastes fewer edges (the
+//!    proof only needs one of the two).
+//! 3. Doublerows: rows y ≡ p, p + 1 (mod 2) paired, p being the piece's parity.
+//! 4. Free detours until none applies: Type I (a doubleton column next to an empty column
+//!    whose vertical edge is in C' pushes that edge through it, repeatedly) and Type II (a
+//!    maximal run of singleton columns with their internal nodes in one row opposite a path
+//!    of C' edges is zig-zagged from its left end, pairing columns, so that all but at most
+//!    one node are visited).
+//! 5. The remaining components H of each doublerow, by the six cases of Fig. 15. The figure
+//!    is not in the text; from the proof's counts we construct (s = singleton node, t = the
+//!    other node of its column, a boundary node, D = the 2 × w block of doubleton columns
+//!    l..r, rows A (the row of the left singleton, else the bottom row) and B):
+//!    (a) one node: the edge s–t doubled (waste 1);
+//!    (b) two singletons in one row: the 4-cycle t1 s1 s2 t2 (waste 2; t1 t2 is not in C',
+//!        or Type II would have applied);
+//!    (c) only doubleton columns: the cycle around D (for w = 1 the edge doubled), tied to
+//!        its visited west neighbour by a doubled edge (waste 2);
+//!    (d) D plus one singleton: the cycle t s, along D's row of s to the far end, back along
+//!        the other row, t (waste 1);
+//!    (e), (f) D plus singletons at both ends, in the same row (e) or not (f): the cycle
+//!        t1 s1, row A of D, (r + 1, A), (r + 1, B), row B of D back, t1 (waste 2).
+//!    A component of any other shape would contradict the proof; it is linked by a doubled
+//!    spanning tree and counted in the certificate `unexpected_components`.
+//!
+//! Regions with cut vertices are split into blocks (biconnected components): a bridge is
+//! walked twice, every other block is solved as above, and since the blocks' edge sets are
+//! disjoint and meet at cut vertices, one Euler circuit of their union splices the tours.
+
+use super::contour::contour_walks;
+use super::euler::GridMultigraph;
+use super::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::error::{Error, Result};
+use crate::region::{Dir, Pixel, Region};
+use crate::topology;
+use crate::tour::CycleCover;
+use std::collections::BTreeMap;
+
+/// Theorem 5 needs a simple (hole-free), connected, non-empty grid graph.
+pub fn precondition(region: &Region) -> Result<()> {
+    if region.is_empty() {
+        return Err(Error::Invalid("the region is empty".into()));
+    }
+    if topology::components(region).count != 1 {
+        return Err(Error::Invalid("tsp65 needs a connected region (one grid component)".into()));
+    }
+    let h = topology::holes(region).count;
+    if h > 0 {
+        return Err(Error::Invalid(format!(
+            "tsp65 needs a simple region (Theorem 5), but this one has {h} hole(s); use holes1325 or milling25"
+        )));
+    }
+    Ok(())
+}
+
+/// Counts of what the construction did (the certificates).
+#[derive(Clone, Debug, Default)]
+pub(super) struct LinkStats {
+    pub type1: i64,
+    pub type2: i64,
+    pub cases: [i64; 6],
+    pub unexpected: i64,
+    pub wasted: i64,
+}
+
+impl LinkStats {
+    fn add(&mut self, o: &LinkStats) {
+        self.type1 += o.type1;
+        self.type2 += o.type2;
+        for k in 0..6 {
+            self.cases[k] += o.cases[k];
+        }
+        self.unexpected += o.unexpected;
+        self.wasted += o.wasted;
+    }
+
+    pub(super) fn certify(&self, cert: &mut BTreeMap<String, i64>) {
+        cert.insert("detours_type1".into(), self.type1);
+        cert.insert("detours_type2".into(), self.type2);
+        for (k, name) in ["a", "b", "c", "d", "e", "f"].iter().enumerate() {
+            cert.insert(format!("case_{name}"), self.cases[k]);
+        }
+        cert.insert("unexpected_components".into(), self.unexpected);
+        cert.insert("wasted_edges".into(), self.wasted);
+    }
+}
+
+/// Runs the construction of Theorem 5 on a simple region.
+///
+/// # Arguments
+/// A connected region without holes (cut vertices allowed).
+///
+/// # Returns
+/// One tour (objective length); certificates: blocks, bridges, bottlenecks, pieces, the
+/// detours and cases applied, the wasted edges, and `bound_6n_4_5` = ⌊(6N − 4)/5⌋ when the
+/// region has no cut vertices (the bound of Theorem 5 that the length must meet).
+///
+/// # Complexity
+/// O(N) time and space for a region without cut vertices (three passes of the linear
+/// detour procedure, for the two parities and the final choice); with cut vertices, O(N)
+/// plus the bounding boxes of the blocks.
+///
+/// # Guarantee
+/// Without cut vertices: length ≤ (6N − 4)/5 (Theorem 5 of Arkin, Fekete, Mitchell,
+/// *Approximation algorithms for lawn mowing and milling*). For every simple region: length
+/// ≤ 6/5 · OPT, because a block's tour is at most 6/5 of its N_b ≤ OPT_b nodes, a bridge
+/// costs 2 = OPT_b, and OPT is the sum of the blocks' optima (Corollary 3).
+pub fn tsp65(region: &Region) -> Result<Solution> {
+    precondition(region)?;
+    let n = region.len();
+    let mut solution = Solution::default();
+    let mut stats = LinkStats::default();
+    let mut bottlenecks = 0i64;
+    let mut pieces = 0i64;
+    let mut bridges = 0i64;
+    let blocks = biconnected_blocks(region);
+    let mut graph = GridMultigraph::new(n);
+    if blocks.len() == 1 && blocks[0].len() == n && n >= 3 {
+        let b = block_tour(region, &mut graph, &mut stats)?;
+        bottlenecks += b.0;
+        pieces += b.1;
+    } else {
+        for block in &blocks {
+            if block.len() == 2 {
+                graph.add_between(region, block[0], block[1]);
+                graph.add_between(region, block[0], block[1]);
+                bridges += 1;
+                continue;
+            }
+            let sub = Region::from_pixels(block.iter().map(|&i| region.pixel(i)))?;
+            let mut sub_graph = GridMultigraph::new(sub.len());
+            let b = block_tour(&sub, &mut sub_graph, &mut stats)?;
+            bottlenecks += b.0;
+            pieces += b.1;
+            for i in 0..sub.len() {
+                let g = region.index_of(sub.pixel(i)).expect("block pixels are region pixels");
+                for d in [Dir::E, Dir::N] {
+                    for _ in 0..sub_graph.count(i, d) {
+                        let h = region.neighbor(g, d).expect("block edges are region edges");
+                        graph.add(g, h, d);
+                    }
+                }
+            }
+        }
+    }
+    let walk = graph.into_walk(region, 0);
+    solution.outputs.push(Output { objective: Objective::Length, cover: CycleCover::tour(walk) });
+    let cert = &mut solution.certificates;
+    stats.certify(cert);
+    cert.insert("blocks".into(), blocks.len() as i64);
+    cert.insert("bridges".into(), bridges);
+    cert.insert("bottlenecks".into(), bottlenecks);
+    cert.insert("pieces".into(), pieces);
+    if blocks.len() <= 1 && n >= 2 {
+        cert.insert("bound_6n_4_5".into(), (6 * n as i64 - 4).div_euclid(5));
+    }
+    Ok(solution)
+}
+
+/// The construction of Theorem 5 on a 2-connected simple region with at least 3 pixels:
+/// adds the tour's edges to `graph` (indexed like `region`). Returns (bottlenecks, pieces).
+fn block_tour(region: &Region, graph: &mut GridMultigraph, stats: &mut LinkStats) -> Result<(i64, i64)> {
+    let contours = contour_walks(region);
+    if contours.len() != 1 {
+        return Err(Error::Invalid("tsp65: a block of the region has holes".into()));
+    }
+    let c = &contours[0].walk;
+    let n = region.len();
+    let mut on_c = vec![false; n];
+    for &i in c {
+        if on_c[i] {
+            return Err(Error::Invalid(format!(
+                "tsp65: the contour passes {} twice, so the block is not 2-connected",
+                region.pixel(i)
+            )));
+        }
+        on_c[i] = true;
+    }
+    let mut base = GridMultigraph::new(n);
+    base.add_closed_walk(region, c);
+
+    // Lemma 5: bottleneck squares and the pieces they cut the graph into.
+    let mut cut = vec![[false; 4]; n];
+    let mut bottlenecks = 0;
+    for a in 0..n {
+        let (Some(b), Some(cc)) = (region.neighbor(a, Dir::E), region.neighbor(a, Dir::N)) else {
+            continue;
+        };
+        if region.neighbor(b, Dir::N).is_none() {
+            continue;
+        }
+        let bottom = base.count(a, Dir::E) > 0;
+        let top = base.count(cc, Dir::E) > 0;
+        let left = base.count(a, Dir::N) > 0;
+        let right = base.count(b, Dir::N) > 0;
+        let pairs: &[(usize, Dir)] = if bottom && top && !left && !right {
+            &[(a, Dir::E), (cc, Dir::E)]
+        } else if left && right && !bottom && !top {
+            &[(a, Dir::N), (b, Dir::N)]
+        } else {
+            &[]
+        };
+        if !pairs.is_empty() {
+            bottlenecks += 1;
+        }
+        for &(u, dir) in pairs {
+            let v = region.neighbor(u, dir).expect("square corner");
+            cut[u][dir.index()] = true;
+            cut[v][dir.opposite().index()] = true;
+        }
+    }
+    let (piece, piece_count) = label_pieces(region, &cut);
+
+    // Try both parities everywhere, keep the better one per piece, then build for real.
+    let internal: Vec<bool> = on_c.iter().map(|&b| !b).collect();
+    let mut waste = [vec![0i64; piece_count], vec![0i64; piece_count]];
+    for (p, w) in waste.iter_mut().enumerate() {
+        let mut g = base.clone();
+        let parity = vec![p as i32; piece_count];
+        let mut s = LinkStats::default();
+        *w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+    }
+    let parity: Vec<i32> = (0..piece_count).map(|k| i32::from(waste[1][k] < waste[0][k])).collect();
+    let mut g = base;
+    let mut s = LinkStats::default();
+    link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+    stats.add(&s);
+    // Move the edges into the caller's graph.
+    for i in 0..n {
+        for d in [Dir::E, Dir::N] {
+            for _ in 0..g.count(i, d) {
+                let j = region.neighbor(i, d).expect("edges join region pixels");
+                graph.add(i, j, d);
+            }
+        }
+    }
+    let with_internal = {
+        let mut seen = vec![false; piece_count];
+        for i in 0..n {
+            if internal[i] {
+                seen[piece[i] as usize] = true;
+            }
+        }
+        seen.iter().filter(|&&b| b).count()
+    };
+    Ok((bottlenecks, with_internal as i64))
+}
+
+/// Components of the grid graph without the `cut` edges: (label per pixel, count).
+fn label_pieces(region: &Region, cut: &[[bool; 4]]) -> (Vec<u32>, usize) {
+    let n = region.len();
+    let mut label = vec![u32::MAX; n];
+    let mut count = 0u32;
+    let mut stack = Vec::new();
+    for s in 0..n {
+        if label[s] != u32::MAX {
+            continue;
+        }
+        label[s] = count;
+        stack.push(s);
+        while let Some(v) = stack.pop() {
+            for d in Dir::ALL {
+                if cut[v][d.index()] {
+                    continue;
+                }
+                if let Some(w) = region.neighbor(v, d) {
+                    if label[w] == u32::MAX {
+                        label[w] = count;
+                        stack.push(w);
+                    }
+                }
+            }
+        }
+        count += 1;
+    }
+    (label, count as usize)
+}
+
+/// Steps 3–5 of the proof of Theorem 5: links every `internal` node into the closed walks of
+/// `graph` (which must visit every other node), with doublerow parity `parity[piece[i]]`.
+/// Returns the wasted edges (edges added beyond one per newly visited node) per piece.
+///
+/// Also used by Theorem 7 ([`super::holes1325`]), whose graph holds one contour per
+/// boundary component.
+pub(super) fn link_internal_nodes(
+    region: &Region,
+    graph: &mut GridMultigraph,
+    internal: &[bool],
+    piece: &[u32],
+    parity: &[i32],
+    stats: &mut LinkStats,
+) -> Vec<i64> {
+    let mut linker = Linker { region, graph, unvisited: internal.to_vec(), piece, parity, stats };
+    linker.free_detours();
+    let mut waste = vec![0i64; parity.len()];
+    linker.remaining_components(&mut waste);
+    waste
+}
+
+struct Linker<'a> {
+    region: &'a Region,
+    graph: &'a mut GridMultigraph,
+    unvisited: Vec<bool>,
+    piece: &'a [u32],
+    parity: &'a [i32],
+    stats: &'a mut LinkStats,
+}
+
+impl Linker<'_> {
+    fn at(&self, x: i32, y: i32) -> Option<usize> {
+        self.region.index_of(Pixel::new(x, y))
+    }
+
+    fn unv(&self, x: i32, y: i32) -> bool {
+        self.at(x, y).is_some_and(|i| self.unvisited[i])
+    }
+
+    /// Bottom row of the doublerow of internal node `i`.
+    fn bottom_row(&self, i: usize) -> i32 {
+        let y = self.region.pixel(i).y;
+        y - (y - self.parity[self.piece[i] as usize]).rem_euclid(2)
+    }
+
+    fn edge(&self, x0: i32, y0: i32, x1: i32, y1: i32) -> bool {
+        match (self.at(x0, y0), self.at(x1, y1)) {
+            (Some(a), Some(b)) => self.graph.has_between(self.region, a, b),
+            _ => false,
+        }
+    }
+
+    /// Replaces edge u–v of C' by the path u, a, b, v (a free detour through a and b).
+    fn detour(&mut self, u: usize, a: usize, b: usize, v: usize) {
+        let ok = self.graph.remove_between(self.region, u, v);
+        debug_assert!(ok, "detours replace an edge of C'");
+        self.graph.add_path(self.region, &[u, a, b, v]);
+        self.unvisited[a] = false;
+        self.unvisited[b] = false;
+    }
+
+    /// Type I detour into the doubleton column whose bottom node is `a`, from the side
+    /// `dx` (−1 west, +1 east); true if applied.
+    fn try_type1(&mut self, a: usize, dx: i32) -> bool {
+        let p = self.region.pixel(a);
+        if !self.unvisited[a] || !self.unv(p.x, p.y + 1) || self.bottom_row(a) != p.y {
+            return false;
+        }
+        let (Some(u), Some(v)) = (self.at(p.x + dx, p.y), self.at(p.x + dx, p.y + 1)) else {
+            return false;
+        };
+        if self.unvisited[u] || self.unvisited[v] || !self.edge(p.x + dx, p.y, p.x + dx, p.y + 1) {
+            return false;
+        }
+        let b = self.at(p.x, p.y + 1).expect("checked unvisited");
+        self.detour(u, a, b, v);
+        self.stats.type1 += 1;
+        true
+    }
+
+    /// Pushes a vertical edge as far as it goes from column of `a` away from side `dx`.
+    fn push_type1(&mut self, mut a: usize, dx: i32) -> bool {
+        let mut any = false;
+        while self.try_type1(a, dx) {
+            any = true;
+            let p = self.region.pixel(a);
+            match self.at(p.x - dx, p.y) {
+                Some(next) => a = next,
+                None => break,
+            }
+        }
+        any
+    }
+
+    /// Tries Type I on the doubleton column at `a` (bottom node) from both sides.
+    fn type1_at(&mut self, a: usize) {
+        if !self.push_type1(a, -1) {
+            self.push_type1(a, 1);
+        }
+    }
+
+    /// Whether column (x, rows yb, yb + 1) is a singleton with its node in row `r`.
+    fn singleton_in(&self, x: i32, yb: i32, r: i32) -> bool {
+        let other = if r == yb { yb + 1 } else { yb };
+        self.unv(x, r) && !self.unv(x, other) && self.at(x, other).is_some()
+    }
+
+    fn free_detours(&mut self) {
+        let n = self.region.len();
+        // Type I everywhere, then Type II runs, then Type I next to what Type II opened.
+        for a in 0..n {
+            if self.unvisited[a] {
+                self.type1_at(a);
+            }
+        }
+        loop {
+            let mut opened = Vec::new();
+            for a in 0..n {
+                if !self.unvisited[a] {
+                    continue;
+                }
+                let p = self.region.pixel(a);
+                let yb = self.bottom_row(a);
+                let r = p.y;
+                let other = if r == yb { yb + 1 } else { yb };
+                if !self.singleton_in(p.x, yb, r) {
+                    continue;
+                }
+                // Start of a maximal run: the west column does not continue it.
+                if self.singleton_in(p.x - 1, yb, r)
+                    && self.piece_matches(a, p.x - 1, r)
+                    && self.edge(p.x - 1, other, p.x, other)
+                {
+                    continue;
+                }
+                let mut x = p.x;
+                while self.singleton_in(x, yb, r)
+                    && self.singleton_in(x + 1, yb, r)
+                    && self.piece_matches(a, x + 1, r)
+                    && self.edge(x, other, x + 1, other)
+                {
+                    let a0 = self.at(x, r).expect("singleton");
+                    let a1 = self.at(x + 1, r).expect("singleton");
+                    let u = self.at(x, other).expect("edge");
+                    let v = self.at(x + 1, other).expect("edge");
+                    self.detour(u, a0, a1, v);
+                    self.stats.type2 += 1;
+                    opened.extend([(x - 1, yb), (x + 2, yb)]);
+                    x += 2;
+                }
+            }
+            if opened.is_empty() {
+                break;
+            }
+            for (x, yb) in opened {
+                if let Some(a) = self.at(x, yb) {
+                    if self.unvisited[a] {
+                        self.type1_at(a);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether pixel (x, y) belongs to the piece of `a` (so it uses the same doublerows).
+    fn piece_matches(&self, a: usize, x: i32, y: i32) -> bool {
+        self.at(x, y).is_some_and(|b| self.piece[b] == self.piece[a])
+    }
+
+    /// Step 5: the components left in each doublerow, by the cases of Fig. 15.
+    fn remaining_components(&mut self, waste: &mut [i64]) {
+        let n = self.region.len();
+        let mut stack = Vec::new();
+        for s in 0..n {
+            if !self.unvisited[s] {
+                continue;
+            }
+            // The component of s within its doublerow.
+            let yb = self.bottom_row(s);
+            let mut comp = vec![s];
+            let mut mark = std::collections::HashSet::from([s]);
+            stack.push(s);
+            while let Some(v) = stack.pop() {
+                let p = self.region.pixel(v);
+                for d in Dir::ALL {
+                    let q = p.step(d);
+                    if q.y != yb && q.y != yb + 1 {
+                        continue;
+                    }
+                    if let Some(w) = self.region.index_of(q) {
+                        if self.unvisited[w] && mark.insert(w) {
+                            comp.push(w);
+                            stack.push(w);
+                        }
+                    }
+                }
+            }
+            let w = self.link_component(&comp, yb);
+            waste[self.piece[s] as usize] += w;
+            self.stats.wasted += w;
+            for &v in &comp {
+                self.unvisited[v] = false;
+            }
+        }
+    }
+
+    /// Adds a closed walk (pixel coordinates) to the graph.
+    fn add_cycle(&mut self, cycle: &[(i32, i32)]) {
+        let idx: Vec<usize> =
+            cycle.iter().map(|&(x, y)| self.at(x, y).expect("cycle pixels are region pixels")).collect();
+        self.graph.add_closed_walk(self.region, &idx);
+    }
+
+    /// Links one remaining component H (rows yb, yb + 1); returns the wasted edges.
+    fn link_component(&mut self, comp: &[usize], yb: i32) -> i64 {
+        let mut cols: BTreeMap<i32, (bool, bool)> = BTreeMap::new();
+        for &v in comp {
+            let p = self.region.pixel(v);
+            let e = cols.entry(p.x).or_default();
+            if p.y == yb {
+                e.0 = true;
+            } else {
+                e.1 = true;
+            }
+        }
+        let cols: Vec<(i32, bool, bool)> = cols.into_iter().map(|(x, (b, t))| (x, b, t)).collect();
+        let row_of = |c: &(i32, bool, bool)| if c.1 { yb } else { yb + 1 };
+        let other = |r: i32| if r == yb { yb + 1 } else { yb };
+        let doubles: Vec<i32> = cols.iter().filter(|c| c.1 && c.2).map(|c| c.0).collect();
+        if doubles.is_empty() {
+            if cols.len() == 1 {
+                // (a): the edge s–t doubled.
+                let (x, r) = (cols[0].0, row_of(&cols[0]));
+                self.add_cycle(&[(x, r), (x, other(r))]);
+                self.stats.cases[0] += 1;
+                return 1;
+            }
+            if cols.len() == 2 && row_of(&cols[0]) == row_of(&cols[1]) {
+                // (b): the 4-cycle t1 s1 s2 t2.
+                let (x, r) = (cols[0].0, row_of(&cols[0]));
+                self.add_cycle(&[(x, other(r)), (x, r), (x + 1, r), (x + 1, other(r))]);
+                self.stats.cases[1] += 1;
+                return 2;
+            }
+            return self.link_unexpected(comp);
+        }
+        let (l, r) = (doubles[0], doubles[doubles.len() - 1]);
+        let contiguous = doubles.len() as i32 == r - l + 1;
+        let left = cols.iter().find(|c| c.0 == l - 1).copied();
+        let right = cols.iter().find(|c| c.0 == r + 1).copied();
+        let singles = cols.len() - doubles.len();
+        if !contiguous || singles != usize::from(left.is_some()) + usize::from(right.is_some()) {
+            return self.link_unexpected(comp);
+        }
+        let row = |x0: i32, x1: i32, y: i32| -> Vec<(i32, i32)> {
+            if x0 <= x1 { (x0..=x1).map(|x| (x, y)).collect() } else { (x1..=x0).rev().map(|x| (x, y)).collect() }
+        };
+        match (left, right) {
+            (None, None) => {
+                // (c): the cycle around D, tied to its west neighbour by a doubled edge.
+                let mut cycle = row(l, r, yb);
+                cycle.extend(row(r, l, yb + 1));
+                self.add_cycle(&cycle);
+                self.add_cycle(&[(l - 1, yb), (l, yb)]);
+                self.stats.cases[2] += 1;
+                2
+            }
+            (Some(s), None) => {
+                // (d), singleton on the left in row A.
+                let a = row_of(&s);
+                let mut cycle = vec![(l - 1, other(a)), (l - 1, a)];
+                cycle.extend(row(l, r, a));
+                cycle.extend(row(r, l, other(a)));
+                self.add_cycle(&cycle);
+                self.stats.cases[3] += 1;
+                1
+            }
+            (None, Some(s)) => {
+                // (d), singleton on the right in row A.
+                let a = row_of(&s);
+                let mut cycle = vec![(r + 1, other(a)), (r + 1, a)];
+                cycle.extend(row(r, l, a));
+                cycle.extend(row(l, r, other(a)));
+                self.add_cycle(&cycle);
+                self.stats.cases[3] += 1;
+                1
+            }
+            (Some(s1), Some(s2)) => {
+                // (e) same row, (f) different rows: t1 s1, row A, (r+1, A), (r+1, B), row B.
+                let a = row_of(&s1);
+                let mut cycle = vec![(l - 1, other(a)), (l - 1, a)];
+                cycle.extend(row(l, r, a));
+                cycle.extend([(r + 1, a), (r + 1, other(a))]);
+                cycle.extend(row(r, l, other(a)));
+                self.add_cycle(&cycle);
+                let k = if row_of(&s2) == a { 4 } else { 5 };
+                self.stats.cases[k] += 1;
+                2
+            }
+        }
+    }
+
+    /// A component the case analysis does not foresee: a doubled spanning tree hung from a
+    /// visited neighbour. Returns its waste (|H|).
+    fn link_unexpected(&mut self, comp: &[usize]) -> i64 {
+        self.stats.unexpected += 1;
+        let inside: std::collections::HashSet<usize> = comp.iter().copied().collect();
+        let mut done = std::collections::HashSet::new();
+        // Hang the first node with a visited neighbour, then grow a tree through comp.
+        let root = comp
+            .iter()
+            .copied()
+            .find(|&v| self.region.neighbors(v).any(|w| !inside.contains(&w)))
+            .expect("a component has a neighbour outside it");
+        let anchor = self.region.neighbors(root).find(|w| !inside.contains(w)).expect("found above");
+        self.graph.add_between(self.region, anchor, root);
+        self.graph.add_between(self.region, anchor, root);
+        done.insert(root);
+        let mut stack = vec![root];
+        while let Some(v) = stack.pop() {
+            let next: Vec<usize> = self.region.neighbors(v).filter(|w| inside.contains(w)).collect();
+            for w in next {
+                if done.insert(w) {
+                    self.graph.add_between(self.region, v, w);
+                    self.graph.add_between(self.region, v, w);
+                    stack.push(w);
+                }
+            }
+        }
+        comp.len() as i64
+    }
+}
+
+/// The biconnected components (blocks) of the grid graph, as pixel lists: iterative
+/// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels.
+pub(super) fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
+    let n = region.len();
+    let mut disc = vec![u32::MAX; n];
+    let mut low = vec![0u32; n];
+    let mut time = 0u32;
+    let mut edges: Vec<(usize, usize)> = Vec::new();
+    let mut blocks = Vec::new();
+    let mut stamp = vec![usize::MAX; n];
+    let mut frames: Vec<(usize, usize, usize)> = Vec::new();
+    for root in 0..n {
+        if disc[root] != u32::MAX {
+            continue;
+        }
+        disc[root] = time;
+        low[root] = time;
+        time += 1;
+        frames.push((root, usize::MAX, 0));
+        while let Some(frame) = frames.last_mut() {
+            let (v, parent, d) = *frame;
+            if d < 4 {
+                frame.2 += 1;
+                let Some(w) = region.neighbor(v, Dir::from_index(d)) else { continue };
+                if disc[w] == u32::MAX {
+                    disc[w] = time;
+                    low[w] = time;
+                    time += 1;
+                    edges.push((v, w));
+                    frames.push((w, v, 0));
+                } else if w != parent && disc[w] < disc[v] {
+                    edges.push((v, w));
+                    low[v] = low[v].min(disc[w]);
+                }
+            } else {
+                frames.pop();
+                if parent != usize::MAX {
+                    low[parent] = low[parent].min(low[v]);
+                    if low[v] >= disc[parent] {
+                        let id = blocks.len();
+                        let mut block = Vec::new();
+                        while let Some((a, b)) = edges.pop() {
+                            for x in [a, b] {
+                                if stamp[x] != id {
+                                    stamp[x] = id;
+                                    block.push(x);
+                                }
+                            }
+                            if (a, b) == (parent, v) {
+                                break;
+                            }
+                        }
+                        blocks.push(block);
+                    }
+                }
+            }
+        }
+    }
+    blocks
+}
+
+/// The registry entry.
+pub const ALGORITHM: Algorithm = Algorithm {
+    name: "tsp65",
+    summary: "contour + free detours + the six cases, blocks spliced (Theorem 5, milling paper); \
+              length <= (6N-4)/5 without cut vertices (certificate bound_6n_4_5)",
+    objectives: &[Objective::Length],
+    guarantees: &[Guarantee {
+        objective: Objective::Length,
+        num: 6,
+        den: 5,
+        add: 0,
+        against: Against::Opt,
+        source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
+    }],
+    precondition,
+    run: |region, _| tsp65(region),
+};

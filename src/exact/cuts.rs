@@ -1,0 +1,278 @@
+//! Separation of connectivity cuts `x(δ(S)) >= 2` on a weighted support graph.
+//!
+//! Integer and fractional solutions are treated alike: first the connected components of the
+//! support (a disconnected support violates the cut of each component by 2), then, on a
+//! connected support, all minimum cuts of a Gomory–Hu tree by Gusfield's algorithm (n − 1
+//! maximum flows, Dinic's algorithm), keeping every tree cut lighter than 2. The graphs here
+//! have at most a few thousand nodes, so exact separation is cheap next to an LP re-solve.
+
+/// Disjoint sets with path halving and union by size.
+#[derive(Clone, Debug)]
+pub(crate) struct UnionFind {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl UnionFind {
+    pub fn new(n: usize) -> UnionFind {
+        UnionFind { parent: (0..n as u32).collect(), size: vec![1; n] }
+    }
+
+    pub fn find(&mut self, mut a: usize) -> usize {
+        while self.parent[a] as usize != a {
+            let p = self.parent[a] as usize;
+            self.parent[a] = self.parent[p];
+            a = p;
+        }
+        a
+    }
+
+    /// Joins the sets of `a` and `b`; false when they were already one.
+    pub fn union(&mut self, a: usize, b: usize) -> bool {
+        let (mut a, mut b) = (self.find(a), self.find(b));
+        if a == b {
+            return false;
+        }
+        if self.size[a] < self.size[b] {
+            std::mem::swap(&mut a, &mut b);
+        }
+        self.parent[b] = a as u32;
+        self.size[a] += self.size[b];
+        true
+    }
+
+    /// Component label in `0..count` for every element, and the count.
+    pub fn labels(&mut self) -> (Vec<u32>, usize) {
+        let n = self.parent.len();
+        let mut label = vec![u32::MAX; n];
+        let mut count = 0u32;
+        let mut out = vec![0u32; n];
+        for v in 0..n {
+            let r = self.find(v);
+            if label[r] == u32::MAX {
+                label[r] = count;
+                count += 1;
+            }
+            out[v] = label[r];
+        }
+        (out, count as usize)
+    }
+}
+
+/// Connected components of a graph on `n` nodes given by its edges.
+pub(crate) fn components(n: usize, edges: impl IntoIterator<Item = (usize, usize)>) -> (Vec<u32>, usize) {
+    let mut uf = UnionFind::new(n);
+    for (a, b) in edges {
+        uf.union(a, b);
+    }
+    uf.labels()
+}
+
+/// Maximum flow by Dinic's algorithm on an undirected graph with real capacities.
+struct FlowGraph {
+    n: usize,
+    head: Vec<usize>,
+    /// Arc k: to[k], cap[k]; arc k ^ 1 is its reverse.
+    to: Vec<u32>,
+    next: Vec<usize>,
+    cap: Vec<f64>,
+    base: Vec<f64>,
+}
+
+const NIL: usize = usize::MAX;
+
+impl FlowGraph {
+    fn new(n: usize, edges: &[(usize, usize, f64)]) -> FlowGraph {
+        let mut g = FlowGraph {
+            n,
+            head: vec![NIL; n],
+            to: Vec::with_capacity(2 * edges.len()),
+            next: Vec::with_capacity(2 * edges.len()),
+            cap: Vec::with_capacity(2 * edges.len()),
+            base: Vec::with_capacity(2 * edges.len()),
+        };
+        for &(a, b, c) in edges {
+            for (u, v) in [(a, b), (b, a)] {
+                g.to.push(v as u32);
+                g.next.push(g.head[u]);
+                g.head[u] = g.to.len() - 1;
+                g.base.push(c);
+            }
+        }
+        g.cap = g.base.clone();
+        g
+    }
+
+    /// Max flow from `s` to `t` (stops once it reaches `stop_at`); the source side of a minimum
+    /// cut is left in `side`.
+    fn max_flow(&mut self, s: usize, t: usize, stop_at: f64, side: &mut [bool]) -> f64 {
+        const EPS: f64 = 1e-9;
+        self.cap.copy_from_slice(&self.base);
+        let mut flow = 0.0;
+        let mut level = vec![u32::MAX; self.n];
+        let mut it = vec![NIL; self.n];
+        let mut queue = Vec::with_capacity(self.n);
+        loop {
+            level.iter_mut().for_each(|l| *l = u32::MAX);
+            level[s] = 0;
+            queue.clear();
+            queue.push(s);
+            let mut h = 0;
+            while h < queue.len() {
+                let u = queue[h];
+                h += 1;
+                let mut k = self.head[u];
+                while k != NIL {
+                    let v = self.to[k] as usize;
+                    if self.cap[k] > EPS && level[v] == u32::MAX {
+                        level[v] = level[u] + 1;
+                        queue.push(v);
+                    }
+                    k = self.next[k];
+                }
+            }
+            if level[t] == u32::MAX || flow >= stop_at {
+                for v in 0..self.n {
+                    side[v] = level[v] != u32::MAX;
+                }
+                return flow;
+            }
+            it.copy_from_slice(&self.head);
+            loop {
+                let f = self.augment(s, t, &level, &mut it);
+                if f <= EPS {
+                    break;
+                }
+                flow += f;
+            }
+        }
+    }
+
+    /// One augmenting path in the level graph (iterative DFS); returns its bottleneck.
+    fn augment(&mut self, s: usize, t: usize, level: &[u32], it: &mut [usize]) -> f64 {
+        const EPS: f64 = 1e-9;
+        let mut path: Vec<usize> = Vec::new();
+        let mut u = s;
+        loop {
+            if u == t {
+                let f = path.iter().map(|&k| self.cap[k]).fold(f64::INFINITY, f64::min);
+                for &k in &path {
+                    self.cap[k] -= f;
+                    self.cap[k ^ 1] += f;
+                }
+                return f;
+            }
+            let mut advanced = false;
+            while it[u] != NIL {
+                let k = it[u];
+                let v = self.to[k] as usize;
+                if self.cap[k] > EPS && level[v] == level[u] + 1 {
+                    path.push(k);
+                    u = v;
+                    advanced = true;
+                    break;
+                }
+                it[u] = self.next[k];
+            }
+            if !advanced {
+                // Dead end: retreat and skip the arc that led here.
+                let Some(k) = path.pop() else { return 0.0 };
+                u = self.to[k ^ 1] as usize;
+                it[u] = self.next[it[u]];
+            }
+        }
+    }
+}
+
+/// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
+/// weight is below `threshold`, for a graph on `n` nodes with weighted edges.
+///
+/// Components of the positive-weight support come first; on a connected support, Gusfield's
+/// algorithm yields a minimum cut for every pair of nodes (through the Gomory–Hu tree), and
+/// each tree cut below the threshold is returned once.
+pub(crate) fn violated_cuts(n: usize, edges: &[(usize, usize, f64)], threshold: f64) -> Vec<Vec<bool>> {
+    if n < 2 {
+        return Vec::new();
+    }
+    let support: Vec<(usize, usize, f64)> = edges.iter().copied().filter(|e| e.2 > 1e-9).collect();
+    let (label, count) = components(n, support.iter().map(|&(a, b, _)| (a, b)));
+    let mut out: Vec<Vec<bool>> = Vec::new();
+    if count > 1 {
+        for c in 0..count as u32 {
+            if c == label[0] {
+                continue;
+            }
+            out.push(label.iter().map(|&l| l == c).collect());
+        }
+        if count > 2 {
+            // The component of node 0 is cut too: its complement as S.
+            out.push(label.iter().map(|&l| l != label[0]).collect());
+        }
+        return out;
+    }
+    let mut g = FlowGraph::new(n, &support);
+    let mut parent = vec![0usize; n];
+    let mut side = vec![false; n];
+    let mut seen = std::collections::HashSet::new();
+    for s in 1..n {
+        let t = parent[s];
+        let f = g.max_flow(s, t, f64::INFINITY, &mut side);
+        // Gusfield: later nodes on s's side with the same parent now hang below s.
+        for v in s + 1..n {
+            if side[v] && parent[v] == t {
+                parent[v] = s;
+            }
+        }
+        if f < threshold {
+            // Normalize so that S excludes node 0.
+            let cut: Vec<bool> = if side[0] { side.iter().map(|&b| !b).collect() } else { side.clone() };
+            if seen.insert(cut.clone()) {
+                out.push(cut);
+            }
+        }
+    }
+    out
+}
+
+/// The weight of the cut `S` in the given graph.
+#[cfg(test)]
+pub(crate) fn cut_weight(edges: &[(usize, usize, f64)], s: &[bool]) -> f64 {
+    edges.iter().filter(|&&(a, b, _)| s[a] != s[b]).map(|e| e.2).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn components_give_zero_cuts() {
+        let edges = [(0, 1, 1.0), (1, 2, 1.0), (2, 0, 1.0), (3, 4, 2.0)];
+        let cuts = violated_cuts(5, &edges, 2.0 - 1e-6);
+        assert_eq!(cuts, vec![vec![false, false, false, true, true]]);
+    }
+
+    #[test]
+    fn min_cuts_of_two_triangles_joined_by_a_light_edge() {
+        // Two triangles of weight-1 edges joined by two half edges: the cut between them is 1.
+        let edges = [
+            (0, 1, 1.0),
+            (1, 2, 1.0),
+            (2, 0, 1.0),
+            (3, 4, 1.0),
+            (4, 5, 1.0),
+            (5, 3, 1.0),
+            (0, 3, 0.5),
+            (2, 5, 0.5),
+        ];
+        let cuts = violated_cuts(6, &edges, 2.0 - 1e-6);
+        assert!(!cuts.is_empty());
+        for c in &cuts {
+            assert!(cut_weight(&edges, c) < 2.0 - 1e-6);
+            assert!(!c[0]);
+        }
+        assert!(cuts.contains(&vec![false, false, false, true, true, true]));
+        // A 2-edge-connected graph with all cuts >= 2 yields nothing.
+        let ring: Vec<(usize, usize, f64)> = (0..6).map(|i| (i, (i + 1) % 6, 1.0)).collect();
+        assert!(violated_cuts(6, &ring, 2.0 - 1e-6).is_empty());
+    }
+}

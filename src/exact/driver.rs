@@ -1,0 +1,407 @@
+//! The cut loop shared by every model: an LP cutting-plane phase, reduced-cost fixing, then
+//! MIP rounds with the whole cut pool, each integer solution either accepted (feasible) or cut
+//! off and repaired into a feasible incumbent.
+//!
+//! HiGHS has no lazy-constraint callback, so connectivity is enforced outside the solver:
+//!
+//! 1. **LP phase.** The LP relaxation is re-solved from its previous basis after each round of
+//!    cuts separated on the fractional solution (exact minimum cuts, see [`super::cuts`]),
+//!    until no cut is violated. Every LP optimum, rounded up to the next even integer, is a
+//!    proven bound: every objective here is even on every integer solution (closed walks in
+//!    the bipartite grid have even length and an even number of quarter turns).
+//! 2. **Reduced-cost fixing.** With an incumbent of value U, a better solution costs at most
+//!    U − 2; an integer column whose LP reduced cost `d` would lift the LP bound above U − 2
+//!    when moved `k` units off its bound is restricted to fewer than `k` units. The restricted
+//!    model R contains every solution better than U, so `min(opt(R), U)` is a proven bound.
+//! 3. **MIP rounds.** HiGHS solves R with the whole pool, started from the incumbent. A
+//!    feasible MIP optimum is optimal. Otherwise the cuts it violates join the pool (and the
+//!    LP, which is separated again), the solution is repaired into a feasible candidate
+//!    incumbent, and the MIP is solved again. The MIP's optimum, and on a time limit its dual
+//!    bound, are proven bounds.
+//!
+//! The loop stops as soon as the incumbent meets the best bound; nothing else is optimal.
+
+use super::lp::{Deadline, Formulation, IncrementalLp, LpSolution, Outcome, Row, Settings, ceil_bound, solve_mip};
+use std::collections::HashSet;
+
+/// What a model gives the driver.
+pub(crate) trait CutModel {
+    fn formulation(&self) -> &Formulation;
+    /// Cuts violated by `x` (fractional or integral), as rows of the formulation.
+    fn separate(&self, x: &[f64], integral: bool) -> Vec<Row>;
+    /// Whether an integral `x` satisfying the formulation is feasible for the problem.
+    fn is_feasible(&self, x: &[f64]) -> bool;
+    /// A feasible solution built from an integer solution of a relaxation, if the model can.
+    fn repair(&self, x: &[f64]) -> Option<Vec<f64>>;
+    /// Bounds valid for every integer solution of value at most `target` (tightened in place).
+    fn tighten(&self, _f: &mut Formulation, _target: u64) {}
+    /// Upper bounds on columns for a quick heuristic MIP (not valid restrictions: its
+    /// solutions only become incumbents).
+    fn heuristic_caps(&self) -> Option<Vec<f64>> {
+        None
+    }
+}
+
+/// Why the driver stopped.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Stop {
+    Optimal,
+    TimeLimit,
+    Infeasible,
+    Error(String),
+}
+
+/// The driver's answer: the best feasible solution, its value and the proven bound.
+#[derive(Clone, Debug)]
+pub(crate) struct Solved {
+    pub stop: Stop,
+    pub best: Option<Vec<f64>>,
+    pub upper: Option<u64>,
+    pub lower: u64,
+    pub lower_source: &'static str,
+    pub lp_bound: Option<u64>,
+    pub rounds: u32,
+}
+
+/// Rounds a proven real bound up to the next even integer.
+pub(crate) fn even_bound(b: f64) -> Option<u64> {
+    ceil_bound(b).map(|v| v + v % 2)
+}
+
+struct Loop<'m, M: CutModel> {
+    model: &'m M,
+    deadline: &'m Deadline,
+    settings: &'m Settings,
+    s: Solved,
+    pool: Vec<Row>,
+    seen: HashSet<(Vec<u32>, Vec<u64>)>,
+    lp: IncrementalLp,
+    last_lp: Option<LpSolution>,
+}
+
+impl<'m, M: CutModel> Loop<'m, M> {
+    fn f(&self) -> &'m Formulation {
+        self.model.formulation()
+    }
+
+    fn log(&self, msg: impl FnOnce() -> String) {
+        if self.settings.verbose {
+            eprintln!("exact [{:7.2} s] {}", self.deadline.elapsed(), msg());
+        }
+    }
+
+    fn value(&self, x: &[f64]) -> u64 {
+        self.f().objective(x).round().max(0.0) as u64
+    }
+
+    fn offer(&mut self, x: Vec<f64>, from: &str) {
+        let v = self.value(&x);
+        if self.s.upper.is_none_or(|u| v < u) {
+            self.log(|| format!("incumbent {v} from {from}"));
+            self.s.upper = Some(v);
+            self.s.best = Some(x);
+        }
+    }
+
+    fn raise(&mut self, b: u64, source: &'static str) {
+        let b = self.s.upper.map_or(b, |u| b.min(u));
+        if b > self.s.lower {
+            self.log(|| format!("bound {b} from {source}"));
+            self.s.lower = b;
+            self.s.lower_source = source;
+        }
+    }
+
+    fn done(&self) -> bool {
+        self.s.upper.is_some_and(|u| u <= self.s.lower)
+    }
+
+    fn round_integers(&self, x: &[f64]) -> Vec<f64> {
+        x.iter().zip(&self.f().integer).map(|(&v, &int)| if int { v.round() } else { v }).collect()
+    }
+
+    fn accepts(&self, xi: &[f64]) -> bool {
+        self.f().is_feasible(xi, &[]) && self.model.is_feasible(xi)
+    }
+
+    /// New cuts only (the pool never holds a row twice).
+    fn add_cuts(&mut self, cuts: Vec<Row>) -> Vec<Row> {
+        let fresh: Vec<Row> = cuts
+            .into_iter()
+            .filter(|r| self.seen.insert((r.idx.clone(), r.val.iter().map(|v| v.to_bits()).collect())))
+            .collect();
+        self.pool.extend(fresh.iter().cloned());
+        self.lp.add_rows(&fresh);
+        fresh
+    }
+
+    /// Re-solves and separates the LP until no cut is violated.
+    fn lp_phase(&mut self) -> Result<(), Stop> {
+        for _ in 0..1000 {
+            if self.deadline.expired() {
+                return Err(Stop::TimeLimit);
+            }
+            let sol = self.lp.solve(self.deadline);
+            match &sol.outcome {
+                Outcome::Optimal => {}
+                Outcome::TimeLimit => return Err(Stop::TimeLimit),
+                Outcome::Infeasible => return Err(Stop::Infeasible),
+                Outcome::Failed(m) => return Err(Stop::Error(m.clone())),
+            }
+            if let Some(b) = even_bound(sol.objective) {
+                self.s.lp_bound = Some(self.s.lp_bound.map_or(b, |old| old.max(b)));
+                self.raise(b, "lp relaxation with cuts");
+            }
+            let cuts = self.model.separate(&sol.x, false);
+            let objective = sol.objective;
+            self.last_lp = Some(sol);
+            let fresh = self.add_cuts(cuts);
+            if fresh.is_empty() {
+                return Ok(());
+            }
+            self.s.rounds += 1;
+            self.log(|| format!("LP round {}: value {objective:.3}, {} new cuts", self.s.rounds, fresh.len()));
+        }
+        Ok(())
+    }
+
+    /// The model R: every solution better than the incumbent, with bounds from the model's
+    /// own argument and from reduced costs.
+    fn restricted(&self) -> Formulation {
+        let Some(u) = self.s.upper else { return self.f().clone() };
+        let target = u.saturating_sub(2);
+        let mut g = self.f().clone();
+        self.model.tighten(&mut g, target);
+        match &self.last_lp {
+            Some(sol) => fix_by_reduced_cost(&g, sol, target as f64),
+            None => g,
+        }
+    }
+
+    /// A quick MIP with the model's heuristic caps, for an incumbent.
+    fn heuristic_phase(&mut self) {
+        let Some(caps) = self.model.heuristic_caps() else { return };
+        let mut g = self.restricted();
+        for (h, c) in g.hi.iter_mut().zip(&caps) {
+            *h = h.min(*c);
+        }
+        for j in 0..g.num_cols() {
+            g.lo[j] = g.lo[j].min(g.hi[j]);
+        }
+        let budget = self.deadline.remaining().map_or(30.0, |r| r * 0.25);
+        let cap = Deadline::new(Some(budget));
+        let start = self.s.best.clone().filter(|x| g.is_feasible(x, &self.pool));
+        let mip = solve_mip(&g, &self.pool, start.as_deref(), &cap, self.settings);
+        self.s.rounds += 1;
+        if let Some(x) = &mip.x {
+            let xi = self.round_integers(x);
+            if self.accepts(&xi) {
+                self.offer(xi, "heuristic mip");
+            } else {
+                let cuts = self.model.separate(&xi, true);
+                if let Some(r) = self.model.repair(&xi) {
+                    self.offer(r, "heuristic mip, repaired");
+                }
+                self.add_cuts(cuts);
+            }
+        }
+    }
+
+    fn finish(mut self, stop: Stop) -> Solved {
+        if let Some(u) = self.s.upper {
+            if self.s.lower >= u {
+                self.s.lower = u;
+                self.s.stop = Stop::Optimal;
+                return self.s;
+            }
+        }
+        self.s.stop = match stop {
+            Stop::Optimal => Stop::Error("internal: optimal without matching bounds".into()),
+            other => other,
+        };
+        self.s
+    }
+
+    fn run(mut self) -> Solved {
+        if self.done() {
+            return self.finish(Stop::Optimal);
+        }
+        if let Err(stop) = self.lp_phase() {
+            return self.finish(stop);
+        }
+        // An integral LP optimum that is feasible is optimal.
+        if let Some(sol) = &self.last_lp {
+            let xi = self.round_integers(&sol.x);
+            if self.accepts(&xi) && self.pool.iter().all(|r| r.violation(&xi) < 1e-6) {
+                self.offer(xi, "integral LP");
+            }
+        }
+        if !self.done() {
+            self.heuristic_phase();
+            if let Err(stop) = self.lp_phase() {
+                return self.finish(stop);
+            }
+        }
+        loop {
+            if self.done() {
+                return self.finish(Stop::Optimal);
+            }
+            if self.deadline.expired() {
+                return self.finish(Stop::TimeLimit);
+            }
+            let restricted = self.restricted();
+            let mip = solve_mip(&restricted, &self.pool, self.s.best.as_deref(), self.deadline, self.settings);
+            self.s.rounds += 1;
+            match &mip.outcome {
+                Outcome::Failed(m) => return self.finish(Stop::Error(m.clone())),
+                Outcome::Infeasible => {
+                    // No solution better than the incumbent exists (or none at all).
+                    return match self.s.upper {
+                        Some(u) => {
+                            self.raise(u, "mip");
+                            self.finish(Stop::Optimal)
+                        }
+                        None => self.finish(Stop::Infeasible),
+                    };
+                }
+                Outcome::TimeLimit => {
+                    if let Some(b) = even_bound(mip.dual_bound) {
+                        self.raise(b, "mip dual bound");
+                    }
+                    if let Some(x) = &mip.x {
+                        let xi = self.round_integers(x);
+                        if self.accepts(&xi) {
+                            self.offer(xi, "mip");
+                        } else if let Some(r) = self.model.repair(&xi) {
+                            self.offer(r, "repair");
+                        }
+                    }
+                    let stop = if self.done() { Stop::Optimal } else { Stop::TimeLimit };
+                    return self.finish(stop);
+                }
+                Outcome::Optimal => {}
+            }
+            let Some(x) = &mip.x else {
+                return self.finish(Stop::Error("HiGHS reported an optimal MIP without a solution".into()));
+            };
+            // Optimal within an absolute gap below 2 on an even objective: the optimum of R.
+            if let Some(b) = even_bound(mip.dual_bound.max(mip.objective - 1.99)) {
+                self.raise(b, "mip");
+            }
+            let xi = self.round_integers(x);
+            if self.accepts(&xi) {
+                self.offer(xi, "mip");
+                let stop = if self.done() { Stop::Optimal } else { Stop::Error("MIP optimum and bound disagree".into()) };
+                return self.finish(stop);
+            }
+            let cuts = self.model.separate(&xi, true);
+            self.log(|| format!("MIP round {}: value {:.1}, {} violated cuts", self.s.rounds, mip.objective, cuts.len()));
+            if let Some(r) = self.model.repair(&xi) {
+                self.offer(r, "repair");
+            }
+            if self.done() {
+                return self.finish(Stop::Optimal);
+            }
+            if self.add_cuts(cuts).is_empty() {
+                return self.finish(Stop::Error("separation found no cut for an infeasible integer solution".into()));
+            }
+            if let Err(stop) = self.lp_phase() {
+                return self.finish(stop);
+            }
+        }
+    }
+}
+
+/// Runs the loop. `start` is a feasible solution (the caller validated it), `lower` a proven
+/// bound with its source.
+pub(crate) fn run<M: CutModel>(
+    model: &M,
+    start: Option<Vec<f64>>,
+    lower: (u64, &'static str),
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Solved {
+    let mut l = Loop {
+        model,
+        deadline,
+        settings,
+        s: Solved {
+            stop: Stop::TimeLimit,
+            best: None,
+            upper: None,
+            lower: lower.0,
+            lower_source: lower.1,
+            lp_bound: None,
+            rounds: 0,
+        },
+        pool: Vec::new(),
+        seen: HashSet::new(),
+        lp: IncrementalLp::new(model.formulation(), *settings),
+        last_lp: None,
+    };
+    if let Some(x) = start {
+        if l.accepts(&x) {
+            l.offer(x, "start");
+        }
+    }
+    l.run()
+}
+
+/// The LP relaxation's bound with all its cuts (the LP phase alone), if it converges in time.
+pub(crate) fn lp_bound<M: CutModel>(model: &M, deadline: &Deadline, settings: &Settings) -> Option<u64> {
+    let mut l = Loop {
+        model,
+        deadline,
+        settings,
+        s: Solved {
+            stop: Stop::TimeLimit,
+            best: None,
+            upper: None,
+            lower: 0,
+            lower_source: "",
+            lp_bound: None,
+            rounds: 0,
+        },
+        pool: Vec::new(),
+        seen: HashSet::new(),
+        lp: IncrementalLp::new(model.formulation(), *settings),
+        last_lp: None,
+    };
+    let _ = l.lp_phase();
+    l.s.lp_bound
+}
+
+/// Restricts integer columns that cannot move away from their LP bound in any solution of
+/// value at most `target` (reduced-cost fixing).
+fn fix_by_reduced_cost(f: &Formulation, sol: &LpSolution, target: f64) -> Formulation {
+    let mut g = f.clone();
+    if sol.reduced_cost.len() != f.num_cols() {
+        return g;
+    }
+    let slack = target - sol.objective;
+    if slack < -1e-6 && f.num_cols() > 0 {
+        // Even the LP cannot reach the target: R is empty.
+        g.lo[0] = 1.0;
+        g.hi[0] = 0.0;
+        return g;
+    }
+    for j in 0..f.num_cols() {
+        if !f.integer[j] {
+            continue;
+        }
+        let d = sol.reduced_cost[j];
+        let x = sol.x[j];
+        if d > 1e-7 && (x - f.lo[j]).abs() < 1e-7 {
+            let k = ((slack + 1e-6) / d).floor();
+            if f.lo[j] + k < g.hi[j] {
+                g.hi[j] = f.lo[j] + k;
+            }
+        } else if d < -1e-7 && f.hi[j].is_finite() && (x - f.hi[j]).abs() < 1e-7 {
+            let k = ((slack + 1e-6) / -d).floor();
+            if f.hi[j] - k > g.lo[j] {
+                g.lo[j] = f.hi[j] - k;
+            }
+        }
+    }
+    g
+}

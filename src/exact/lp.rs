@@ -1,0 +1,373 @@
+//! A thin layer over embedded HiGHS: a model in plain vectors ([`Formulation`]), an LP that
+//! keeps its basis while cuts are added ([`IncrementalLp`]), and one-shot MIP solves
+//! ([`solve_mip`]) that report the proven dual bound and take a start solution.
+//!
+//! This talks to the `highs` crate directly rather than through good_lp: good_lp rebuilds the
+//! whole model on every solve and exposes neither adding rows to a solved model (the cutting
+//! plane loop re-solves the LP from the previous basis, dual simplex, after each round of
+//! cuts), nor the LP's reduced costs (used for reduced-cost fixing), nor the MIP's dual bound
+//! (the proven `lower_bound` of a `time_limit` answer).
+
+use highs::{Col, HighsModelStatus, Model, RowProblem, Sense};
+use std::time::Instant;
+
+/// One linear constraint `lo <= Σ val[k] · x[idx[k]] <= hi`.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Row {
+    pub idx: Vec<u32>,
+    pub val: Vec<f64>,
+    pub lo: f64,
+    pub hi: f64,
+}
+
+impl Row {
+    /// `Σ terms >= lo`.
+    pub fn at_least(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64) -> Row {
+        Row::range(terms, lo, f64::INFINITY)
+    }
+
+    /// `lo <= Σ terms <= hi`, merging repeated columns.
+    pub fn range(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64, hi: f64) -> Row {
+        let mut t: Vec<(usize, f64)> = terms.into_iter().collect();
+        t.sort_unstable_by_key(|&(i, _)| i);
+        let mut idx: Vec<u32> = Vec::with_capacity(t.len());
+        let mut val: Vec<f64> = Vec::with_capacity(t.len());
+        for (i, v) in t {
+            if idx.last() == Some(&(i as u32)) {
+                *val.last_mut().expect("same length") += v;
+            } else {
+                idx.push(i as u32);
+                val.push(v);
+            }
+        }
+        let (idx, val) = idx.into_iter().zip(val).filter(|&(_, v)| v != 0.0).unzip();
+        Row { idx, val, lo, hi }
+    }
+
+    /// The row's activity at `x`.
+    pub fn activity(&self, x: &[f64]) -> f64 {
+        self.idx.iter().zip(&self.val).map(|(&i, &v)| v * x[i as usize]).sum()
+    }
+
+    /// How far `x` violates the row (0 when satisfied).
+    pub fn violation(&self, x: &[f64]) -> f64 {
+        let a = self.activity(x);
+        (self.lo - a).max(a - self.hi).max(0.0)
+    }
+}
+
+/// A minimization model: columns with costs, bounds and integrality, and rows.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Formulation {
+    pub cost: Vec<f64>,
+    pub lo: Vec<f64>,
+    pub hi: Vec<f64>,
+    pub integer: Vec<bool>,
+    pub rows: Vec<Row>,
+}
+
+impl Formulation {
+    pub fn add_col(&mut self, cost: f64, lo: f64, hi: f64, integer: bool) -> usize {
+        self.cost.push(cost);
+        self.lo.push(lo);
+        self.hi.push(hi);
+        self.integer.push(integer);
+        self.cost.len() - 1
+    }
+
+    pub fn num_cols(&self) -> usize {
+        self.cost.len()
+    }
+
+    pub fn objective(&self, x: &[f64]) -> f64 {
+        self.cost.iter().zip(x).map(|(c, v)| c * v).sum()
+    }
+
+    /// Whether `x` satisfies bounds, integrality and every row (including `extra`).
+    pub fn is_feasible(&self, x: &[f64], extra: &[Row]) -> bool {
+        const TOL: f64 = 1e-6;
+        x.len() == self.num_cols()
+            && (0..x.len()).all(|j| {
+                x[j] >= self.lo[j] - TOL
+                    && x[j] <= self.hi[j] + TOL
+                    && (!self.integer[j] || (x[j] - x[j].round()).abs() <= TOL)
+            })
+            && self.rows.iter().chain(extra).all(|r| r.violation(x) <= TOL)
+    }
+
+    fn to_problem(&self, integral: bool, extra: &[Row]) -> (RowProblem, Vec<Col>) {
+        let mut pb = RowProblem::default();
+        let cols: Vec<Col> = (0..self.num_cols())
+            .map(|j| {
+                pb.add_column_with_integrality(
+                    self.cost[j],
+                    self.lo[j]..=self.hi[j],
+                    integral && self.integer[j],
+                )
+            })
+            .collect();
+        for r in self.rows.iter().chain(extra) {
+            add_row_to_problem(&mut pb, &cols, r);
+        }
+        (pb, cols)
+    }
+}
+
+fn add_row_to_problem(pb: &mut RowProblem, cols: &[Col], r: &Row) {
+    let terms: Vec<(Col, f64)> = r.idx.iter().zip(&r.val).map(|(&i, &v)| (cols[i as usize], v)).collect();
+    match (r.lo.is_finite(), r.hi.is_finite()) {
+        (true, true) => pb.add_row(r.lo..=r.hi, terms),
+        (true, false) => pb.add_row(r.lo.., terms),
+        (false, true) => pb.add_row(..=r.hi, terms),
+        (false, false) => pb.add_row(f64::NEG_INFINITY..=f64::INFINITY, terms),
+    }
+}
+
+/// Wall-clock budget of one exact solve.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Deadline {
+    start: Instant,
+    limit: Option<f64>,
+}
+
+impl Deadline {
+    pub fn new(limit: Option<f64>) -> Deadline {
+        Deadline { start: Instant::now(), limit }
+    }
+
+    pub fn elapsed(&self) -> f64 {
+        self.start.elapsed().as_secs_f64()
+    }
+
+    /// Seconds left, `None` without a limit.
+    pub fn remaining(&self) -> Option<f64> {
+        self.limit.map(|l| (l - self.elapsed()).max(0.0))
+    }
+
+    pub fn expired(&self) -> bool {
+        self.remaining().is_some_and(|r| r <= 0.0)
+    }
+}
+
+/// Solver settings shared by every HiGHS call of one exact solve.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Settings {
+    pub threads: usize,
+    pub verbose: bool,
+}
+
+fn configure(model: &mut Model, s: &Settings) {
+    if s.verbose {
+        model.set_option("output_flag", true);
+        model.set_option("log_to_console", true);
+    } else {
+        model.make_quiet();
+    }
+    model.set_option("threads", s.threads.max(1) as i32);
+    // Every objective here takes even integer values on every integer solution (closed walks
+    // in the bipartite grid), so an absolute gap below 2 proves optimality; no relative slack.
+    model.set_option("mip_rel_gap", 0.0);
+    model.set_option("mip_abs_gap", 1.99);
+    // TEMPORARY experiment hook.
+    if let Ok(opts) = std::env::var("MOWMILL_HIGHS") {
+        for kv in opts.split(',').filter(|s| !s.is_empty()) {
+            let (k, v) = kv.split_once('=').expect("k=v");
+            let ok = if let Ok(i) = v.parse::<i32>() {
+                model.try_set_option(k, i).is_ok()
+            } else if let Ok(f) = v.parse::<f64>() {
+                model.try_set_option(k, f).is_ok()
+            } else if v == "true" || v == "false" {
+                model.try_set_option(k, v == "true").is_ok()
+            } else {
+                model.try_set_option(k, v.as_bytes()).is_ok()
+            };
+            assert!(ok, "option {k}={v}");
+        }
+    }
+}
+
+/// How a HiGHS call ended.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Outcome {
+    Optimal,
+    TimeLimit,
+    Infeasible,
+    Failed(String),
+}
+
+fn outcome(status: HighsModelStatus) -> Outcome {
+    match status {
+        HighsModelStatus::Optimal => Outcome::Optimal,
+        HighsModelStatus::ReachedTimeLimit | HighsModelStatus::ReachedInterrupt => Outcome::TimeLimit,
+        HighsModelStatus::Infeasible => Outcome::Infeasible,
+        s => Outcome::Failed(format!("HiGHS ended with status {s:?}")),
+    }
+}
+
+/// An LP solution with reduced costs.
+#[derive(Clone, Debug)]
+pub(crate) struct LpSolution {
+    pub outcome: Outcome,
+    pub objective: f64,
+    pub x: Vec<f64>,
+    pub reduced_cost: Vec<f64>,
+}
+
+/// The LP relaxation of a formulation, kept alive between rounds of cuts so that each
+/// re-solve starts from the previous optimal basis.
+pub(crate) struct IncrementalLp {
+    model: Option<Model>,
+    cols: Vec<Col>,
+    /// HiGHS's run clock accumulates over the runs of one model, and so does its time limit.
+    spent: f64,
+    pub rows: usize,
+}
+
+impl IncrementalLp {
+    pub fn new(f: &Formulation, settings: Settings) -> IncrementalLp {
+        let (pb, cols) = f.to_problem(false, &[]);
+        let mut model = pb.optimise(Sense::Minimise);
+        configure(&mut model, &settings);
+        // Dual simplex re-solves from the previous basis after rows are added.
+        model.set_option("presolve", "off");
+        model.set_option("solver", "simplex");
+        IncrementalLp { model: Some(model), cols, spent: 0.0, rows: f.rows.len() }
+    }
+
+    pub fn add_rows(&mut self, rows: &[Row]) {
+        let Some(model) = self.model.as_mut() else { return };
+        for r in rows {
+            let terms = r.idx.iter().zip(&r.val).map(|(&i, &v)| (self.cols[i as usize], v));
+            model.add_row(r.lo..=r.hi, terms);
+        }
+        self.rows += rows.len();
+    }
+
+    pub fn solve(&mut self, deadline: &Deadline) -> LpSolution {
+        let failed = |m: String| LpSolution {
+            outcome: Outcome::Failed(m),
+            objective: f64::NAN,
+            x: Vec::new(),
+            reduced_cost: Vec::new(),
+        };
+        let Some(mut model) = self.model.take() else {
+            return failed("the LP was lost after an earlier HiGHS error".into());
+        };
+        if let Some(r) = deadline.remaining() {
+            model.set_option("time_limit", self.spent + r.max(1e-3));
+        }
+        let t = Instant::now();
+        let solved = match model.try_solve() {
+            Ok(s) => s,
+            Err(e) => return failed(format!("HiGHS failed on the LP: {e:?}")),
+        };
+        self.spent += t.elapsed().as_secs_f64();
+        let out = outcome(solved.status());
+        let sol = solved.get_solution();
+        let result = LpSolution {
+            objective: solved.objective_value(),
+            x: sol.columns().to_vec(),
+            reduced_cost: sol.dual_columns().to_vec(),
+            outcome: out,
+        };
+        self.model = Some(Model::from(solved));
+        result
+    }
+}
+
+/// A MIP answer: the best solution found (if any) and the proven dual bound.
+#[derive(Clone, Debug)]
+pub(crate) struct MipSolution {
+    pub outcome: Outcome,
+    pub x: Option<Vec<f64>>,
+    pub objective: f64,
+    /// A proven lower bound on the model's optimum (−∞ when HiGHS proved nothing).
+    pub dual_bound: f64,
+}
+
+/// Solves `f` plus `extra` rows as a MIP from scratch, with an optional start solution.
+pub(crate) fn solve_mip(
+    f: &Formulation,
+    extra: &[Row],
+    start: Option<&[f64]>,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> MipSolution {
+    let (pb, _) = f.to_problem(true, extra);
+    let mut model = pb.optimise(Sense::Minimise);
+    configure(&mut model, settings);
+    if let Some(r) = deadline.remaining() {
+        model.set_option("time_limit", r.max(1e-3));
+    }
+    if let Some(x) = start {
+        if f.is_feasible(x, extra) {
+            let _ = model.try_set_solution(Some(x), None, None, None);
+        }
+    }
+    let solved = match model.try_solve() {
+        Ok(s) => s,
+        Err(e) => {
+            return MipSolution {
+                outcome: Outcome::Failed(format!("HiGHS failed on the MIP: {e:?}")),
+                x: None,
+                objective: f64::NAN,
+                dual_bound: f64::NEG_INFINITY,
+            };
+        }
+    };
+    let out = outcome(solved.status());
+    let has_solution = matches!(
+        solved.primal_solution_status(),
+        highs::HighsSolutionStatus::Feasible
+    );
+    let dual_bound = match out {
+        Outcome::Infeasible => f64::INFINITY,
+        _ => solved.double_info_value(c"mip_dual_bound").unwrap_or(f64::NEG_INFINITY),
+    };
+    let x = has_solution.then(|| solved.get_solution().columns().to_vec());
+    MipSolution { outcome: out, x, objective: solved.objective_value(), dual_bound }
+}
+
+/// The smallest integer at least `b`, tolerating round-off of HiGHS's bounds.
+pub(crate) fn ceil_bound(b: f64) -> Option<u64> {
+    if !b.is_finite() || b <= 0.0 {
+        return if b.is_finite() || b == f64::NEG_INFINITY { Some(0) } else { None };
+    }
+    Some((b - 1e-6).ceil().max(0.0) as u64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn incremental_lp_and_mip() {
+        // min x + y, x + y >= 1.5, x, y in [0, 2]; MIP optimum 2, LP 1.5.
+        let mut f = Formulation::default();
+        let x = f.add_col(1.0, 0.0, 2.0, true);
+        let y = f.add_col(1.0, 0.0, 2.0, true);
+        f.rows.push(Row::at_least([(x, 1.0), (y, 1.0)], 1.5));
+        let s = Settings { threads: 1, verbose: false };
+        let d = Deadline::new(Some(10.0));
+        let mut lp = IncrementalLp::new(&f, s);
+        let a = lp.solve(&d);
+        assert_eq!(a.outcome, Outcome::Optimal);
+        assert!((a.objective - 1.5).abs() < 1e-9);
+        lp.add_rows(&[Row::at_least([(x, 1.0)], 1.0), Row::at_least([(y, 1.0)], 1.0)]);
+        let b = lp.solve(&d);
+        assert!((b.objective - 2.0).abs() < 1e-9);
+        let m = solve_mip(&f, &[], Some(&[2.0, 0.0]), &d, &s);
+        assert_eq!(m.outcome, Outcome::Optimal);
+        assert_eq!(ceil_bound(m.dual_bound), Some(2));
+        assert!((m.objective - 2.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn rows_merge_repeated_columns() {
+        let r = Row::at_least([(3, 1.0), (1, 2.0), (3, 1.0), (2, 0.0)], 2.0);
+        assert_eq!(r.idx, vec![1, 3]);
+        assert_eq!(r.val, vec![2.0, 2.0]);
+        assert_eq!(ceil_bound(3.0000000001), Some(3));
+        assert_eq!(ceil_bound(2.4), Some(3));
+    }
+}

@@ -1,0 +1,496 @@
+//! Exact baselines: proven optima (or proven bounds) of the five objectives, the ground truth
+//! the harness divides by.
+//!
+//! Every objective is solved with embedded HiGHS (see [`lp`] for why through the `highs` crate)
+//! by the same loop ([`driver`]): an LP cutting-plane phase with exact minimum-cut separation
+//! on fractional solutions, reduced-cost fixing against the incumbent, and MIP rounds that keep
+//! the whole cut pool, cut off infeasible integer solutions and repair them into incumbents.
+//! Cheap bounds ([`crate::bounds`]) and a warm start (an approximation's tour, or a
+//! constructive heuristic) stop the loop early when the incumbent meets a bound.
+//!
+//! # Formulations
+//!
+//! * **`length`** ([`milling`]): integer edge multiplicities `x_e ∈ {0, 1, 2}` on the grid
+//!   graph and `z_v >= 1` with `Σ_{e ∋ v} x_e = 2 z_v`; `x(δ(S)) >= 2` for all proper pixel
+//!   sets `S`; minimize `Σ x_e`. The walk is an Euler tour of `x`. (Milling paper, Section 6.)
+//! * **`cc-turns`** ([`turns`]): integer passage counts `p_{v,ab}` for every pixel `v` and pair
+//!   of its sides `{a, b}` (`a = b` a U-turn); coverage `Σ_ab p_{v,ab} >= 1`; on each grid edge
+//!   the passage ends at both sides agree; minimize `Σ turn(ab) p` with turn 0 straight, 1
+//!   perpendicular, 2 U-turn; an isolated pixel is a one-pixel walk of 4 turns. (Turn-cost
+//!   paper, Sections 2 and 4.)
+//! * **`tour-turns`**: the passage model plus connectivity cuts on the graph of pixel sides
+//!   (passages join sides of a pixel, edges join facing sides): `Σ_{edges across S} x_e +
+//!   Σ_{passages across S} p >= 2` for side sets `S` holding all sides of one pixel and none of
+//!   another. This forbids walks that only cross each other, which no free splice can join.
+//! * **`weighted`** with turn cost `C`: the tour model minimizing `Σ (1 + C turn(ab)) p`, i.e.
+//!   length + C · turns (turn-cost paper, Section 5.6); the length of a walk is its number of
+//!   passages.
+//! * **`lawn-tsp`** ([`lawn`]): binary `y_ij` on all pairs of grass pixels with L1 costs,
+//!   degree 2, subtour elimination on the smaller side of each violated cut. (Milling paper,
+//!   Section 4, the αTSP = 1 reference.)
+//!
+//! Every objective is even on every integer solution (closed walks in the bipartite grid),
+//! so real bounds are rounded up to the next even integer. The returned tour or cycle cover
+//! always goes through [`crate::checker::check`], and its recounted cost is `value`.
+
+mod cuts;
+mod driver;
+mod lawn;
+mod lp;
+mod milling;
+mod turns;
+mod walks;
+
+use crate::bounds::{self, Bound};
+use crate::checker::{self, Mode};
+use crate::region::Region;
+use crate::topology;
+use crate::tour::CycleCover;
+use driver::{CutModel, Solved, Stop};
+use lp::{Deadline, Settings};
+use serde::Serialize;
+use std::fmt;
+use std::str::FromStr;
+
+/// The objective of an exact solve.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Objective {
+    /// Minimum-length closed walk visiting every pixel (the optimal milling tour).
+    Length,
+    /// Minimum-turn cycle cover (closed walks together visiting every pixel).
+    CcTurns,
+    /// Minimum-turn covering tour (one closed walk).
+    TourTurns,
+    /// Tour minimizing length + `turn_cost` · turns.
+    Weighted { turn_cost: u32 },
+    /// Exact TSP through the grass pixel centres with L1 distances (may leave the region).
+    LawnTsp,
+}
+
+impl Objective {
+    /// All objective names, as the CLI spells them.
+    pub const NAMES: [&'static str; 5] = ["length", "cc-turns", "tour-turns", "weighted", "lawn-tsp"];
+
+    /// The objective named `name`; `turn_cost` is required by, and only accepted with,
+    /// `weighted`.
+    pub fn parse(name: &str, turn_cost: Option<u32>) -> Result<Objective, String> {
+        match (name.parse::<Objective>()?, turn_cost) {
+            (Objective::Weighted { .. }, Some(c)) => Ok(Objective::Weighted { turn_cost: c }),
+            (Objective::Weighted { .. }, None) => Err("objective weighted needs --turn-cost C".into()),
+            (o, None) => Ok(o),
+            (o, Some(_)) => Err(format!("--turn-cost applies to objective weighted, not {o}")),
+        }
+    }
+
+    /// Milling or lawn mode for the checker.
+    pub fn mode(self) -> Mode {
+        if self == Objective::LawnTsp { Mode::Lawn } else { Mode::Milling }
+    }
+
+    /// Whether the answer must be a single closed walk.
+    pub fn is_tour(self) -> bool {
+        self != Objective::CcTurns
+    }
+
+    /// The objective's value of a checked cover.
+    pub fn value_of(self, report: &checker::Report) -> u64 {
+        match self {
+            Objective::Length | Objective::LawnTsp => report.length,
+            Objective::CcTurns | Objective::TourTurns => report.turns,
+            Objective::Weighted { turn_cost } => report.length + u64::from(turn_cost) * report.turns,
+        }
+    }
+}
+
+impl fmt::Display for Objective {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Objective::Length => "length",
+            Objective::CcTurns => "cc-turns",
+            Objective::TourTurns => "tour-turns",
+            Objective::Weighted { .. } => "weighted",
+            Objective::LawnTsp => "lawn-tsp",
+        })
+    }
+}
+
+impl FromStr for Objective {
+    type Err = String;
+
+    /// Parses a name; `weighted` gets turn cost 1 (use [`Objective::parse`] to set it).
+    fn from_str(s: &str) -> Result<Objective, String> {
+        match s {
+            "length" => Ok(Objective::Length),
+            "cc-turns" => Ok(Objective::CcTurns),
+            "tour-turns" => Ok(Objective::TourTurns),
+            "weighted" => Ok(Objective::Weighted { turn_cost: 1 }),
+            "lawn-tsp" => Ok(Objective::LawnTsp),
+            _ => Err(format!("unknown objective {s:?}: expected one of {}", Objective::NAMES.join(", "))),
+        }
+    }
+}
+
+/// Options of an exact solve.
+#[derive(Clone, Debug)]
+pub struct ExactOptions {
+    /// Wall-clock limit in seconds for the whole solve (None: no limit).
+    pub time_limit: Option<f64>,
+    /// HiGHS threads per solve (default 1: parallelism comes from running many solves).
+    pub threads: usize,
+    /// Print HiGHS's log and the cut loop's progress to stderr.
+    pub verbose: bool,
+    /// A known cover to start from (e.g. an approximation's tour); used when the checker
+    /// accepts it for the objective.
+    pub warm_start: Option<CycleCover>,
+}
+
+impl Default for ExactOptions {
+    fn default() -> Self {
+        ExactOptions { time_limit: None, threads: 1, verbose: false, warm_start: None }
+    }
+}
+
+/// How an exact solve ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    /// `value` equals the proven `lower_bound`.
+    Optimal,
+    /// Out of time: `value` is the best incumbent (if any), `lower_bound` the best proven bound.
+    TimeLimit,
+    /// No cover of this kind exists (e.g. a tour of a disconnected region).
+    Infeasible,
+    /// Something went wrong; see `message`.
+    Error,
+}
+
+impl fmt::Display for Status {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Status::Optimal => "optimal",
+            Status::TimeLimit => "time_limit",
+            Status::Infeasible => "infeasible",
+            Status::Error => "error",
+        })
+    }
+}
+
+/// The answer of an exact solve. The JSON keys `objective, value, lower_bound, status,
+/// seconds, rounds, length, turns, cycles, valid` are a stable contract.
+#[derive(Clone, Debug, Serialize)]
+pub struct ExactResult {
+    pub objective: String,
+    /// The checker's recount of the objective for `cover`.
+    pub value: Option<u64>,
+    /// A proven lower bound on the optimum.
+    pub lower_bound: u64,
+    pub status: Status,
+    pub seconds: f64,
+    /// Rounds of cut separation (LP and MIP).
+    pub rounds: u32,
+    pub length: Option<u64>,
+    pub turns: Option<u64>,
+    pub cycles: Option<usize>,
+    /// Whether the checker accepted `cover`.
+    pub valid: bool,
+    pub message: Option<String>,
+    /// Which bound `lower_bound` is.
+    pub lb_source: String,
+    /// The LP relaxation bound with all cuts, when the LP phase ran.
+    pub lp_bound: Option<u64>,
+    /// The turn cost C of `weighted`.
+    pub turn_cost: Option<u32>,
+    /// Number of pixels.
+    pub n: usize,
+    #[serde(skip)]
+    pub cover: Option<CycleCover>,
+}
+
+/// What an objective's solver hands back before checking.
+struct Answer {
+    stop: Stop,
+    cover: Option<CycleCover>,
+    lower: Bound,
+    lp_bound: Option<u64>,
+    rounds: u32,
+}
+
+impl Answer {
+    fn trivial(cover: CycleCover, lower: Bound) -> Answer {
+        Answer { stop: Stop::Optimal, cover: Some(cover), lower, lp_bound: None, rounds: 0 }
+    }
+
+    fn stopped(stop: Stop, lower: Bound) -> Answer {
+        Answer { stop, cover: None, lower, lp_bound: None, rounds: 0 }
+    }
+}
+
+/// Solves `objective` on `region` exactly, within `opts.time_limit`.
+///
+/// # Arguments
+/// * `region` — the pixels (the grass, for `lawn-tsp`).
+/// * `objective` — one of the five objectives.
+/// * `opts` — time limit, threads, verbosity and an optional warm start.
+///
+/// # Returns
+/// An [`ExactResult`] whose cover has passed the checker with recounted cost `value`, a proven
+/// `lower_bound`, and `status` `optimal` exactly when the two are equal.
+///
+/// # Complexity
+/// Exponential in the worst case (all five problems are NP-hard); see the `exact_scaling`
+/// benchmark and the README for measured times.
+///
+/// # Guarantee
+/// `status == optimal` implies `value` is the optimum; otherwise `lower_bound <= OPT <= value`.
+///
+/// # Examples
+/// ```
+/// use mowmill::exact::{solve, ExactOptions, Objective, Status};
+/// use mowmill::Region;
+/// let r = Region::rectangle(3, 3);
+/// let res = solve(&r, Objective::Length, &ExactOptions::default());
+/// assert_eq!(res.status, Status::Optimal);
+/// assert_eq!(res.value, Some(10));
+/// ```
+pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> ExactResult {
+    let deadline = Deadline::new(opts.time_limit);
+    let settings = Settings { threads: opts.threads.max(1), verbose: opts.verbose };
+    let answer = if region.is_empty() {
+        Answer::stopped(Stop::Error("the region is empty".into()), Bound { value: 0, source: "empty region" })
+    } else {
+        match objective {
+            Objective::Length => solve_length(region, opts, &deadline, &settings),
+            Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. } => {
+                solve_turns(region, objective, opts, &deadline, &settings)
+            }
+            Objective::LawnTsp => solve_lawn(region, opts, &deadline, &settings),
+        }
+    };
+    assemble(region, objective, answer, deadline.elapsed())
+}
+
+/// The checked result: the cover is recounted, and the status is `optimal` only when the
+/// recount equals the proven bound.
+fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> ExactResult {
+    let mut r = ExactResult {
+        objective: objective.to_string(),
+        value: None,
+        lower_bound: a.lower.value,
+        status: Status::Error,
+        seconds,
+        rounds: a.rounds,
+        length: None,
+        turns: None,
+        cycles: None,
+        valid: false,
+        message: None,
+        lb_source: a.lower.source.to_string(),
+        lp_bound: a.lp_bound,
+        turn_cost: match objective {
+            Objective::Weighted { turn_cost } => Some(turn_cost),
+            _ => None,
+        },
+        n: region.len(),
+        cover: None,
+    };
+    let mut message = match &a.stop {
+        Stop::Error(m) => Some(m.clone()),
+        Stop::Infeasible => Some(if objective.is_tour() && objective != Objective::LawnTsp {
+            "no covering tour exists: the region is not connected".to_string()
+        } else {
+            "the model is infeasible".to_string()
+        }),
+        _ => None,
+    };
+    if let Some(cover) = a.cover {
+        let report = checker::check(region, &cover, objective.mode());
+        let value = objective.value_of(&report);
+        if !report.valid {
+            message = Some(format!("internal: the checker rejected the cover: {}", report.error.unwrap_or_default()));
+        } else if objective.is_tour() && report.cycles != 1 {
+            message = Some(format!("internal: a tour with {} closed walks", report.cycles));
+        } else if value < a.lower.value {
+            message = Some(format!("internal: value {value} below the proven bound {}", a.lower.value));
+        } else {
+            r.value = Some(value);
+            r.length = Some(report.length);
+            r.turns = Some(report.turns);
+            r.cycles = Some(report.cycles);
+            r.valid = true;
+            r.cover = Some(cover);
+        }
+    }
+    r.status = match (&a.stop, r.value) {
+        _ if message.is_some() && !matches!(a.stop, Stop::Infeasible) => Status::Error,
+        (Stop::Infeasible, _) => Status::Infeasible,
+        (_, Some(v)) if v == r.lower_bound => Status::Optimal,
+        (Stop::Error(_), _) => Status::Error,
+        _ => Status::TimeLimit,
+    };
+    if r.status == Status::TimeLimit && r.value.is_none() {
+        message.get_or_insert_with(|| "time limit before any feasible cover".into());
+    }
+    r.message = message;
+    r
+}
+
+fn not_connected(region: &Region) -> bool {
+    topology::components(region).count > 1
+}
+
+/// A warm-start cover accepted by the checker for this objective.
+fn checked_warm_start<'c>(region: &Region, objective: Objective, opts: &'c ExactOptions) -> Option<&'c CycleCover> {
+    let c = opts.warm_start.as_ref()?;
+    let rep = checker::check(region, c, objective.mode());
+    (rep.valid && (!objective.is_tour() || rep.cycles == 1)).then_some(c)
+}
+
+fn to_answer(s: Solved, cover: Option<CycleCover>, source_lower: Bound) -> Answer {
+    let lower = if s.lower > source_lower.value {
+        Bound { value: s.lower, source: s.lower_source }
+    } else {
+        source_lower
+    };
+    Answer { stop: s.stop, cover, lower, lp_bound: s.lp_bound, rounds: s.rounds }
+}
+
+fn solve_length(region: &Region, opts: &ExactOptions, deadline: &Deadline, settings: &Settings) -> Answer {
+    let lower = bounds::length_lower_bound(region);
+    if not_connected(region) {
+        return Answer::stopped(Stop::Infeasible, lower);
+    }
+    if region.len() <= 2 {
+        return Answer::trivial(CycleCover::tour(region.pixels().to_vec()), lower);
+    }
+    let model = milling::MillingModel::new(region);
+    let mut start = model.columns(&milling::tree_tour(&model));
+    if let Some(mult) = checked_warm_start(region, Objective::Length, opts)
+        .and_then(|c| model.from_walk(&c.cycles[0]))
+    {
+        let x = model.columns(&mult);
+        if model.formulation().objective(&x) < model.formulation().objective(&start) {
+            start = x;
+        }
+    }
+    let s = driver::run(&model, Some(start), (lower.value, lower.source), deadline, settings);
+    let cover = s.best.as_ref().map(|x| CycleCover::tour(model.walk(&model.multiplicities(x))));
+    to_answer(s, cover, lower)
+}
+
+fn solve_turns(
+    region: &Region,
+    objective: Objective,
+    opts: &ExactOptions,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Answer {
+    let lower = bounds::cheap_lower_bound(region, objective);
+    let goal = match objective {
+        Objective::CcTurns => turns::TurnGoal::CycleCover,
+        Objective::TourTurns => turns::TurnGoal::Tour,
+        Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
+        _ => unreachable!("turn objectives only"),
+    };
+    if objective.is_tour() {
+        if not_connected(region) {
+            return Answer::stopped(Stop::Infeasible, lower);
+        }
+        if region.len() == 1 {
+            return Answer::trivial(CycleCover::tour(region.pixels().to_vec()), lower);
+        }
+    }
+    let model = turns::PassageModel::new(region, goal);
+    // Isolated pixels are one-pixel walks outside the model: 4 turns each.
+    let constant = 4 * model.isolated as u64;
+    let value = |counts: &Vec<u32>| model.formulation().objective(&as_columns(counts));
+    let warm = checked_warm_start(region, objective, opts)
+        .and_then(|c| model.from_walks(&c.cycles))
+        .filter(|counts| model.is_feasible_counts(counts));
+    let start = [warm, model.strip_solution()]
+        .into_iter()
+        .flatten()
+        .min_by(|a, b| value(a).total_cmp(&value(b)))
+        .map(|counts| as_columns(&counts));
+    let s = if model.formulation().num_cols() == 0 {
+        Solved {
+            stop: Stop::Optimal,
+            best: Some(Vec::new()),
+            upper: Some(0),
+            lower: 0,
+            lower_source: lower.source,
+            lp_bound: None,
+            rounds: 0,
+        }
+    } else {
+        let inner = lower.value.saturating_sub(constant);
+        let mut s = driver::run(&model, start, (inner, lower.source), deadline, settings);
+        s.lower += constant;
+        s.lp_bound = s.lp_bound.map(|b| b + constant);
+        s
+    };
+    let cover = s.best.as_ref().map(|x| CycleCover::new(model.walks(&model.counts(x))));
+    to_answer(s, cover, lower)
+}
+
+fn as_columns(counts: &[u32]) -> Vec<f64> {
+    counts.iter().map(|&c| f64::from(c)).collect()
+}
+
+fn solve_lawn(region: &Region, opts: &ExactOptions, deadline: &Deadline, settings: &Settings) -> Answer {
+    let lower = bounds::lawn_tsp_lower_bound(region);
+    let n = region.len();
+    if n <= 3 {
+        // One cyclic order only (up to reversal).
+        return Answer::trivial(CycleCover::tour(lawn::lawn_walk(region.pixels())), lower);
+    }
+    let model = lawn::LawnModel::new(region);
+    let mut order = model.heuristic_tour();
+    if let Some(c) = checked_warm_start(region, Objective::LawnTsp, opts) {
+        // The first visits of the grass pixels in the warm walk, improved.
+        let mut seen = vec![false; n];
+        let mut warm: Vec<usize> = Vec::new();
+        for p in &c.cycles[0] {
+            if let Some(i) = region.index_of(*p) {
+                if !std::mem::replace(&mut seen[i], true) {
+                    warm.push(i);
+                }
+            }
+        }
+        model.improve(&mut warm);
+        let cost = |o: &[usize]| model.formulation().objective(&model.columns(o));
+        if warm.len() == n && cost(&warm) < cost(&order) {
+            order = warm;
+        }
+    }
+    let s = driver::run(&model, Some(model.columns(&order)), (lower.value, lower.source), deadline, settings);
+    let cover = s.best.as_ref().map(|x| CycleCover::tour(model.walk(&model.order(x))));
+    to_answer(s, cover, lower)
+}
+
+/// The LP relaxation bound of an objective's exact model with all its connectivity cuts
+/// (rounded up to even), or `None` if it does not converge in time or does not apply.
+pub fn lp_relaxation_bound(region: &Region, objective: Objective, time_limit: Option<f64>) -> Option<u64> {
+    let deadline = Deadline::new(time_limit);
+    let settings = Settings { threads: 1, verbose: false };
+    if region.len() < 3 || (objective.is_tour() && objective != Objective::LawnTsp && not_connected(region)) {
+        return None;
+    }
+    match objective {
+        Objective::Length => driver::lp_bound(&milling::MillingModel::new(region), &deadline, &settings),
+        Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. } => {
+            let goal = match objective {
+                Objective::CcTurns => turns::TurnGoal::CycleCover,
+                Objective::TourTurns => turns::TurnGoal::Tour,
+                Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
+                _ => unreachable!("turn objectives only"),
+            };
+            let model = turns::PassageModel::new(region, goal);
+            let constant = 4 * model.isolated as u64;
+            if model.formulation().num_cols() == 0 {
+                return None;
+            }
+            driver::lp_bound(&model, &deadline, &settings).map(|b| b + constant)
+        }
+        Objective::LawnTsp => driver::lp_bound(&lawn::LawnModel::new(region), &deadline, &settings),
+    }
+}

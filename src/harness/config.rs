@@ -1,0 +1,391 @@
+//! Benchmark configuration: a TOML file naming instance families × parameters × seeds,
+//! algorithms, and exact objectives with a size cutoff and a time limit each. Lists expand into
+//! every combination. Every key is checked before any job runs; an error names the key.
+//!
+//! ```toml
+//! name = "ci"          # suite name, part of the run id
+//! seed = 1             # master seed: instance seeds derive from it, the family, the
+//!                      # parameters and the index, never from scheduling order
+//!
+//! [[family]]
+//! family = "random-simple"
+//! n = [16, 32]         # a scalar or a list; lists expand into every combination
+//! no_cut = true
+//! count = 3            # instances per parameter combination
+//! algorithms = ["tsp65"]   # optional; default: every registered algorithm whose
+//!                          # preconditions hold on the instance
+//!
+//! [[files]]            # existing instances: every .grid / .wkt file of a folder
+//! dir = "instances/fixtures"
+//! family = "fixtures"  # the family column of their rows
+//!
+//! [[exact]]
+//! objective = "length" # length, cc-turns, tour-turns, weighted, lawn-tsp
+//! max_n = 64           # only instances with at most this many pixels
+//! time_limit = 20      # seconds per solve
+//! turn_cost = 2        # weighted only: length + turn_cost · turns
+//! ```
+
+use crate::error::{Error, Result};
+use crate::generate::{Family, GenParams, Style};
+use serde::{Deserialize, Deserializer, Serialize};
+use std::path::{Path, PathBuf};
+
+/// A whole benchmark configuration.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Config {
+    pub name: String,
+    #[serde(default = "default_seed")]
+    pub seed: u64,
+    #[serde(default)]
+    pub family: Vec<FamilySpec>,
+    #[serde(default)]
+    pub files: Vec<FilesSpec>,
+    #[serde(default)]
+    pub exact: Vec<ExactSpec>,
+}
+
+fn default_seed() -> u64 {
+    1
+}
+
+fn default_count() -> usize {
+    1
+}
+
+/// One generated family with parameter lists.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FamilySpec {
+    pub family: String,
+    #[serde(default)]
+    pub n: OneOrMany<usize>,
+    #[serde(default)]
+    pub holes: OneOrMany<usize>,
+    #[serde(default)]
+    pub width: OneOrMany<usize>,
+    #[serde(default)]
+    pub height: OneOrMany<usize>,
+    #[serde(default)]
+    pub k: OneOrMany<usize>,
+    #[serde(default)]
+    pub side: OneOrMany<usize>,
+    #[serde(default)]
+    pub parts: OneOrMany<usize>,
+    #[serde(default)]
+    pub style: OneOrMany<String>,
+    #[serde(default)]
+    pub compactness: OneOrMany<f64>,
+    #[serde(default)]
+    pub no_cut: OneOrMany<bool>,
+    #[serde(default = "default_count")]
+    pub count: usize,
+    #[serde(default)]
+    pub algorithms: Option<Vec<String>>,
+}
+
+/// Existing instance files.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct FilesSpec {
+    pub dir: PathBuf,
+    #[serde(default)]
+    pub family: Option<String>,
+    #[serde(default)]
+    pub algorithms: Option<Vec<String>>,
+}
+
+/// One exact objective to run on small instances.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExactSpec {
+    pub objective: String,
+    pub max_n: usize,
+    pub time_limit: f64,
+    #[serde(default)]
+    pub turn_cost: Option<u32>,
+}
+
+/// A scalar or a list in the config; a scalar is a list of one.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(transparent)]
+pub struct OneOrMany<T>(pub Vec<T>);
+
+impl<T> Default for OneOrMany<T> {
+    fn default() -> Self {
+        OneOrMany(Vec::new())
+    }
+}
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for OneOrMany<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        #[serde(untagged)]
+        enum Either<T> {
+            One(T),
+            Many(Vec<T>),
+        }
+        match Either::<T>::deserialize(d) {
+            Ok(Either::One(x)) => Ok(OneOrMany(vec![x])),
+            Ok(Either::Many(v)) => Ok(OneOrMany(v)),
+            Err(_) => Err(serde::de::Error::custom(format!(
+                "expected a {} or a list of them",
+                std::any::type_name::<T>().rsplit("::").next().unwrap_or("value")
+            ))),
+        }
+    }
+}
+
+/// One instance to generate, fully resolved.
+#[derive(Clone, Debug)]
+pub struct InstanceSpec {
+    /// Unique, file-system safe: `family_params_iINDEX`.
+    pub name: String,
+    pub family: String,
+    /// Canonical parameter string, e.g. `n=32 no_cut=true`.
+    pub params: String,
+    pub seed: u64,
+    pub source: Source,
+    /// Algorithms to run; `None` means all that apply.
+    pub algorithms: Option<Vec<String>>,
+}
+
+#[derive(Clone, Debug)]
+pub enum Source {
+    Generate(GenParams),
+    File(PathBuf),
+}
+
+impl Config {
+    /// Reads and validates a config file. Errors name the file and the offending key.
+    pub fn read(path: &Path) -> Result<Config> {
+        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        Config::parse(&text, &path.display().to_string())
+    }
+
+    pub fn parse(text: &str, file: &str) -> Result<Config> {
+        let config: Config = toml::from_str(text).map_err(|e| {
+            let (line, column) = e
+                .span()
+                .map(|s| {
+                    let before = &text[..s.start.min(text.len())];
+                    let line = before.matches('\n').count() + 1;
+                    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+                    (line, column)
+                })
+                .unwrap_or((1, 1));
+            Error::parse(file, line, column, e.message().to_string())
+        })?;
+        config.validate().map_err(|m| Error::invalid(format!("{file}: {m}")))?;
+        Ok(config)
+    }
+
+    /// Checks names and values that TOML types cannot: family and algorithm names, styles,
+    /// exact objectives, counts.
+    fn validate(&self) -> std::result::Result<(), String> {
+        if self.family.is_empty() && self.files.is_empty() {
+            return Err("no instances: give at least one [[family]] or [[files]]".into());
+        }
+        for (i, f) in self.family.iter().enumerate() {
+            let at = format!("family[{i}]");
+            f.family
+                .parse::<Family>()
+                .map_err(|e| format!("{at}.family: {e}"))?;
+            for s in &f.style.0 {
+                s.parse::<Style>().map_err(|e| format!("{at}.style: {e}"))?;
+            }
+            if f.count == 0 {
+                return Err(format!("{at}.count: expected at least 1"));
+            }
+            check_algorithms(&f.algorithms, &at)?;
+        }
+        for (i, f) in self.files.iter().enumerate() {
+            check_algorithms(&f.algorithms, &format!("files[{i}]"))?;
+        }
+        for (i, e) in self.exact.iter().enumerate() {
+            let at = format!("exact[{i}]");
+            e.objective.parse::<crate::exact::Objective>().map_err(|err| format!("{at}.objective: {err}"))?;
+            crate::exact::Objective::parse(&e.objective, e.turn_cost).map_err(|err| format!("{at}.turn_cost: {err}"))?;
+            if !(e.time_limit > 0.0) {
+                return Err(format!("{at}.time_limit: expected a positive number of seconds"));
+            }
+        }
+        Ok(())
+    }
+
+    /// Every instance of the suite, in a deterministic order.
+    pub fn instances(&self) -> Result<Vec<InstanceSpec>> {
+        let mut out = Vec::new();
+        for f in &self.family {
+            let family: Family = f.family.parse()?;
+            for combo in expand(f) {
+                let params = combo.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(" ");
+                for index in 0..f.count {
+                    let seed = derive_seed(self.seed, &f.family, &params, index);
+                    let mut g = GenParams::new(family, seed);
+                    for (k, v) in &combo {
+                        apply_param(&mut g, k, v)?;
+                    }
+                    let slug: String = params
+                        .chars()
+                        .filter(|&c| c != '=')
+                        .map(|c| if c.is_ascii_alphanumeric() || c == '.' || c == '-' { c } else { '_' })
+                        .collect();
+                    let name = if slug.is_empty() {
+                        format!("{}_i{index:03}", f.family)
+                    } else {
+                        format!("{}_{}_i{index:03}", f.family, slug)
+                    };
+                    out.push(InstanceSpec {
+                        name,
+                        family: f.family.clone(),
+                        params: params.clone(),
+                        seed,
+                        source: Source::Generate(g),
+                        algorithms: f.algorithms.clone(),
+                    });
+                }
+            }
+        }
+        for f in &self.files {
+            let mut files: Vec<PathBuf> = std::fs::read_dir(&f.dir)
+                .map_err(|e| Error::io(&f.dir, e))?
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "grid" || x == "wkt"))
+                .collect();
+            files.sort();
+            let family = f.family.clone().unwrap_or_else(|| "files".to_string());
+            for p in files {
+                let stem = p.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+                out.push(InstanceSpec {
+                    name: format!("{family}_{stem}"),
+                    family: family.clone(),
+                    params: format!("file={}", p.display()),
+                    seed: 0,
+                    source: Source::File(p),
+                    algorithms: f.algorithms.clone(),
+                });
+            }
+        }
+        let mut names: Vec<&str> = out.iter().map(|s| s.name.as_str()).collect();
+        names.sort_unstable();
+        if let Some(w) = names.windows(2).find(|w| w[0] == w[1]) {
+            return Err(Error::invalid(format!("two instances are both named {}", w[0])));
+        }
+        Ok(out)
+    }
+}
+
+fn check_algorithms(algos: &Option<Vec<String>>, at: &str) -> std::result::Result<(), String> {
+    for a in algos.iter().flatten() {
+        if crate::algorithms::find(a).is_none() {
+            return Err(format!(
+                "{at}.algorithms: unknown algorithm {a:?}; registered: {}",
+                crate::algorithms::names().join(", ")
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The cartesian product of the given parameter lists, as ordered (key, value) pairs.
+fn expand(f: &FamilySpec) -> Vec<Vec<(&'static str, String)>> {
+    fn strings<T: ToString>(v: &OneOrMany<T>) -> Vec<String> {
+        v.0.iter().map(ToString::to_string).collect()
+    }
+    let axes: Vec<(&'static str, Vec<String>)> = [
+        ("n", strings(&f.n)),
+        ("holes", strings(&f.holes)),
+        ("width", strings(&f.width)),
+        ("height", strings(&f.height)),
+        ("k", strings(&f.k)),
+        ("side", strings(&f.side)),
+        ("parts", strings(&f.parts)),
+        ("style", strings(&f.style)),
+        ("compactness", strings(&f.compactness)),
+        ("no_cut", strings(&f.no_cut)),
+    ]
+    .into_iter()
+    .filter(|(_, v)| !v.is_empty())
+    .collect();
+    let mut combos: Vec<Vec<(&'static str, String)>> = vec![Vec::new()];
+    for (key, values) in axes {
+        combos = combos
+            .into_iter()
+            .flat_map(|c| {
+                values.iter().map(move |v| {
+                    let mut c = c.clone();
+                    c.push((key, v.clone()));
+                    c
+                })
+            })
+            .collect();
+    }
+    combos
+}
+
+fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
+    let num = || value.parse::<usize>().map_err(|e| Error::invalid(format!("{key}={value}: {e}")));
+    match key {
+        "n" => g.n = Some(num()?),
+        "holes" => g.holes = Some(num()?),
+        "width" => g.width = Some(num()?),
+        "height" => g.height = Some(num()?),
+        "k" => g.k = Some(num()?),
+        "side" => g.side = Some(num()?),
+        "parts" => g.parts = Some(num()?),
+        "style" => g.style = Some(value.parse()?),
+        "compactness" => {
+            g.compactness = Some(value.parse().map_err(|e| Error::invalid(format!("{key}: {e}")))?)
+        }
+        "no_cut" => g.no_cut = value == "true",
+        _ => return Err(Error::invalid(format!("unknown parameter {key}"))),
+    }
+    Ok(())
+}
+
+/// A job's seed: a stable hash of the master seed, family, parameters and index.
+pub fn derive_seed(master: u64, family: &str, params: &str, index: usize) -> u64 {
+    use sha2::{Digest, Sha256};
+    let digest = Sha256::digest(format!("{master}/{family}/{params}/{index}").as_bytes());
+    u64::from_le_bytes(digest[..8].try_into().expect("8 bytes"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lists_expand_into_every_combination() {
+        let c = Config::parse(
+            "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = [2, 3]\nheight = [4, 5, 6]\ncount = 2\n",
+            "t.toml",
+        )
+        .unwrap();
+        let inst = c.instances().unwrap();
+        assert_eq!(inst.len(), 12);
+        assert_eq!(inst[0].params, "width=2 height=4");
+        assert_eq!(inst[0].name, "rect_width2_height4_i000");
+        // Seeds depend on parameters and index only.
+        assert_ne!(inst[0].seed, inst[1].seed);
+        assert_eq!(inst[0].seed, derive_seed(1, "rect", "width=2 height=4", 0));
+    }
+
+    #[test]
+    fn malformed_configs_name_the_key() {
+        let bad = [
+            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidht = 3\n", "widht"),
+            ("name = \"t\"\n[[family]]\nfamily = \"blob\"\n", "family[0].family"),
+            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nn = \"x\"\n", "expected a usize or a list"),
+            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n", "family[0].algorithms"),
+            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n", "exact[0].objective"),
+            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n", "max_n"),
+            ("name = \"t\"\n", "no instances"),
+        ];
+        for (text, needle) in bad {
+            let e = Config::parse(text, "bad.toml").unwrap_err().to_string();
+            assert!(e.contains(needle) && e.contains("bad.toml"), "{needle}: {e}");
+        }
+    }
+}

@@ -1,0 +1,20 @@
+//! The experiment harness behind `mowmill bench`, `plot`, `merge` and `gate`.
+//!
+//! Data flows one way: [`config`] expands a suite into instances; [`run`] generates them, runs
+//! the exact solvers and the registered algorithms, checks every output with the checker and
+//! appends [`rows`] to `results.csv`; [`stats`] aggregates the rows into `stats.csv`; [`plots`]
+//! draws them; [`gate`] compares a run with a committed baseline; [`merge`] joins shards.
+
+pub mod config;
+pub mod gate;
+pub mod manifest;
+pub mod merge;
+pub mod plots;
+pub mod progress;
+pub mod rows;
+pub mod run;
+pub mod stats;
+
+/// The built-in default suite: every registered algorithm and every exact objective on small
+/// cases (`experiments/default.toml`).
+pub const DEFAULT_CONFIG: &str = include_str!("../../experiments/default.toml");

@@ -1,0 +1,170 @@
+//! The rows of `results.csv`: one flat row per (instance, algorithm or exact objective).
+//!
+//! Values are integers; ratios are computed from them and written with 6 decimals, so the same
+//! inputs give the same bytes. `ratio_opt` is empty where no proven optimum exists.
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Serialize};
+use std::fs::{File, OpenOptions};
+use std::io::{BufRead, BufReader, Write};
+use std::path::Path;
+
+/// The `algorithm` column of exact-solver rows.
+pub const EXACT: &str = "exact";
+
+/// One row of `results.csv`; the field order is the column order (a contract).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Row {
+    pub run_id: String,
+    pub instance: String,
+    pub sha256: String,
+    pub family: String,
+    pub params: String,
+    pub seed: u64,
+    pub n: u64,
+    pub holes: u64,
+    pub algorithm: String,
+    pub objective: String,
+    pub value: Option<u64>,
+    pub length: Option<u64>,
+    pub turns: Option<u64>,
+    pub cycles: Option<u64>,
+    pub max_coverage: Option<u64>,
+    pub opt: Option<u64>,
+    pub opt_status: String,
+    pub lower_bound: Option<u64>,
+    pub lb_source: String,
+    pub ratio_opt: Option<Ratio>,
+    pub ratio_lb: Option<Ratio>,
+    pub ratio_n: Option<Ratio>,
+    pub guarantee: String,
+    /// `true`, `false`, or empty when it cannot be decided (no optimum, bound too weak).
+    pub within_guarantee: Option<bool>,
+    pub valid: Option<bool>,
+    pub seconds: f64,
+    pub error: String,
+}
+
+impl Row {
+    /// The key `--resume` and `merge` identify a row by.
+    pub fn key(&self) -> (String, String, String) {
+        (self.instance.clone(), self.algorithm.clone(), self.objective.clone())
+    }
+
+    /// Fills the three ratios from the integer columns.
+    pub fn compute_ratios(&mut self) {
+        let ratio = |num: Option<u64>, den: Option<u64>| match (num, den) {
+            (Some(a), Some(b)) if b > 0 => Some(Ratio::of(a, b)),
+            _ => None,
+        };
+        self.ratio_opt = ratio(self.value, self.opt);
+        self.ratio_lb = ratio(self.value, self.lower_bound);
+        self.ratio_n = ratio(self.value, Some(self.n));
+    }
+}
+
+/// A ratio of integers, stored as its value rounded to 6 decimals so that CSV bytes are
+/// reproducible.
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+pub struct Ratio(pub f64);
+
+impl Ratio {
+    pub fn of(a: u64, b: u64) -> Ratio {
+        Ratio((a as f64 / b as f64 * 1e6).round() / 1e6)
+    }
+}
+
+impl Serialize for Ratio {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(&format!("{:.6}", self.0))
+    }
+}
+
+impl<'de> Deserialize<'de> for Ratio {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        f64::deserialize(d).map(Ratio)
+    }
+}
+
+/// Appends rows to `results.csv`, writing the header when the file is new and flushing after
+/// every batch, so that a killed run keeps every row it finished.
+pub struct RowWriter {
+    file: File,
+}
+
+impl RowWriter {
+    pub fn open(path: &Path) -> Result<RowWriter> {
+        let fresh = !path.exists() || std::fs::metadata(path).map(|m| m.len() == 0).unwrap_or(true);
+        if !fresh {
+            truncate_partial_line(path)?;
+        }
+        let mut file = OpenOptions::new().create(true).append(true).open(path).map_err(|e| Error::io(path, e))?;
+        if fresh {
+            let mut w = csv::WriterBuilder::new().has_headers(true).from_writer(Vec::new());
+            w.serialize(Row::default()).map_err(|e| Error::invalid(e.to_string()))?;
+            let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
+            let header_end = bytes.iter().position(|&b| b == b'\n').map_or(bytes.len(), |p| p + 1);
+            file.write_all(&bytes[..header_end]).map_err(|e| Error::io(path, e))?;
+        }
+        Ok(RowWriter { file })
+    }
+
+    /// Writes a batch of rows and flushes it to disk.
+    pub fn append(&mut self, rows: &[Row]) -> Result<()> {
+        let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
+        for r in rows {
+            w.serialize(r).map_err(|e| Error::invalid(e.to_string()))?;
+        }
+        let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
+        self.file.write_all(&bytes).and_then(|_| self.file.sync_data()).map_err(|e| Error::Io {
+            file: "results.csv".into(),
+            source: e,
+        })
+    }
+}
+
+/// A run killed while writing may leave half a line: drop it so appending stays well-formed.
+pub fn truncate_partial_line(path: &Path) -> Result<()> {
+    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    if bytes.last().is_some_and(|&b| b != b'\n') {
+        let keep = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
+        let f = OpenOptions::new().write(true).open(path).map_err(|e| Error::io(path, e))?;
+        f.set_len(keep as u64).map_err(|e| Error::io(path, e))?;
+    }
+    Ok(())
+}
+
+/// Reads every row of a `results.csv`.
+pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
+    let file = File::open(path).map_err(|e| Error::io(path, e))?;
+    let mut r = csv::Reader::from_reader(BufReader::new(file));
+    let mut rows = Vec::new();
+    for (k, rec) in r.deserialize::<Row>().enumerate() {
+        let row = rec.map_err(|e| {
+            let line = e.position().map_or(k + 2, |p| p.line() as usize);
+            Error::parse(&path.display().to_string(), line, 1, format!("expected a results.csv row: {e}"))
+        })?;
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// Writes rows to a fresh `results.csv` in canonical order (instance, algorithm, objective),
+/// the order every run, resumed run and merge of shards ends with.
+pub fn write_sorted(path: &Path, rows: &mut [Row]) -> Result<()> {
+    rows.sort_by(|a, b| a.key().cmp(&b.key()));
+    let tmp = path.with_extension("csv.tmp");
+    {
+        let mut w = csv::Writer::from_path(&tmp).map_err(|e| Error::invalid(format!("{}: {e}", tmp.display())))?;
+        for r in rows.iter() {
+            w.serialize(r).map_err(|e| Error::invalid(e.to_string()))?;
+        }
+        w.flush().map_err(|e| Error::io(&tmp, e))?;
+    }
+    std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e))
+}
+
+/// Number of lines of a file (for progress messages).
+pub fn count_lines(path: &Path) -> usize {
+    File::open(path).map(|f| BufReader::new(f).lines().count()).unwrap_or(0)
+}

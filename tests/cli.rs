@@ -1,0 +1,195 @@
+//! End-to-end tests of the `mowmill` binary on the hand fixtures in `instances/fixtures/`.
+
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn mowmill(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mowmill"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run mowmill")
+}
+
+fn json(out: &Output) -> Value {
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!("not JSON ({e}): {}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
+    })
+}
+
+fn fixture(name: &str) -> String {
+    format!("instances/fixtures/{name}")
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("mowmill-cli-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn info_reports_hand_checked_topology() {
+    // name, n, holes, components, boundary, internal, cut, local cut, black, white, thin, strips h, v
+    let cases: &[(&str, u64, u64, u64, u64, u64, u64, u64, u64, u64, bool, u64, u64)] = &[
+        ("rect-2x3.grid", 6, 0, 1, 6, 0, 0, 0, 3, 3, false, 3, 2),
+        ("row-1x4.grid", 4, 0, 1, 4, 0, 2, 2, 2, 2, true, 1, 4),
+        ("square-3x3.grid", 9, 0, 1, 8, 1, 0, 0, 5, 4, false, 3, 3),
+        ("dumbbell.grid", 15, 0, 1, 13, 2, 5, 5, 7, 8, false, 5, 7),
+        ("two-holes.grid", 33, 2, 1, 27, 6, 0, 3, 16, 17, false, 7, 9),
+        ("tailed-frame.grid", 17, 2, 1, 16, 1, 4, 16, 8, 9, true, 7, 9),
+    ];
+    for &(name, n, holes, comps, bnd, int, cut, local, black, white, thin, sh, sv) in cases {
+        let out = mowmill(&["info", &fixture(name), "--json"]);
+        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        let v = json(&out);
+        let got = |k: &str| v[k].as_u64().unwrap_or_else(|| panic!("{name}: key {k} missing"));
+        assert_eq!(got("n"), n, "{name} n");
+        assert_eq!(got("holes"), holes, "{name} holes");
+        assert_eq!(got("components"), comps, "{name} components");
+        assert_eq!(got("boundary"), bnd, "{name} boundary");
+        assert_eq!(got("internal"), int, "{name} internal");
+        assert_eq!(got("cut_vertices"), cut, "{name} cut_vertices");
+        assert_eq!(got("local_cut_vertices"), local, "{name} local_cut_vertices");
+        assert_eq!(got("black"), black, "{name} black");
+        assert_eq!(got("white"), white, "{name} white");
+        assert_eq!(v["thin"].as_bool(), Some(thin), "{name} thin");
+        assert_eq!(got("strips_h"), sh, "{name} strips_h");
+        assert_eq!(got("strips_v"), sv, "{name} strips_v");
+    }
+}
+
+#[test]
+fn validate_recounts_fixture_tours() {
+    for (grid, tour, length, turns) in [
+        ("rect-2x3.grid", "rect-2x3.tour.json", 6, 4),
+        ("row-1x4.grid", "row-1x4.tour.json", 6, 4),
+        ("square-3x3.grid", "square-3x3.tour.json", 10, 8),
+    ] {
+        let out = mowmill(&["validate", &fixture(grid), "--tour", &fixture(tour), "--json"]);
+        assert!(out.status.success(), "{grid}: {}", String::from_utf8_lossy(&out.stdout));
+        let v = json(&out);
+        assert_eq!(v["valid"], Value::Bool(true));
+        assert_eq!(v["length"].as_u64(), Some(length), "{grid}");
+        assert_eq!(v["turns"].as_u64(), Some(turns), "{grid}");
+        assert_eq!(v["cycles"].as_u64(), Some(1));
+        assert!(v["error"].is_null());
+    }
+}
+
+#[test]
+fn validate_rejects_a_broken_tour_with_exit_1() {
+    let out = mowmill(&["validate", &fixture("square-3x3.grid"), "--tour", &fixture("square-3x3.bad-tour.json"), "--json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v = json(&out);
+    assert_eq!(v["valid"], Value::Bool(false));
+    assert_eq!(v["error"].as_str(), Some("cycle 0, step 6: (2, 2) -> (0, 2) is not a unit move"));
+    // Lawn mode on the same tour is still broken: the jump is not a unit move.
+    let out = mowmill(&["validate", &fixture("square-3x3.grid"), "--tour", &fixture("square-3x3.bad-tour.json"), "--mode", "lawn"]);
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn bad_input_names_file_line_column_and_exits_2() {
+    let dir = temp_dir("bad");
+    let bad = dir.join("bad.grid");
+    std::fs::write(&bad, "; comment\n###\n#?#\n").unwrap();
+    let out = mowmill(&["info", bad.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("bad.grid:3:2:") && err.contains("expected '#'"), "{err}");
+
+    let empty = dir.join("empty.grid");
+    std::fs::write(&empty, "; nothing\n...\n").unwrap();
+    let out = mowmill(&["info", empty.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("empty region"));
+
+    let out = mowmill(&["info", "no/such/file.grid"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no/such/file.grid"));
+
+    let badtour = dir.join("t.json");
+    std::fs::write(&badtour, "{\"cycles\": [[[0, 0], [1, \"a\"]]]}").unwrap();
+    let out = mowmill(&["validate", &fixture("rect-2x3.grid"), "--tour", badtour.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("t.json:1:"));
+
+    let wkt = dir.join("diag.wkt");
+    std::fs::write(&wkt, "POLYGON((0 0, 2 0, 2 2, 0 0))").unwrap();
+    let out = mowmill(&["info", wkt.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("diag.wkt:1:"));
+}
+
+#[test]
+fn wkt_instances_read_like_grid_files() {
+    let dir = temp_dir("wkt");
+    let f = dir.join("donut.wkt");
+    std::fs::write(&f, "POLYGON((0 0, 5 0, 5 4, 0 4, 0 0), (1 1, 4 1, 4 3, 1 3, 1 1))\n").unwrap();
+    let v = json(&mowmill(&["info", f.to_str().unwrap(), "--json"]));
+    assert_eq!(v["n"].as_u64(), Some(14));
+    assert_eq!(v["holes"].as_u64(), Some(1));
+}
+
+#[test]
+fn gen_is_deterministic_and_info_agrees() {
+    let dir = temp_dir("gen");
+    let a = dir.join("a.grid");
+    let b = dir.join("b.grid");
+    for f in [&a, &b] {
+        let out = mowmill(&["gen", "random-holed", "--n", "300", "--holes", "3", "--seed", "11", "--out", f.to_str().unwrap()]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let (ta, tb) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
+    assert_eq!(ta, tb);
+    let text = String::from_utf8(ta).unwrap();
+    assert!(text.contains("; family: random-holed"), "{text}");
+    assert!(text.contains("; seed: 11"), "{text}");
+    let v = json(&mowmill(&["info", a.to_str().unwrap(), "--json"]));
+    assert_eq!(v["n"].as_u64(), Some(300));
+    assert_eq!(v["holes"].as_u64(), Some(3));
+    assert_eq!(v["components"].as_u64(), Some(1));
+
+    let c = dir.join("c.grid");
+    let out = mowmill(&["gen", "random-simple", "--n", "200", "--no-cut", "--seed", "5", "--out", c.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v = json(&mowmill(&["info", c.to_str().unwrap(), "--json"]));
+    assert_eq!((v["n"].as_u64(), v["holes"].as_u64(), v["cut_vertices"].as_u64()), (Some(200), Some(0), Some(0)));
+
+    let d = dir.join("d.grid");
+    let out = mowmill(&["gen", "donut", "--k", "2", "--side", "7", "--seed", "0", "--out", d.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v = json(&mowmill(&["info", d.to_str().unwrap(), "--json"]));
+    assert_eq!((v["n"].as_u64(), v["holes"].as_u64()), (Some(49 - 9), Some(1)));
+
+    let out = mowmill(&["gen", "random-simple", "--n", "3", "--no-cut", "--seed", "1", "--out", dir.join("x.grid").to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "no-cut on 3 pixels is impossible");
+}
+
+#[test]
+fn draw_writes_svg_and_png() {
+    let dir = temp_dir("draw");
+    for ext in ["svg", "png"] {
+        let out_file = dir.join(format!("sq.{ext}"));
+        let out = mowmill(&[
+            "draw",
+            &fixture("square-3x3.grid"),
+            "--tour",
+            &fixture("square-3x3.tour.json"),
+            "--out",
+            out_file.to_str().unwrap(),
+        ]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let bytes = std::fs::read(&out_file).unwrap();
+        assert!(bytes.len() > 500, "{ext} too small");
+        if ext == "png" {
+            assert_eq!(&bytes[1..4], b"PNG");
+        } else {
+            let s = String::from_utf8(bytes).unwrap();
+            assert!(s.contains("<svg") && s.contains("length 10, turns 8"), "caption missing");
+        }
+    }
+    let out = mowmill(&["draw", &fixture("square-3x3.grid"), "--out", dir.join("x.bmpx").to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+}

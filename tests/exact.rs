@@ -1,0 +1,390 @@
+//! Tests of the exact baselines: hand fixtures with known optima, a brute-force oracle on tiny
+//! regions (shortest paths over (pixel, heading, visited set) states), and properties on small
+//! random regions: every result passes the checker with `value` equal to its recount, the
+//! optimum lies between every lower bound and every valid tour (the approximations included),
+//! cc-turns <= tour-turns, the 8 symmetries of the square keep the optimum, and `weighted`
+//! with C = 0 is the length optimum. Every solve has a time limit; instances stay tiny.
+
+use mowmill::algorithms::{self, Objective as AlgoObjective};
+use mowmill::bounds;
+use mowmill::checker::{self, Mode};
+use mowmill::exact::{ExactOptions, ExactResult, Objective, Status, solve};
+use mowmill::gridfile::GridFile;
+use mowmill::region::{Dir, Pixel, Region, Symmetry};
+use mowmill::tour::CycleCover;
+use proptest::prelude::*;
+use std::collections::{BinaryHeap, HashMap};
+use std::path::Path;
+
+const LIMIT: f64 = 20.0;
+
+fn opts() -> ExactOptions {
+    ExactOptions { time_limit: Some(LIMIT), ..ExactOptions::default() }
+}
+
+fn fixture(name: &str) -> Region {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("instances/fixtures").join(name);
+    GridFile::read(&path).expect("fixture reads").region
+}
+
+/// Solves and checks everything a result promises about itself.
+fn solved(region: &Region, objective: Objective) -> ExactResult {
+    let r = solve(region, objective, &opts());
+    assert_eq!(r.status, Status::Optimal, "{objective} on\n{}{r:?}", region.to_ascii());
+    let cover = r.cover.as_ref().expect("an optimal result carries its cover");
+    let rep = checker::check(region, cover, objective.mode());
+    assert!(rep.valid, "{objective}: {:?}", rep.error);
+    assert!(r.valid);
+    assert_eq!(Some(objective.value_of(&rep)), r.value, "{objective}: recount equals value");
+    assert_eq!(r.value, Some(r.lower_bound));
+    assert_eq!((r.length, r.turns, r.cycles), (Some(rep.length), Some(rep.turns), Some(rep.cycles)));
+    if objective.is_tour() {
+        assert_eq!(rep.cycles, 1, "{objective}: a tour is one closed walk");
+    }
+    r
+}
+
+fn value(region: &Region, objective: Objective) -> u64 {
+    solved(region, objective).value.expect("optimal value")
+}
+
+#[test]
+fn hand_fixtures_have_their_known_optima() {
+    let rect = fixture("rect-2x3.grid");
+    assert_eq!(value(&rect, Objective::Length), 6);
+    assert_eq!(value(&rect, Objective::CcTurns), 4);
+    assert_eq!(value(&rect, Objective::TourTurns), 4);
+    let row = fixture("row-1x4.grid");
+    assert_eq!(value(&row, Objective::Length), 6);
+    assert_eq!(value(&row, Objective::CcTurns), 4);
+    assert_eq!(value(&row, Objective::TourTurns), 4);
+    let sq3 = fixture("square-3x3.grid");
+    assert_eq!(value(&sq3, Objective::Length), 10);
+    assert_eq!(value(&sq3, Objective::CcTurns), 8);
+    assert_eq!(value(&sq3, Objective::TourTurns), 8);
+    assert_eq!(value(&fixture("square-5x5.grid"), Objective::Length), 26);
+}
+
+#[test]
+fn small_special_cases() {
+    let one = Region::rectangle(1, 1);
+    for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::LawnTsp] {
+        let r = solved(&one, o);
+        assert_eq!(r.length, Some(0));
+    }
+    assert_eq!(value(&one, Objective::TourTurns), 4);
+    assert_eq!(value(&one, Objective::Weighted { turn_cost: 3 }), 12);
+    let two = Region::rectangle(2, 1);
+    assert_eq!(value(&two, Objective::Length), 2);
+    assert_eq!(value(&two, Objective::TourTurns), 4);
+    assert_eq!(value(&two, Objective::Weighted { turn_cost: 2 }), 10);
+    // A plus: two doubled strips cover it with 8 turns, but one tour needs 10 (they only
+    // cross at the centre, which no free splice can join).
+    let plus = Region::from_ascii(".#.\n###\n.#.\n");
+    assert_eq!(value(&plus, Objective::CcTurns), 8);
+    assert_eq!(value(&plus, Objective::TourTurns), 10);
+    assert_eq!(value(&plus, Objective::Length), 8);
+}
+
+#[test]
+fn disconnected_regions_have_cycle_covers_but_no_tours() {
+    let r = Region::from_ascii("##.#\n##..\n");
+    for o in [Objective::Length, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }] {
+        let res = solve(&r, o, &opts());
+        assert_eq!(res.status, Status::Infeasible, "{o}");
+        assert!(res.value.is_none() && !res.valid && res.message.is_some());
+    }
+    // A 2x2 block (4 turns) and an isolated pixel (4 turns).
+    assert_eq!(value(&r, Objective::CcTurns), 8);
+    // The lawn tour may leave the grass.
+    assert_eq!(value(&r, Objective::LawnTsp), 8);
+}
+
+#[test]
+fn lawn_tsp_of_a_scattered_lawn() {
+    let r = Region::from_ascii("#...#\n.....\n..#..\n#...#\n");
+    // Corners of a 5 x 4 box and one point on the way: the box perimeter, 2 (4 + 3) = 14.
+    assert_eq!(value(&r, Objective::LawnTsp), 14);
+}
+
+#[test]
+fn json_has_the_contract_keys() {
+    let r = solve(&Region::rectangle(3, 2), Objective::TourTurns, &opts());
+    let v = serde_json::to_value(&r).expect("serializes");
+    for k in ["objective", "value", "lower_bound", "status", "seconds", "rounds", "length", "turns", "cycles", "valid"] {
+        assert!(v.get(k).is_some(), "key {k}");
+    }
+    assert_eq!(v["status"], "optimal");
+    assert_eq!(v["objective"], "tour-turns");
+    assert!(v.get("cover").is_none());
+}
+
+#[test]
+fn objective_names_round_trip() {
+    for name in Objective::NAMES {
+        let o: Objective = name.parse().expect("known name");
+        assert_eq!(o.to_string(), name);
+    }
+    assert_eq!(Objective::parse("weighted", Some(5)), Ok(Objective::Weighted { turn_cost: 5 }));
+    assert!(Objective::parse("weighted", None).is_err());
+    assert!(Objective::parse("length", Some(1)).is_err());
+    assert!("bogus".parse::<Objective>().is_err());
+}
+
+#[test]
+fn time_limit_gives_a_checked_incumbent_and_a_bound() {
+    // Too large for a tenth of a second: the answer is an incumbent and a bound, not a claim.
+    let r = Region::rectangle(14, 13);
+    let res = solve(&r, Objective::TourTurns, &ExactOptions { time_limit: Some(0.1), ..ExactOptions::default() });
+    assert!(matches!(res.status, Status::TimeLimit | Status::Optimal), "{res:?}");
+    if let Some(v) = res.value {
+        assert!(res.valid && res.lower_bound <= v);
+        let rep = checker::check(&r, res.cover.as_ref().expect("cover"), Mode::Milling);
+        assert_eq!(rep.turns, v);
+    }
+    if res.status == Status::TimeLimit {
+        assert!(res.value.is_none_or(|v| v > res.lower_bound));
+    }
+}
+
+#[test]
+fn warm_start_is_used_and_checked() {
+    let r = Region::rectangle(4, 4);
+    // The boundary ring plus the inner 2x2 is not one walk: a bad warm start is ignored.
+    let ring: Vec<Pixel> = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
+        .iter()
+        .map(|&p| p.into())
+        .collect();
+    let bad = CycleCover::tour(ring);
+    let res = solve(&r, Objective::Length, &ExactOptions { warm_start: Some(bad), ..opts() });
+    assert_eq!(res.value, Some(16));
+    // A snake is optimal for length: accepted, and the answer is still 16.
+    let snake: Vec<Pixel> = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (2, 1), (1, 1), (1, 2), (2, 2), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
+        .iter()
+        .map(|&p| p.into())
+        .collect();
+    let res = solve(&r, Objective::Length, &ExactOptions { warm_start: Some(CycleCover::tour(snake)), ..opts() });
+    assert_eq!((res.status, res.value, res.rounds), (Status::Optimal, Some(16), 0));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Brute-force oracle
+// ---------------------------------------------------------------------------------------------
+
+/// The cheapest closed walk covering exactly each pixel set, for a cost of `w_len` per unit
+/// move plus `w_turn` per quarter turn: Dijkstra over (pixel, heading, first heading, visited)
+/// from the set's lowest pixel. Index: bit mask. One-pixel walks cost 4 turns, length 0.
+fn cheapest_walks(r: &Region, w_len: u64, w_turn: u64) -> Vec<u64> {
+    let n = r.len();
+    assert!(n <= 8);
+    let full = 1usize << n;
+    let mut best = vec![u64::MAX; full];
+    for v in 0..n {
+        best[1 << v] = 4 * w_turn;
+    }
+    for s in 0..n {
+        // State: (pixel, heading, first heading, mask); only masks whose lowest pixel is s.
+        let idx = |v: usize, h: usize, h0: usize, m: usize| ((m * n + v) * 4 + h) * 4 + h0;
+        let mut dist: HashMap<usize, u64> = HashMap::new();
+        let mut heap = BinaryHeap::new();
+        for d in Dir::ALL {
+            if let Some(w) = r.neighbor(s, d) {
+                if w < s {
+                    continue;
+                }
+                let m = (1 << s) | (1 << w);
+                let k = idx(w, d.index(), d.index(), m);
+                dist.insert(k, w_len);
+                heap.push(std::cmp::Reverse((w_len, w, d.index(), d.index(), m)));
+            }
+        }
+        while let Some(std::cmp::Reverse((c, v, h, h0, m))) = heap.pop() {
+            if dist.get(&idx(v, h, h0, m)).is_some_and(|&d| d < c) {
+                continue;
+            }
+            if v == s {
+                let close = c + w_turn * u64::from(Dir::from_index(h).turn_to(Dir::from_index(h0)));
+                best[m] = best[m].min(close);
+            }
+            for d in Dir::ALL {
+                let Some(w) = r.neighbor(v, d) else { continue };
+                if w < s {
+                    continue;
+                }
+                let nc = c + w_len + w_turn * u64::from(Dir::from_index(h).turn_to(d));
+                let nm = m | (1 << w);
+                let k = idx(w, d.index(), h0, nm);
+                if dist.get(&k).is_none_or(|&old| nc < old) {
+                    dist.insert(k, nc);
+                    heap.push(std::cmp::Reverse((nc, w, d.index(), h0, nm)));
+                }
+            }
+        }
+    }
+    best
+}
+
+/// Brute-force optimum of a tour objective (None when no tour exists).
+fn brute_tour(r: &Region, w_len: u64, w_turn: u64) -> Option<u64> {
+    let best = cheapest_walks(r, w_len, w_turn);
+    let v = best[(1 << r.len()) - 1];
+    (v != u64::MAX).then_some(v)
+}
+
+/// Brute-force minimum-turn cycle cover: subset DP over exact cover sets of closed walks.
+fn brute_cc_turns(r: &Region) -> u64 {
+    let best = cheapest_walks(r, 0, 1);
+    let full = (1usize << r.len()) - 1;
+    let mut f = vec![u64::MAX; full + 1];
+    f[0] = 0;
+    for m in 1..=full {
+        let low = m & m.wrapping_neg();
+        // Sets S containing the lowest pixel of m.
+        let mut s = full;
+        loop {
+            if s & low != 0 && best[s] != u64::MAX && f[m & !s] != u64::MAX {
+                f[m] = f[m].min(best[s] + f[m & !s]);
+            }
+            if s == 0 {
+                break;
+            }
+            s = (s - 1) & full;
+        }
+    }
+    f[full]
+}
+
+/// Brute-force lawn TSP: all cyclic orders from pixel 0.
+fn brute_lawn(r: &Region) -> u64 {
+    let n = r.len();
+    if n <= 1 {
+        return 0;
+    }
+    let mut rest: Vec<usize> = (1..n).collect();
+    let mut best = u64::MAX;
+    permute(&mut rest, 0, &mut |p| {
+        let mut c = r.pixel(0).l1(r.pixel(p[0])) + r.pixel(p[p.len() - 1]).l1(r.pixel(0));
+        for w in p.windows(2) {
+            c += r.pixel(w[0]).l1(r.pixel(w[1]));
+        }
+        best = best.min(c);
+    });
+    best
+}
+
+fn permute(a: &mut Vec<usize>, k: usize, f: &mut dyn FnMut(&[usize])) {
+    if k == a.len() {
+        f(a);
+        return;
+    }
+    for i in k..a.len() {
+        a.swap(k, i);
+        permute(a, k + 1, f);
+        a.swap(k, i);
+    }
+}
+
+/// Random regions of up to `max_n` pixels in a small box (holes and several components
+/// included); `connected` keeps only 4-connected ones.
+fn tiny_region(max_n: usize, connected: bool) -> impl Strategy<Value = Region> {
+    (2usize..5, 1usize..4).prop_flat_map(move |(w, h)| {
+        proptest::collection::vec(proptest::bool::weighted(0.7), w * h).prop_filter_map("size", move |bits| {
+            let r = Region::from_pixels(
+                bits.iter().enumerate().filter(|(_, b)| **b).map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
+            )
+            .ok()?;
+            let ok = !r.is_empty()
+                && r.len() <= max_n
+                && (!connected || mowmill::topology::components(&r).count == 1);
+            ok.then_some(r)
+        })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    #[test]
+    fn tours_match_brute_force(r in tiny_region(7, true)) {
+        prop_assert_eq!(value(&r, Objective::Length), brute_tour(&r, 1, 0).expect("connected"));
+        prop_assert_eq!(value(&r, Objective::TourTurns), brute_tour(&r, 0, 1).expect("connected"));
+        prop_assert_eq!(value(&r, Objective::Weighted { turn_cost: 2 }), brute_tour(&r, 1, 2).expect("connected"));
+    }
+
+    #[test]
+    fn cycle_covers_and_lawn_match_brute_force(r in tiny_region(7, false)) {
+        prop_assert_eq!(value(&r, Objective::CcTurns), brute_cc_turns(&r));
+        prop_assert_eq!(value(&r, Objective::LawnTsp), brute_lawn(&r));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Properties on small random regions (simple and holed)
+// ---------------------------------------------------------------------------------------------
+
+fn small_region() -> impl Strategy<Value = Region> {
+    (3usize..7, 3usize..6).prop_flat_map(|(w, h)| {
+        proptest::collection::vec(proptest::bool::weighted(0.75), w * h).prop_filter_map("connected", move |bits| {
+            let r = Region::from_pixels(
+                bits.iter().enumerate().filter(|(_, b)| **b).map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
+            )
+            .ok()?;
+            (r.len() >= 2 && mowmill::topology::components(&r).count == 1).then_some(r)
+        })
+    })
+}
+
+/// The exact objective an approximation's output is compared with.
+fn exact_objective(o: AlgoObjective) -> Objective {
+    match o {
+        AlgoObjective::Length => Objective::Length,
+        AlgoObjective::CcTurns => Objective::CcTurns,
+        AlgoObjective::Turns => Objective::TourTurns,
+        AlgoObjective::LawnLength => Objective::LawnTsp,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    #[test]
+    fn optimum_lies_between_bounds_and_every_valid_tour(r in small_region()) {
+        let mut opt = HashMap::new();
+        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::LawnTsp] {
+            let v = value(&r, o);
+            let cheap = bounds::cheap_lower_bound(&r, o).value;
+            prop_assert!(cheap <= v, "{o}: cheap bound {cheap} > optimum {v}");
+            if let Some(lp) = bounds::lp_lower_bound(&r, o, Some(LIMIT)) {
+                prop_assert!(lp.value <= v, "{o}: LP bound {} > optimum {v}", lp.value);
+            }
+            opt.insert(o, v);
+        }
+        prop_assert!(opt[&Objective::CcTurns] <= opt[&Objective::TourTurns]);
+        prop_assert!(opt[&Objective::LawnTsp] <= opt[&Objective::Length]);
+        prop_assert_eq!(value(&r, Objective::Weighted { turn_cost: 0 }), opt[&Objective::Length]);
+        // Every approximation that applies gives a valid cover no better than the optimum.
+        for alg in algorithms::REGISTRY {
+            if (alg.precondition)(&r).is_err() {
+                continue;
+            }
+            let Ok(sol) = (alg.run)(&r, &algorithms::Options::default()) else { continue };
+            for out in sol.outputs {
+                let o = exact_objective(out.objective);
+                let rep = checker::check(&r, &out.cover, o.mode());
+                if !rep.valid || (o.is_tour() && rep.cycles != 1) {
+                    continue;
+                }
+                let v = o.value_of(&rep);
+                prop_assert!(v >= opt[&o], "{}: {o} {v} below the optimum {}", alg.name, opt[&o]);
+            }
+        }
+    }
+
+    #[test]
+    fn symmetries_keep_the_optimum(r in small_region(), s in 1u8..8) {
+        let t = r.transformed(Symmetry(s));
+        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }] {
+            prop_assert_eq!(value(&r, o), value(&t, o), "{}", o);
+        }
+    }
+}

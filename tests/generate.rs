@@ -1,0 +1,209 @@
+//! End-to-end tests of the instance generator through its public API.
+
+use mowmill::generate::{Family, GenParams, Style, generate};
+use mowmill::gridfile::GridFile;
+use mowmill::topology;
+use std::time::Instant;
+
+fn params(family: Family, seed: u64) -> GenParams {
+    GenParams::new(family, seed)
+}
+
+#[test]
+fn generated_files_read_back_byte_for_byte() {
+    let cases = [
+        GenParams {
+            n: Some(120),
+            ..params(Family::RandomSimple, 3)
+        },
+        GenParams {
+            n: Some(300),
+            holes: Some(2),
+            no_cut: true,
+            ..params(Family::RandomHoled, 4)
+        },
+        GenParams {
+            n: Some(90),
+            holes: Some(3),
+            ..params(Family::Thin, 5)
+        },
+        GenParams {
+            n: Some(100),
+            parts: Some(4),
+            ..params(Family::LawnScattered, 6)
+        },
+        GenParams {
+            side: Some(9),
+            k: Some(3),
+            ..params(Family::Donut, 7)
+        },
+        GenParams {
+            width: Some(4),
+            height: Some(6),
+            ..params(Family::Rect, 8)
+        },
+    ];
+    for p in cases {
+        let f = generate(&p).unwrap();
+        let text = f.to_text().unwrap();
+        let g = GridFile::parse(&text, "gen.grid").unwrap();
+        assert_eq!(g, f, "{p:?}");
+        assert_eq!(g.to_text().unwrap(), text);
+        let keys: Vec<String> = g.meta_pairs().into_iter().map(|(k, _)| k).collect();
+        assert_eq!(keys, ["family", "params", "seed", "n", "holes"]);
+        assert_eq!(
+            g.meta("n").unwrap().parse::<usize>().unwrap(),
+            g.region.len()
+        );
+        assert_eq!(
+            g.meta("holes").unwrap().parse::<usize>().unwrap(),
+            topology::holes(&g.region).count
+        );
+    }
+}
+
+/// The same request gives the same bytes on every machine. These instances are frozen: if a
+/// change to the generator alters them, every committed instance set generated from seeds
+/// changes too, so update them only on purpose.
+#[test]
+fn frozen_instances() {
+    let simple = GenParams {
+        n: Some(24),
+        style: Some(Style::Blob),
+        compactness: Some(0.5),
+        ..params(Family::RandomSimple, 1)
+    };
+    let holed = GenParams {
+        n: Some(40),
+        holes: Some(2),
+        style: Some(Style::Rectangles),
+        compactness: Some(0.9),
+        ..params(Family::RandomHoled, 3)
+    };
+    let thin = GenParams {
+        n: Some(25),
+        holes: Some(1),
+        compactness: Some(0.3),
+        ..params(Family::Thin, 3)
+    };
+    let got: Vec<String> = [simple, holed, thin]
+        .iter()
+        .map(|p| generate(p).unwrap().to_text().unwrap())
+        .collect();
+    let expected = [FROZEN_SIMPLE, FROZEN_HOLED, FROZEN_THIN];
+    for (g, e) in got.iter().zip(expected) {
+        assert_eq!(g, e, "got:\n{g}");
+    }
+}
+
+const FROZEN_SIMPLE: &str = "; family: random-simple\n\
+     ; params: n=24 no_cut=false style=blob compactness=0.5\n\
+     ; seed: 1\n\
+     ; n: 24\n\
+     ; holes: 0\n\
+     ..#...\n\
+     .##...\n\
+     .####.\n\
+     ######\n\
+     .#####\n\
+     .####.\n\
+     .##...\n";
+const FROZEN_HOLED: &str = "; family: random-holed\n\
+     ; params: n=40 holes=2 no_cut=false style=rectangles compactness=0.9\n\
+     ; seed: 3\n\
+     ; n: 40\n\
+     ; holes: 2\n\
+     ######...\n\
+     #.####...\n\
+     ######...\n\
+     ..#######\n\
+     ..##.####\n\
+     ..####..#\n\
+     .####....\n\
+     ..#......\n";
+const FROZEN_THIN: &str = "; family: thin\n\
+     ; params: n=25 holes=1 compactness=0.3\n\
+     ; seed: 3\n\
+     ; n: 25\n\
+     ; holes: 1\n\
+     ....#..\n\
+     #####..\n\
+     ..#.#..\n\
+     ..#####\n\
+     ..#...#\n\
+     ..#...#\n\
+     ..#...#\n\
+     ###.###\n";
+
+/// The sizes the README reports. Prints the generation time (release build):
+/// `cargo test --release --test generate -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn big_instances() {
+    let mut cases = vec![
+        (
+            "rect 1000x1000",
+            GenParams {
+                width: Some(1000),
+                height: Some(1000),
+                ..params(Family::Rect, 1)
+            },
+        ),
+        (
+            "thin n=1e5 holes=100",
+            GenParams {
+                n: Some(100_000),
+                holes: Some(100),
+                ..params(Family::Thin, 1)
+            },
+        ),
+        (
+            "lawn-scattered n=1e6 parts=3",
+            GenParams {
+                n: Some(1_000_000),
+                ..params(Family::LawnScattered, 1)
+            },
+        ),
+    ];
+    for style in [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms] {
+        for no_cut in [false, true] {
+            let st = Some(style);
+            cases.push((
+                "random-simple n=1e6",
+                GenParams {
+                    n: Some(1_000_000),
+                    style: st,
+                    no_cut,
+                    ..params(Family::RandomSimple, 1)
+                },
+            ));
+            cases.push((
+                "random-holed n=1e6 holes=100",
+                GenParams {
+                    n: Some(1_000_000),
+                    holes: Some(100),
+                    style: st,
+                    no_cut,
+                    ..params(Family::RandomHoled, 1)
+                },
+            ));
+        }
+    }
+    for (name, p) in cases {
+        let start = Instant::now();
+        let f = generate(&p).unwrap();
+        let elapsed = start.elapsed();
+        let expected_n = p.n.unwrap_or(1_000_000);
+        assert_eq!(f.region.len(), expected_n, "{name}");
+        assert_eq!(
+            f.meta("holes"),
+            Some(p.holes.unwrap_or(0).to_string().as_str()),
+            "{name}"
+        );
+        println!(
+            "{name:32} {:60} {:>8.2} s",
+            f.meta("params").unwrap(),
+            elapsed.as_secs_f64()
+        );
+    }
+}
