@@ -48,7 +48,10 @@ pub fn is_milli(cutter: Cutter) -> bool {
 pub fn centre(cutter: Cutter, p: Pixel) -> (f64, f64) {
     match cutter {
         Cutter::Square | Cutter::SquareFree => (f64::from(p.x) + 0.5, f64::from(p.y) + 0.5),
-        Cutter::Disk => (1.5 * f64::from(p.x), SQRT3 * (f64::from(p.y) + f64::from(p.x) / 2.0)),
+        Cutter::Disk => (
+            1.5 * f64::from(p.x),
+            SQRT3 * (f64::from(p.y) + f64::from(p.x) / 2.0),
+        ),
     }
 }
 
@@ -106,15 +109,21 @@ fn hexagon_meets_pixel(c: (f64, f64), p: Pixel) -> bool {
         })
         .collect();
     let (x0, y0) = (f64::from(p.x), f64::from(p.y));
-    let square = [(x0, y0), (x0 + 1.0, y0), (x0 + 1.0, y0 + 1.0), (x0, y0 + 1.0)];
+    let square = [
+        (x0, y0),
+        (x0 + 1.0, y0),
+        (x0 + 1.0, y0 + 1.0),
+        (x0, y0 + 1.0),
+    ];
     let s3 = SQRT3 / 2.0;
     let axes = [(1.0, 0.0), (0.0, 1.0), (s3, 0.5), (s3, -0.5)];
     axes.iter().all(|&(ax, ay)| {
         let proj = |pts: &[(f64, f64)]| {
-            pts.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(x, y)| {
-                let v = x * ax + y * ay;
-                (lo.min(v), hi.max(v))
-            })
+            pts.iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &(x, y)| {
+                    let v = x * ax + y * ay;
+                    (lo.min(v), hi.max(v))
+                })
         };
         let (a0, a1) = proj(&hex);
         let (b0, b1) = proj(&square);
@@ -155,12 +164,22 @@ pub fn check_lawn(region: &Region, cover: &CycleCover, cutter: Cutter) -> LawnRe
             visited.insert(a);
         }
     }
-    report.length_units = if cutter == Cutter::Square { l1 as f64 } else { l2 };
-    report.length = if cutter == Cutter::Square { l1 } else { (1000.0 * l2 - 1e-6).ceil().max(0.0) as u64 };
+    report.length_units = if cutter == Cutter::Square {
+        l1 as f64
+    } else {
+        l2
+    };
+    report.length = if cutter == Cutter::Square {
+        l1
+    } else {
+        (1000.0 * l2 - 1e-6).ceil().max(0.0) as u64
+    };
     let missing: Vec<&Pixel> = required.iter().filter(|p| !visited.contains(p)).collect();
     if let Some(first) = missing.first() {
-        report.error =
-            Some(format!("lattice cell {first} meets the grass but is not visited ({} in all)", missing.len()));
+        report.error = Some(format!(
+            "lattice cell {first} meets the grass but is not visited ({} in all)",
+            missing.len()
+        ));
         return report;
     }
     report.valid = true;

@@ -234,7 +234,7 @@ struct GenArgs {
     /// Number of grass components (lawn-scattered).
     #[arg(long)]
     parts: Option<usize>,
-    /// Shape style of random families: mixed (default), blob, rectangles, snake.
+    /// Shape style of random families: mixed (default), blob, rectangles, snake, rooms.
     #[arg(long)]
     style: Option<Style>,
     /// Compactness of blob growth in [0, 1] (1 round, 0 ragged).
@@ -267,11 +267,12 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Gen(args) => gen_command(args),
         Command::Info { file, json } => {
             let inst = Instance::read(&file)?;
-            let s = topology::summary(&inst.region);
+            let mut v = serde_json::to_value(topology::summary(&inst.region))?;
+            // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
+            v["strip_cover"] = mowmill::strip_cover::min_strip_cover_size(&inst.region).into();
             if json {
-                println!("{}", serde_json::to_string_pretty(&s)?);
+                println!("{}", serde_json::to_string_pretty(&v)?);
             } else {
-                let v = serde_json::to_value(&s)?;
                 for (k, val) in v.as_object().context("summary is an object")? {
                     println!("{k:<20} {val}");
                 }
@@ -411,7 +412,7 @@ fn bench_command(a: BenchArgs) -> Result<ExitCode> {
         Some(dir) => harness::manifest::read_run_id(dir).unwrap_or_else(|| config.name.clone()),
         None => match std::env::var("SLURM_ARRAY_JOB_ID") {
             Ok(job) => format!("{}-slurm{job}", config.name),
-            Err(_) => format!("{}-{}", config.name, harness::manifest::now().replace(':', "").replace('-', "")),
+            Err(_) => format!("{}-{}", config.name, harness::manifest::now().replace([':', '-'], "")),
         },
     };
     let out = a.resume.clone().or(a.out.clone()).unwrap_or_else(|| {
@@ -458,7 +459,22 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let output = pick(a.cycle_cover)
         .or_else(|| solution.outputs.first())
         .context("the algorithm returned no output")?;
-    let report = checker::check(&inst.region, &output.cover, output.objective.mode());
+    let mut report = checker::check(&inst.region, &output.cover, output.objective.mode());
+    // Lawn tours with free motion or the disk are lattice polygons: the lawn checker recounts
+    // their Euclidean length (milli-units, rounded up) and the cells they must visit.
+    if output.objective == algorithms::Objective::LawnLength && mowmill::lawn_check::is_milli(opts.cutter) {
+        let lawn = mowmill::lawn_check::check_lawn(&inst.region, &output.cover, opts.cutter);
+        report = checker::Report {
+            valid: lawn.valid,
+            length: lawn.length,
+            turns: 0,
+            cycles: lawn.cycles,
+            max_coverage: 0,
+            error: lawn.error,
+            coverage: Vec::new(),
+            violation: None,
+        };
+    }
     let valid = report.valid && (!output.objective.is_tour() || output.cover.is_tour());
     let value = match output.objective {
         algorithms::Objective::Length | algorithms::Objective::LawnLength => report.length,

@@ -219,7 +219,7 @@ impl Region {
             min_y: pixels[0].y,
             max_y: pixels[pixels.len() - 1].y,
         };
-        let cells = bbox.width().checked_mul(bbox.height()).unwrap_or(usize::MAX);
+        let cells = bbox.width().saturating_mul(bbox.height());
         if cells > MAX_BBOX_CELLS || pixels.len() >= NONE as usize {
             return Err(Error::Invalid(format!(
                 "region's bounding box {}x{} is too large (at most {} cells)",

@@ -478,9 +478,9 @@ mod tests {
         #[test]
         fn local_cut_matches_definition_and_yokoi(r in random_region()) {
             let local = local_cut_vertices(&r);
-            for i in 0..r.len() {
-                prop_assert_eq!(local[i], is_local_cut_by_definition(&r, i), "pixel {}", r.pixel(i));
-                prop_assert_eq!(local[i], connectivity_number_at(&r, r.pixel(i)) >= 2, "pixel {}", r.pixel(i));
+            for (i, &is_local) in local.iter().enumerate() {
+                prop_assert_eq!(is_local, is_local_cut_by_definition(&r, i), "pixel {}", r.pixel(i));
+                prop_assert_eq!(is_local, connectivity_number_at(&r, r.pixel(i)) >= 2, "pixel {}", r.pixel(i));
             }
         }
 
@@ -488,13 +488,13 @@ mod tests {
         fn cut_vertices_match_definition(r in random_region()) {
             let cut = cut_vertices(&r);
             let base = components(&r).count;
-            for i in 0..r.len() {
+            for (i, &is_cut) in cut.iter().enumerate() {
                 let rest = Region::from_pixels(
                     r.pixels().iter().enumerate().filter(|&(j, _)| j != i).map(|(_, &p)| p),
                 ).unwrap();
                 let isolated = r.degree(i) == 0;
                 let expect = components(&rest).count > base - usize::from(isolated);
-                prop_assert_eq!(cut[i], expect, "pixel {}", r.pixel(i));
+                prop_assert_eq!(is_cut, expect, "pixel {}", r.pixel(i));
             }
         }
 

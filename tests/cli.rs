@@ -29,6 +29,7 @@ fn temp_dir(tag: &str) -> PathBuf {
 }
 
 #[test]
+#[allow(clippy::type_complexity)]
 fn info_reports_hand_checked_topology() {
     // name, n, holes, components, boundary, internal, cut, local cut, black, white, thin, strips h, v
     let cases: &[(&str, u64, u64, u64, u64, u64, u64, u64, u64, u64, bool, u64, u64)] = &[
@@ -56,6 +57,11 @@ fn info_reports_hand_checked_topology() {
         assert_eq!(v["thin"].as_bool(), Some(thin), "{name} thin");
         assert_eq!(got("strips_h"), sh, "{name} strips_h");
         assert_eq!(got("strips_v"), sv, "{name} strips_v");
+    }
+    // Minimum strip covers (turn-cost paper, Lemma 4.4): two columns, one row, three rows.
+    for (name, cover) in [("rect-2x3.grid", 2), ("row-1x4.grid", 1), ("square-3x3.grid", 3), ("square-5x5.grid", 5)] {
+        let v = json(&mowmill(&["info", &fixture(name), "--json"]));
+        assert_eq!(v["strip_cover"].as_u64(), Some(cover), "{name} strip_cover");
     }
 }
 

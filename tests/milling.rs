@@ -112,10 +112,20 @@ fn check_tsp65(r: &Region) -> Option<(u64, u64, [i64; 6])> {
     let (sol, rep) = run("tsp65", r);
     let n = r.len() as u64;
     assert!(rep.length >= n.min(2 * n.saturating_sub(1)).min(n));
-    assert_eq!(sol.certificates["unexpected_components"], 0, "{}", r.to_ascii());
+    assert_eq!(
+        sol.certificates["unexpected_components"],
+        0,
+        "{}",
+        r.to_ascii()
+    );
     let no_cut = !topology::cut_vertices(r).iter().any(|&c| c);
     if no_cut && n >= 2 {
-        assert!(5 * rep.length + 4 <= 6 * n, "length {} > (6N-4)/5, N = {n}\n{}", rep.length, r.to_ascii());
+        assert!(
+            5 * rep.length + 4 <= 6 * n,
+            "length {} > (6N-4)/5, N = {n}\n{}",
+            rep.length,
+            r.to_ascii()
+        );
         assert_eq!(sol.certificates["bound_6n_4_5"] as u64, (6 * n - 4) / 5);
         let cases = ["a", "b", "c", "d", "e", "f"].map(|k| sol.certificates[&format!("case_{k}")]);
         return Some((rep.length, n, cases));
@@ -133,19 +143,27 @@ fn summarize(name: &str, results: impl Iterator<Item = Option<(u64, u64, [i64; 6
             cases[k] += c[k];
         }
     }
-    eprintln!("{name}: {count} regions without cut vertices, max length/bound = {worst:.3}, cases a-f {cases:?}");
+    eprintln!(
+        "{name}: {count} regions without cut vertices, max length/bound = {worst:.3}, cases a-f {cases:?}"
+    );
     count
 }
 
 #[test]
 fn tsp65_random_fat_regions() {
-    let n = summarize("tsp65 fat", (0..3000).map(|seed| check_tsp65(&random_fat_region(seed, 1 + (seed as usize % 6)))));
+    let n = summarize(
+        "tsp65 fat",
+        (0..3000).map(|seed| check_tsp65(&random_fat_region(seed, 1 + (seed as usize % 6)))),
+    );
     assert!(n > 1000);
 }
 
 #[test]
 fn tsp65_random_simple_regions() {
-    summarize("tsp65 simple", (0..3000).map(|seed| check_tsp65(&random_region(seed, 3 + (seed as usize % 40), true))));
+    summarize(
+        "tsp65 simple",
+        (0..3000).map(|seed| check_tsp65(&random_region(seed, 3 + (seed as usize % 40), true))),
+    );
 }
 
 #[test]
@@ -184,11 +202,283 @@ fn milling25_tangent_hole_contour_needs_a_repair() {
     assert_eq!(rep.length as i64, c["l_db"] + c["l_str"] + c["l_match"]);
 }
 
+/// A fat region with single-pixel holes punched where the 8-neighbourhood is full; kept only
+/// without local cut vertices.
+fn random_holed_region(seed: u64, k: usize, holes: usize) -> Option<Region> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5eed);
+    let base = random_fat_region(seed, k);
+    let mut set: std::collections::HashSet<Pixel> = base.pixels().iter().copied().collect();
+    for _ in 0..holes {
+        // A w × h hole whose surrounding ring is still full region (so holes stay apart).
+        let p = base.pixels()[rng.random_range(0..base.len())];
+        let (w, h) = (rng.random_range(1..3), rng.random_range(1..3));
+        let ring_full = (-1..=w)
+            .all(|dx| (-1..=h).all(|dy| set.contains(&Pixel::new(p.x + dx, p.y + dy))))
+            && (-2..=w + 1).all(|dx| {
+                (-2..=h + 1).all(|dy| {
+                    let inner = (-1..=w).contains(&dx) && (-1..=h).contains(&dy);
+                    inner || set.contains(&Pixel::new(p.x + dx, p.y + dy))
+                })
+            });
+        if ring_full {
+            for dx in 0..w {
+                for dy in 0..h {
+                    set.remove(&Pixel::new(p.x + dx, p.y + dy));
+                }
+            }
+        }
+    }
+    let r = Region::from_pixels(set).unwrap();
+    let ok =
+        topology::components(&r).count == 1 && !topology::local_cut_vertices(&r).iter().any(|&c| c);
+    ok.then_some(r)
+}
+
+#[test]
+fn holes1325_random_holed_regions() {
+    let (mut count, mut worst, mut holes, mut paid) = (0, 0.0f64, 0, 0);
+    for seed in 0..3000 {
+        let Some(r) = random_holed_region(seed, 4 + seed as usize % 10, 2 + seed as usize % 10)
+        else {
+            continue;
+        };
+        let (sol, rep) = run("holes1325", &r);
+        let n = r.len() as u64;
+        assert!(
+            40 * rep.length <= 53 * n,
+            "length {} > 53N/40, N = {n}\n{}",
+            rep.length,
+            r.to_ascii()
+        );
+        assert_eq!(
+            sol.certificates["unexpected_components"],
+            0,
+            "{}",
+            r.to_ascii()
+        );
+        count += 1;
+        holes += topology::holes(&r).count;
+        paid += sol.certificates["paid_bridges"];
+        worst = worst.max(40.0 * rep.length as f64 / (53 * n) as f64);
+    }
+    eprintln!(
+        "holes1325: {count} regions, {holes} holes, {paid} paid bridges, max length/bound = {worst:.3}"
+    );
+    assert!(count > 500);
+}
+
+#[test]
+fn holes1325_rejects_local_cut_vertices() {
+    // The pixel between the two holes is a local cut vertex.
+    let r = Region::from_ascii("#####\n#.#.#\n#####\n");
+    let algo = algorithms::find("holes1325").unwrap();
+    let e = (algo.precondition)(&r).unwrap_err().to_string();
+    assert!(e.contains("local cut vertices"), "{e}");
+    assert!((algo.run)(&r, &Options::default()).is_err());
+    // A donut of width 2 is fine: two contours, joined by a free bridge.
+    let d = Region::from_ascii("######\n######\n##..##\n##..##\n######\n######\n");
+    let (sol, rep) = run("holes1325", &d);
+    assert_eq!(rep.length, 32);
+    assert_eq!(sol.certificates["paid_bridges"], 0);
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
     #[test]
     fn symmetric_images_keep_the_bound(seed in 0u64..1_000_000, s in 0u8..8) {
         let r = random_fat_region(seed, 3).transformed(mowmill::Symmetry(s));
         check_tsp65(&r);
+    }
+}
+
+pub mod lawn {
+    use super::*;
+    use mowmill::algorithms::Cutter;
+    use mowmill::lawn_check;
+
+    /// Runs a lawn algorithm and checks its tour with the checker of its cutter; returns the
+    /// checked length (L1 units, or milli-units for Euclidean motion).
+    pub fn run_lawn(name: &str, region: &Region, cutter: Cutter) -> (Solution, u64) {
+        let algo = algorithms::find(name).unwrap();
+        let opts = Options {
+            cutter,
+            ..Options::default()
+        };
+        let sol = (algo.run)(region, &opts).unwrap();
+        let out = &sol.outputs[0];
+        assert_eq!(out.objective, Objective::LawnLength);
+        assert!(out.cover.is_tour());
+        let length = if cutter == Cutter::Square {
+            let rep = checker::check(region, &out.cover, Mode::Lawn);
+            assert!(rep.valid, "{name}: {:?}", rep.error);
+            rep.length
+        } else {
+            let rep = lawn_check::check_lawn(region, &out.cover, cutter);
+            assert!(rep.valid, "{name} {cutter:?}: {:?}", rep.error);
+            rep.length
+        };
+        (sol, length)
+    }
+
+    /// Grass in scattered parts: several random polyominoes far apart.
+    fn scattered(seed: u64, parts: usize, n: usize) -> Region {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut pixels = Vec::new();
+        for k in 0..parts {
+            let part = random_region(seed * 31 + k as u64, n, false);
+            let (dx, dy) = (rng.random_range(-20..20), rng.random_range(-20..20));
+            pixels.extend(part.pixels().iter().map(|p| Pixel::new(p.x + dx, p.y + dy)));
+        }
+        Region::from_pixels(pixels).unwrap()
+    }
+
+    #[test]
+    fn lawn_tours_are_valid_and_ordered() {
+        let cutters = [Cutter::Square, Cutter::SquareFree, Cutter::Disk];
+        for seed in 0..60 {
+            let r = scattered(seed, 1 + seed as usize % 4, 3 + seed as usize % 25);
+            for cutter in cutters {
+                let (mst_sol, mst) = run_lawn("lawn-mst", &r, cutter);
+                let (_, chr) = run_lawn("lawn-christofides", &r, cutter);
+                let (_, opt2) = run_lawn("lawn-2opt", &r, cutter);
+                // Tour ≤ 2 · MST (doubling), Christofides ≤ 3/2 · TSP ≤ 3/2 · 2 MST, and 2-opt
+                // never lengthens the better start. (+1 per hop absorbs the rounding up.)
+                let w = mst_sol.certificates["mst_weight"] as u64;
+                let pts = mst_sol.certificates["points"] as u64;
+                assert!(mst <= 2 * w + pts + 1, "{cutter:?}: {mst} > 2 * {w}");
+                assert!(chr <= 3 * w + pts + 1);
+                assert!(
+                    opt2 <= mst.min(chr) + 1,
+                    "{cutter:?}: 2-opt {opt2} vs {mst}, {chr}"
+                );
+                if cutter != Cutter::Disk {
+                    let (_, bx) = run_lawn("lawn-box", &r, cutter);
+                    assert!(bx <= chr);
+                }
+                // The area lower bound never exceeds a valid tour.
+                assert!(mst_sol.certificates["area_lower_bound"] as u64 <= opt2);
+            }
+        }
+    }
+
+    #[test]
+    fn box_method_mows_rectangles_optimally_when_thin() {
+        // 2 × k: the rectangular tour of length 2(a + b - 2) is optimal (Section 4).
+        for k in 2..10 {
+            let r = Region::rectangle(2, k);
+            let algo = algorithms::find("lawn-box").unwrap();
+            let sol = (algo.run)(&r, &Options::default()).unwrap();
+            let rep = checker::check(&r, &sol.outputs[0].cover, Mode::Lawn);
+            assert!(rep.valid);
+            assert_eq!(rep.length, 2 * (2 + k as u64 - 2));
+        }
+        // A hollow square of grass: the box rings beat any tour of the corner pixels? No:
+        // both are checked, the shorter one is kept.
+        let r = Region::from_ascii("#......#\n........\n........\n#......#\n");
+        let (_, len) = run_lawn("lawn-box", &r, Cutter::Square);
+        assert_eq!(len, 20);
+    }
+
+    #[test]
+    fn disk_is_rejected_by_lawn_box() {
+        let algo = algorithms::find("lawn-box").unwrap();
+        let opts = Options {
+            cutter: Cutter::Disk,
+            ..Options::default()
+        };
+        assert!((algo.run)(&Region::rectangle(3, 3), &opts).is_err());
+    }
+}
+
+/// Against proven optima (exact MILP, small regions): the OPT-relative guarantees and the
+/// lower-bound claims of the proof of Theorem 4 (L_δB ≤ OPT, L_str ≤ OPT), counted rather
+/// than asserted where the grid reading may differ from the continuous proof.
+mod against_exact {
+    use super::*;
+    use mowmill::exact::{self, ExactOptions, Status};
+
+    fn opt(r: &Region, objective: exact::Objective) -> Option<u64> {
+        let opts = ExactOptions {
+            time_limit: Some(5.0),
+            ..ExactOptions::default()
+        };
+        let res = exact::solve(r, objective, &opts);
+        (res.status == Status::Optimal)
+            .then_some(res.value)
+            .flatten()
+    }
+
+    #[test]
+    fn milling_guarantees_hold_against_opt() {
+        let (mut solved, mut db_over, mut str_over, mut worst25, mut worst65) =
+            (0, 0, 0, 0.0f64, 0.0f64);
+        for seed in 0..300u64 {
+            let r = random_region(seed, 6 + seed as usize % 28, seed % 2 == 0);
+            if topology::components(&r).count != 1 {
+                continue;
+            }
+            let Some(opt) = opt(&r, exact::Objective::Length) else {
+                continue;
+            };
+            solved += 1;
+            let (sol, rep) = run("milling25", &r);
+            assert!(
+                2 * rep.length <= 5 * opt,
+                "milling25 {} > 2.5 * {opt}\n{}",
+                rep.length,
+                r.to_ascii()
+            );
+            worst25 = worst25.max(rep.length as f64 / opt as f64);
+            db_over += usize::from(sol.certificates["l_db"] as u64 > opt);
+            str_over += usize::from(sol.certificates["l_str"] as u64 > opt);
+            if topology::holes(&r).count == 0 {
+                let (_, rep) = run("tsp65", &r);
+                assert!(
+                    5 * rep.length <= 6 * opt,
+                    "tsp65 {} > 6/5 * {opt}\n{}",
+                    rep.length,
+                    r.to_ascii()
+                );
+                worst65 = worst65.max(rep.length as f64 / opt as f64);
+            }
+        }
+        eprintln!(
+            "exact: {solved} optima; milling25 max ratio {worst25:.3} (L_dB > OPT in {db_over}, \
+             L_str > OPT in {str_over}); tsp65 max ratio {worst65:.3}"
+        );
+        assert!(solved > 40);
+    }
+
+    /// Finding (grid reading of Theorem 4): on a one-pixel-thick ring both contours run
+    /// through the same 8 pixels, so L_δB = 16 > OPT = 8; the tour (16) still meets 2.5 OPT.
+    #[test]
+    fn thin_ring_contours_exceed_opt() {
+        let r = Region::from_ascii("###\n#.#\n###\n");
+        assert_eq!(opt(&r, exact::Objective::Length), Some(8));
+        let (sol, rep) = run("milling25", &r);
+        assert_eq!(sol.certificates["l_db"], 16);
+        assert_eq!(rep.length, 16);
+    }
+
+    #[test]
+    fn lawn_tours_against_the_exact_tsp() {
+        let mut solved = 0;
+        for seed in 0..40u64 {
+            let r = random_region(seed, 4 + seed as usize % 10, false);
+            let Some(tsp) = opt(&r, exact::Objective::LawnTsp) else {
+                continue;
+            };
+            solved += 1;
+            let (_, mst) = lawn::run_lawn("lawn-mst", &r, mowmill::algorithms::Cutter::Square);
+            let (_, chr) =
+                lawn::run_lawn("lawn-christofides", &r, mowmill::algorithms::Cutter::Square);
+            let (_, two) = lawn::run_lawn("lawn-2opt", &r, mowmill::algorithms::Cutter::Square);
+            assert!(
+                tsp <= two && mst <= 2 * tsp && 2 * chr <= 3 * tsp,
+                "{tsp} {mst} {chr}\n{}",
+                r.to_ascii()
+            );
+        }
+        assert!(solved > 20);
     }
 }

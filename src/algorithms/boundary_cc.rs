@@ -101,7 +101,9 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
         });
     }
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
-    let matching = match_ports(region, &ports, &partner)?;
+    // A one-pixel link closed on itself is a still walk of 4 turns.
+    let floor: Vec<u32> = (0..ports.len()).map(|i| if links[i / 2].first == links[i / 2].last { 4 } else { 0 }).collect();
+    let matching = match_ports(region, &ports, &partner, &floor)?;
     if !matching.complete {
         return Err(Error::invalid(format!(
             "boundary-cc is exact only with a complete candidate graph: {} ports exceed {}",

@@ -26,7 +26,11 @@ pub struct ContourWalk {
 impl ContourWalk {
     /// Number of unit moves of the closed walk.
     pub fn len_moves(&self) -> usize {
-        if self.walk.len() < 2 { 0 } else { self.walk.len() }
+        if self.walk.len() < 2 {
+            0
+        } else {
+            self.walk.len()
+        }
     }
 }
 
@@ -90,7 +94,10 @@ fn trace(region: &Region, start: usize, side: Dir, seen: &mut [u8]) -> ContourWa
     if walk.len() > 1 && walk.last() == walk.first() {
         walk.pop();
     }
-    ContourWalk { walk, outer: left_minus_right > 0 }
+    ContourWalk {
+        walk,
+        outer: left_minus_right > 0,
+    }
 }
 
 #[cfg(test)]
@@ -101,7 +108,10 @@ mod tests {
     use crate::tour::CycleCover;
 
     fn pixels(r: &Region, c: &ContourWalk) -> Vec<(i32, i32)> {
-        c.walk.iter().map(|&i| (r.pixel(i).x, r.pixel(i).y)).collect()
+        c.walk
+            .iter()
+            .map(|&i| (r.pixel(i).x, r.pixel(i).y))
+            .collect()
     }
 
     #[test]
@@ -112,7 +122,16 @@ mod tests {
         assert!(cs[0].outer);
         assert_eq!(
             pixels(&r, &cs[0]),
-            vec![(0, 0), (1, 0), (2, 0), (2, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
+            vec![
+                (0, 0),
+                (1, 0),
+                (2, 0),
+                (2, 1),
+                (2, 2),
+                (1, 2),
+                (0, 2),
+                (0, 1)
+            ]
         );
     }
 
@@ -135,7 +154,11 @@ mod tests {
         let walk = pixels(&r, &cs[0]);
         assert!(walk.contains(&(1, 1)));
         assert_eq!(walk.len(), 12);
-        let rep = check(&r, &CycleCover::tour(walk.iter().map(|&p| p.into()).collect()), Mode::Milling);
+        let rep = check(
+            &r,
+            &CycleCover::tour(walk.iter().map(|&p| p.into()).collect()),
+            Mode::Milling,
+        );
         assert!(rep.valid, "{:?}", rep.error);
     }
 

@@ -8,12 +8,17 @@
 //! # Candidate pairs
 //! With at most [`COMPLETE_LIMIT`] endpoints every reachable pair is a candidate: the matching
 //! is then the exact minimum over all perfect matchings, which is what Theorems 4.1 and 5.5
-//! need. Larger instances use, for each endpoint, every endpoint met by its 0-1 BFS up to the
-//! end of the first turn level at which [`NEAR`] others were found, plus the endpoint's
-//! partner (the other end of its strip or link), so that a perfect matching always exists.
-//! This restriction is our choice for speed (the paper matches on the complete graph); it can
-//! only miss pairs farther, in turns, than an endpoint's [`NEAR`] nearest, and the tests
-//! compare it with the complete graph on random instances.
+//! need (certificate `matching_complete = 1`).
+//!
+//! Larger instances are our choice for speed, and lose the proof of minimality: blossom is
+//! cubic, so one piece of 10⁴ endpoints already takes minutes. The endpoint pairs (an
+//! endpoint and its partner, the other end of its strip or link) are sorted along a Z-order
+//! curve of their pixels and cut into tiles of [`TILE`] endpoints; each tile is matched on
+//! its own, with, for each endpoint, the endpoints of its tile met by its 0-1 BFS up to the end
+//! of the first turn level at which [`NEAR`] of them were found (at most [`MAX_TURNS`] turns),
+//! plus its partner, so that a perfect matching always exists. It misses pairs across tiles
+//! and pairs farther than an endpoint's nearest; the tests measure the loss against the
+//! complete graph.
 
 use crate::algorithms::turn_distance::{Port, TurnSearch, bit};
 use crate::error::{Error, Result};
@@ -27,6 +32,43 @@ pub const COMPLETE_LIMIT: usize = 600;
 
 /// Larger instances keep, per endpoint, at least this many nearest endpoints (in turns).
 pub const NEAR: usize = 12;
+
+/// Larger instances are matched in tiles of about this many endpoints.
+pub const TILE: usize = 1000;
+
+/// Larger instances look for candidates at most this many turns away.
+pub const MAX_TURNS: u32 = 6;
+
+/// Interleaves the bits of two 32-bit coordinates (a Z-order key).
+fn z_order(x: u32, y: u32) -> u64 {
+    let spread = |v: u32| {
+        let mut v = u64::from(v);
+        v = (v | (v << 16)) & 0x0000_ffff_0000_ffff;
+        v = (v | (v << 8)) & 0x00ff_00ff_00ff_00ff;
+        v = (v | (v << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
+        v = (v | (v << 2)) & 0x3333_3333_3333_3333;
+        (v | (v << 1)) & 0x5555_5555_5555_5555
+    };
+    spread(x) | (spread(y) << 1)
+}
+
+/// The tile of every endpoint: pairs (i, partner\[i\]) in Z-order, cut every [`TILE`] endpoints.
+fn tiles(region: &Region, ports: &[Port], partner: &[usize]) -> Vec<u32> {
+    let b = region.bbox();
+    let key = |i: usize| {
+        let p = region.pixel(ports[i].pixel.min(ports[partner[i]].pixel));
+        z_order((p.x - b.min_x) as u32, (p.y - b.min_y) as u32)
+    };
+    let mut pairs: Vec<usize> = (0..ports.len()).filter(|&i| i < partner[i]).collect();
+    pairs.sort_by_key(|&i| (key(i), i));
+    let mut tile = vec![0u32; ports.len()];
+    for (k, &i) in pairs.iter().enumerate() {
+        let t = (2 * k / TILE) as u32;
+        tile[i] = t;
+        tile[partner[i]] = t;
+    }
+    tile
+}
 
 /// A perfect matching of endpoints.
 #[derive(Clone, Debug)]
@@ -45,19 +87,32 @@ pub struct PortMatching {
 /// A minimum-weight perfect matching of `ports` under the turn distance.
 ///
 /// `partner[i]` is an endpoint that `i` can always be matched to (the other end of its strip
-/// or link; `partner` is an involution without fixed points).
+/// or link; `partner` is an involution without fixed points). `floor[i]` is a least weight for
+/// the pair (i, partner\[i\]): a one-pixel strip or link matched to itself closes a walk that
+/// never moves, which the turn distance prices below the 4 turns such a walk counts.
 ///
 /// # Complexity
 /// Candidate search: O(P · N) for P ≤ [`COMPLETE_LIMIT`] endpoints, otherwise O(P · A) where
 /// A is the area a BFS explores before meeting [`NEAR`] endpoints. Matching: O(P³) worst case
 /// per connected piece of the candidate graph.
-pub fn match_ports(region: &Region, ports: &[Port], partner: &[usize]) -> Result<PortMatching> {
+pub fn match_ports(
+    region: &Region,
+    ports: &[Port],
+    partner: &[usize],
+    floor: &[u32],
+) -> Result<PortMatching> {
     let p = ports.len();
     let complete = p <= COMPLETE_LIMIT;
     let mut at_pixel: HashMap<usize, Vec<usize>> = HashMap::new();
     for (i, port) in ports.iter().enumerate() {
         at_pixel.entry(port.pixel).or_default().push(i);
     }
+    let tile = if complete {
+        vec![0; p]
+    } else {
+        tiles(region, ports, partner)
+    };
+    let max_turns = if complete { u32::MAX } else { MAX_TURNS };
     let mut edges: HashMap<(usize, usize), u32> = HashMap::new();
     let mut search = TurnSearch::new(region);
     for (i, &port) in ports.iter().enumerate() {
@@ -67,10 +122,10 @@ pub fn match_ports(region: &Region, ports: &[Port], partner: &[usize]) -> Result
             let e = edges.entry(key).or_insert(d);
             *e = (*e).min(d);
         };
-        search.run(region, port, u32::MAX, |pixel, heading, d| {
+        search.run(region, port, max_turns, |pixel, heading, d| {
             if let Some(here) = at_pixel.get(&pixel) {
                 for &j in here {
-                    if j != i && ports[j].arrive() & bit(heading) != 0 {
+                    if j != i && tile[j] == tile[i] && ports[j].arrive() & bit(heading) != 0 {
                         add(j, d, &mut edges);
                         found += 1;
                     }
@@ -79,12 +134,21 @@ pub fn match_ports(region: &Region, ports: &[Port], partner: &[usize]) -> Result
             !complete && found >= NEAR
         });
         let j = partner[i];
-        let d = search.distance_to(ports[j]).ok_or_else(|| {
+        let target = ports[j];
+        if search.distance_to(target).is_none() {
+            // Beyond where the search stopped: search again for the partner alone.
+            search.run(region, port, u32::MAX, |p, h, _| {
+                p == target.pixel && target.arrive() & bit(h) != 0
+            });
+        }
+        let d = search.distance_to(target).ok_or_else(|| {
             Error::invalid(format!(
                 "endpoint {i} cannot reach its partner {j}: the region is not connected there"
             ))
         })?;
         add(j, d, &mut edges);
+        let e = edges.get_mut(&(i.min(j), i.max(j))).expect("just added");
+        *e = (*e).max(floor[i]);
     }
     let edges: Vec<(usize, usize, u32)> = edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
     let mate = min_weight_perfect_matching(p, &edges)

@@ -18,7 +18,9 @@ pub struct GridMultigraph {
 impl GridMultigraph {
     /// The empty multigraph on `n` pixels.
     pub fn new(n: usize) -> Self {
-        GridMultigraph { mult: vec![[0; 4]; n] }
+        GridMultigraph {
+            mult: vec![[0; 4]; n],
+        }
     }
 
     /// Copies of the edge from `i` in direction `d`.
@@ -44,19 +46,28 @@ impl GridMultigraph {
 
     /// Adds the edge between two adjacent pixels, looked up in `region`.
     pub fn add_between(&mut self, region: &Region, a: usize, b: usize) {
-        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        let d = region
+            .pixel(a)
+            .dir_to(region.pixel(b))
+            .expect("pixels are 4-adjacent");
         self.add(a, b, d);
     }
 
     /// Removes one copy of the edge between two adjacent pixels; false if there is none.
     pub fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
-        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        let d = region
+            .pixel(a)
+            .dir_to(region.pixel(b))
+            .expect("pixels are 4-adjacent");
         self.remove(a, b, d)
     }
 
     /// Whether the edge between two adjacent pixels has at least one copy.
     pub fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
-        let d = region.pixel(a).dir_to(region.pixel(b)).expect("pixels are 4-adjacent");
+        let d = region
+            .pixel(a)
+            .dir_to(region.pixel(b))
+            .expect("pixels are 4-adjacent");
         self.count(a, d) > 0
     }
 
@@ -99,7 +110,9 @@ impl GridMultigraph {
         while let Some(&v) = stack.last() {
             match Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0) {
                 Some(d) => {
-                    let w = region.neighbor(v, d).expect("edges join pixels of the region");
+                    let w = region
+                        .neighbor(v, d)
+                        .expect("edges join pixels of the region");
                     self.remove(v, w, d);
                     stack.push(w);
                 }
@@ -117,7 +130,10 @@ impl GridMultigraph {
 
     /// The Euler circuit as a walk of pixels; a single pixel when there are no edges.
     pub fn into_walk(mut self, region: &Region, start: usize) -> Walk {
-        self.euler_circuit(region, start).into_iter().map(|i| region.pixel(i)).collect::<Vec<Pixel>>()
+        self.euler_circuit(region, start)
+            .into_iter()
+            .map(|i| region.pixel(i))
+            .collect::<Vec<Pixel>>()
     }
 }
 

@@ -54,7 +54,10 @@ struct Points {
 
 impl Points {
     fn new(region: &Region, cutter: Cutter) -> Points {
-        Points { cutter, pts: required_cells(region, cutter) }
+        Points {
+            cutter,
+            pts: required_cells(region, cutter),
+        }
     }
 
     fn len(&self) -> usize {
@@ -85,7 +88,9 @@ impl Points {
     }
 
     fn tour_length(&self, tour: &[usize]) -> f64 {
-        (0..tour.len()).map(|k| self.dist(tour[k], tour[(k + 1) % tour.len()])).sum()
+        (0..tour.len())
+            .map(|k| self.dist(tour[k], tour[(k + 1) % tour.len()]))
+            .sum()
     }
 }
 
@@ -117,16 +122,26 @@ impl Buckets {
 
     /// The nearest point j with `accept(j)`, by (key, j): a search over rings of buckets,
     /// stopping when a ring is farther than the best point found.
-    fn nearest(&self, p: &Points, i: usize, accept: impl Fn(usize) -> bool) -> Option<(u64, usize)> {
+    fn nearest(
+        &self,
+        p: &Points,
+        i: usize,
+        accept: impl Fn(usize) -> bool,
+    ) -> Option<(u64, usize)> {
         if self.map.is_empty() {
             return None;
         }
         let (cx, cy) = Self::cell(p, i, self.size);
-        let reach = [self.hi.0 - cx, cx - self.lo.0, self.hi.1 - cy, cy - self.lo.1]
-            .into_iter()
-            .map(i64::abs)
-            .max()
-            .unwrap_or(0);
+        let reach = [
+            self.hi.0 - cx,
+            cx - self.lo.0,
+            self.hi.1 - cy,
+            cy - self.lo.1,
+        ]
+        .into_iter()
+        .map(i64::abs)
+        .max()
+        .unwrap_or(0);
         let mut best: Option<(u64, usize)> = None;
         for ring in 0..=reach {
             // Points in ring r are at least (r - 1) * size away (in L2, hence in L1).
@@ -134,7 +149,11 @@ impl Buckets {
                 break;
             }
             for bx in cx - ring..=cx + ring {
-                let step = if (bx - cx).abs() == ring { 1 } else { (2 * ring).max(1) };
+                let step = if (bx - cx).abs() == ring {
+                    1
+                } else {
+                    (2 * ring).max(1)
+                };
                 let mut by = cy - ring;
                 while by <= cy + ring {
                     if let Some(list) = self.map.get(&(bx, by)) {
@@ -153,6 +172,154 @@ impl Buckets {
             }
         }
         best
+    }
+}
+
+/// A static k-d tree over a subset of the points, for nearest *foreign* neighbours: every
+/// node knows whether all its points lie in one component, so whole subtrees of the query's
+/// own component are skipped.
+struct KdTree {
+    /// Point ids, permuted so that every node owns a contiguous range.
+    ids: Vec<u32>,
+    nodes: Vec<KdNode>,
+    xy: Vec<(f64, f64)>,
+}
+
+#[derive(Clone, Copy)]
+struct KdNode {
+    lo: usize,
+    hi: usize,
+    min: (f64, f64),
+    max: (f64, f64),
+    /// The component of all points below, or `u32::MAX` when mixed.
+    comp: u32,
+    children: Option<(usize, usize)>,
+}
+
+impl KdTree {
+    const LEAF: usize = 8;
+
+    fn new(p: &Points, ids: Vec<usize>) -> KdTree {
+        let xy: Vec<(f64, f64)> = p.pts.iter().map(|&q| centre(p.cutter, q)).collect();
+        let mut t = KdTree {
+            ids: ids.into_iter().map(|i| i as u32).collect(),
+            nodes: Vec::new(),
+            xy,
+        };
+        if !t.ids.is_empty() {
+            t.build(0, t.ids.len(), 0);
+        }
+        t
+    }
+
+    fn build(&mut self, lo: usize, hi: usize, depth: usize) -> usize {
+        let (mut min, mut max) = (
+            (f64::INFINITY, f64::INFINITY),
+            (f64::NEG_INFINITY, f64::NEG_INFINITY),
+        );
+        for &i in &self.ids[lo..hi] {
+            let (x, y) = self.xy[i as usize];
+            min = (min.0.min(x), min.1.min(y));
+            max = (max.0.max(x), max.1.max(y));
+        }
+        let at = self.nodes.len();
+        self.nodes.push(KdNode {
+            lo,
+            hi,
+            min,
+            max,
+            comp: u32::MAX,
+            children: None,
+        });
+        if hi - lo > Self::LEAF {
+            let mid = (lo + hi) / 2;
+            let xy = &self.xy;
+            let by_x = (max.0 - min.0) >= (max.1 - min.1) || depth > 64;
+            self.ids[lo..hi].select_nth_unstable_by(mid - lo, |&a, &b| {
+                let (pa, pb) = (xy[a as usize], xy[b as usize]);
+                let (ka, kb) = if by_x { (pa.0, pb.0) } else { (pa.1, pb.1) };
+                ka.total_cmp(&kb)
+            });
+            let l = self.build(lo, mid, depth + 1);
+            let r = self.build(mid, hi, depth + 1);
+            self.nodes[at].children = Some((l, r));
+        }
+        at
+    }
+
+    /// Recomputes every node's component from `root` labels (bottom-up, children first).
+    fn label(&mut self, root: &[usize]) {
+        for k in (0..self.nodes.len()).rev() {
+            let node = self.nodes[k];
+            self.nodes[k].comp = match node.children {
+                Some((l, r)) if self.nodes[l].comp == self.nodes[r].comp => self.nodes[l].comp,
+                Some(_) => u32::MAX,
+                None => {
+                    let first = root[self.ids[node.lo] as usize] as u32;
+                    if self.ids[node.lo..node.hi]
+                        .iter()
+                        .all(|&i| root[i as usize] as u32 == first)
+                    {
+                        first
+                    } else {
+                        u32::MAX
+                    }
+                }
+            };
+        }
+    }
+
+    /// Nearest point (by (key, id)) to point `i` in a component other than `own`.
+    fn nearest_foreign(
+        &self,
+        p: &Points,
+        root: &[usize],
+        i: usize,
+        own: usize,
+    ) -> Option<(u64, usize)> {
+        let mut best: Option<(u64, usize, f64)> = None;
+        let mut stack = vec![0usize];
+        let q = self.xy[i];
+        while let Some(k) = stack.pop() {
+            let node = &self.nodes[k];
+            if node.comp == own as u32 {
+                continue;
+            }
+            // Lower bound on the distance from q to the node's box (L2 ≤ L1, so L2 bounds both).
+            let dx = (node.min.0 - q.0).max(0.0).max(q.0 - node.max.0);
+            let dy = (node.min.1 - q.1).max(0.0).max(q.1 - node.max.1);
+            let bound = (dx * dx + dy * dy).sqrt();
+            if best.is_some_and(|b| bound > b.2 + 1e-9) {
+                continue;
+            }
+            match node.children {
+                Some((l, r)) => {
+                    // Visit the nearer child first (pushed last).
+                    let centre_of = |n: &KdNode| {
+                        ((n.min.0 + n.max.0) / 2.0 - q.0).abs()
+                            + ((n.min.1 + n.max.1) / 2.0 - q.1).abs()
+                    };
+                    if centre_of(&self.nodes[l]) < centre_of(&self.nodes[r]) {
+                        stack.extend([r, l]);
+                    } else {
+                        stack.extend([l, r]);
+                    }
+                }
+                None => {
+                    for &j in &self.ids[node.lo..node.hi] {
+                        let j = j as usize;
+                        if root[j] == own {
+                            continue;
+                        }
+                        let cand = (p.key(i, j), j);
+                        if best.is_none_or(|b| cand < (b.0, b.1)) {
+                            best = Some((cand.0, cand.1, p.dist(i, j)));
+                        }
+                    }
+                }
+            }
+        }
+        best.map(|(k, j, _)| (k, j))
     }
 }
 
@@ -211,17 +378,11 @@ fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
             })
             .collect();
         let root: Vec<usize> = (0..n).map(|i| uf.find(i)).collect();
-        let spread = border.len().max(1) as f64;
-        let size = {
-            let b = crate::region::Region::from_pixels(border.iter().map(|&i| p.pts[i]))
-                .map(|r| (r.bbox().width() * r.bbox().height()) as f64)
-                .unwrap_or(1.0);
-            (b / spread).sqrt().clamp(2.0, 64.0)
-        };
-        let buckets = Buckets::new(p, border.iter().copied(), size);
+        let mut tree = KdTree::new(p, border.clone());
+        tree.label(&root);
         let mut best: HashMap<usize, (u64, usize, usize)> = HashMap::new();
         for &i in &border {
-            if let Some((k, j)) = buckets.nearest(p, i, |j| root[j] != root[i]) {
+            if let Some((k, j)) = tree.nearest_foreign(p, &root, i, root[i]) {
                 let cand = (k, i.min(j), i.max(j));
                 let e = best.entry(root[i]).or_insert(cand);
                 if cand < *e {
@@ -275,7 +436,8 @@ fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, f64) {
         deg[b] += 1;
     }
     let odd: Vec<usize> = (0..n).filter(|&i| deg[i] % 2 == 1).collect();
-    let mut graph = petgraph::graph::UnGraph::<(), i128>::with_capacity(odd.len(), odd.len() * odd.len() / 2);
+    let mut graph =
+        petgraph::graph::UnGraph::<(), i128>::with_capacity(odd.len(), odd.len() * odd.len() / 2);
     for _ in &odd {
         graph.add_node(());
     }
@@ -300,7 +462,9 @@ fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, f64) {
         rustworkx_core::max_weight_matching::max_weight_matching(
             &graph,
             true,
-            |e: petgraph::graph::EdgeReference<i128>| Ok::<i128, std::convert::Infallible>(*e.weight()),
+            |e: petgraph::graph::EdgeReference<i128>| {
+                Ok::<i128, std::convert::Infallible>(*e.weight())
+            },
             false,
         )
         .map(|set| set.into_iter().map(|(x, y)| (x.min(y), x.max(y))).collect())
@@ -342,7 +506,10 @@ fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
         }
     }
     let mut seen = vec![false; n];
-    circuit.into_iter().filter(|&v| !std::mem::replace(&mut seen[v], true)).collect()
+    circuit
+        .into_iter()
+        .filter(|&v| !std::mem::replace(&mut seen[v], true))
+        .collect()
 }
 
 /// 2-opt and Or-opt (segments of 1 to 3 points) on the 8 nearest neighbours of each point,
@@ -433,9 +600,11 @@ fn two_opt(p: &Points, mut tour: Vec<usize>) -> Vec<usize> {
                     if reversed {
                         segment.reverse();
                     }
-                    let rest: Vec<usize> =
-                        (0..n - seg).map(|k| tour[(i + seg + k) % n]).collect();
-                    let at = rest.iter().position(|&v| v == c).expect("c is outside the segment");
+                    let rest: Vec<usize> = (0..n - seg).map(|k| tour[(i + seg + k) % n]).collect();
+                    let at = rest
+                        .iter()
+                        .position(|&v| v == c)
+                        .expect("c is outside the segment");
                     let mut t = Vec::with_capacity(n);
                     t.extend_from_slice(&rest[..=at]);
                     t.extend_from_slice(&segment);
@@ -508,7 +677,10 @@ fn box_tour(region: &Region) -> Result<Walk> {
         k += 1;
     }
     let walk = g.into_walk(&rect, 0);
-    Ok(walk.into_iter().map(|q| Pixel::new(q.x + b.min_x, q.y + b.min_y)).collect())
+    Ok(walk
+        .into_iter()
+        .map(|q| Pixel::new(q.x + b.min_x, q.y + b.min_y))
+        .collect())
 }
 
 /// Turns a tour of S into the output walk: staircases of unit moves for rectilinear motion,
@@ -552,12 +724,23 @@ fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
 
 fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> Solution {
     let mut s = Solution::default();
-    s.outputs.push(Output { objective: Objective::LawnLength, cover: CycleCover::tour(output_walk(p, tour)) });
+    s.outputs.push(Output {
+        objective: Objective::LawnLength,
+        cover: CycleCover::tour(output_walk(p, tour)),
+    });
     s.certificates.insert("points".into(), p.len() as i64);
-    s.certificates.insert("area_lower_bound".into(), area_lower_bound(region, p.cutter));
+    s.certificates.insert(
+        "area_lower_bound".into(),
+        area_lower_bound(region, p.cutter),
+    );
     if let Some(w) = mst {
-        let scale = if p.cutter == Cutter::Square { 1.0 } else { 1000.0 };
-        s.certificates.insert("mst_weight".into(), (w * scale).floor() as i64);
+        let scale = if p.cutter == Cutter::Square {
+            1.0
+        } else {
+            1000.0
+        };
+        s.certificates
+            .insert("mst_weight".into(), (w * scale).floor() as i64);
     }
     s
 }
@@ -590,8 +773,13 @@ pub fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
     let mst = minimum_spanning_tree(&p);
     let (tour, matched) = christofides(&p, &mst);
     let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
-    let scale = if p.cutter == Cutter::Square { 1.0 } else { 1000.0 };
-    s.certificates.insert("matching_weight".into(), (matched * scale).floor() as i64);
+    let scale = if p.cutter == Cutter::Square {
+        1.0
+    } else {
+        1000.0
+    };
+    s.certificates
+        .insert("matching_weight".into(), (matched * scale).floor() as i64);
     Ok(s)
 }
 
@@ -627,18 +815,28 @@ pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     let mst = minimum_spanning_tree(&p);
     let (tour, _) = christofides(&p, &mst);
     let boxed = box_tour(region)?;
-    let box_len: f64 = (0..boxed.len()).map(|k| distance(p.cutter, boxed[k], boxed[(k + 1) % boxed.len()])).sum();
+    let box_len: f64 = (0..boxed.len())
+        .map(|k| distance(p.cutter, boxed[k], boxed[(k + 1) % boxed.len()]))
+        .sum();
     let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
     let chose_box = box_len < p.tour_length(&tour) - 1e-9;
     if chose_box {
         s.outputs[0].cover = CycleCover::tour(boxed);
     }
-    s.certificates.insert("chose_box".into(), i64::from(chose_box));
+    s.certificates
+        .insert("chose_box".into(), i64::from(chose_box));
     Ok(s)
 }
 
 const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guarantee {
-    Guarantee { objective: Objective::LawnLength, num, den, add, against: Against::Opt, source }
+    Guarantee {
+        objective: Objective::LawnLength,
+        num,
+        den,
+        add,
+        against: Against::Opt,
+        source,
+    }
 }
 
 /// Registry entries.
@@ -646,7 +844,12 @@ pub const LAWN_MST: Algorithm = Algorithm {
     name: "lawn-mst",
     summary: "lawn mowing: doubled MST of the cell centres, shortcut (Theorems 2-3, alpha = 2)",
     objectives: &[Objective::LawnLength],
-    guarantees: &[rectilinear(6, 1, 12, "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear")],
+    guarantees: &[rectilinear(
+        6,
+        1,
+        12,
+        "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear",
+    )],
     precondition,
     run: lawn_mst,
 };
@@ -655,7 +858,12 @@ pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     name: "lawn-christofides",
     summary: "lawn mowing: Christofides on the cell centres (Theorems 2-3, alpha = 3/2)",
     objectives: &[Objective::LawnLength],
-    guarantees: &[rectilinear(9, 2, 18, "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear")],
+    guarantees: &[rectilinear(
+        9,
+        2,
+        18,
+        "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear",
+    )],
     precondition,
     run: lawn_christofides,
 };
@@ -664,7 +872,12 @@ pub const LAWN_TWO_OPT: Algorithm = Algorithm {
     name: "lawn-2opt",
     summary: "lawn mowing: 2-opt/Or-opt from the better of the MST and Christofides tours",
     objectives: &[Objective::LawnLength],
-    guarantees: &[rectilinear(6, 1, 12, "Theorem 2 of Lawn mowing and milling (its start), square, rectilinear")],
+    guarantees: &[rectilinear(
+        6,
+        1,
+        12,
+        "Theorem 2 of Lawn mowing and milling (its start), square, rectilinear",
+    )],
     precondition,
     run: lawn_two_opt,
 };
@@ -673,7 +886,12 @@ pub const LAWN_BOX: Algorithm = Algorithm {
     name: "lawn-box",
     summary: "lawn mowing: shorter of the bounding-box rings (Fig. 9) and Christofides",
     objectives: &[Objective::LawnLength],
-    guarantees: &[rectilinear(24, 5, 0, "Section 4 of Lawn mowing and milling (3 alpha + 3/10), square, rectilinear")],
+    guarantees: &[rectilinear(
+        24,
+        5,
+        0,
+        "Section 4 of Lawn mowing and milling (3 alpha + 3/10), square, rectilinear",
+    )],
     precondition,
     run: lawn_box,
 };

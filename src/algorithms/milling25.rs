@@ -40,7 +40,9 @@ pub fn precondition(region: &Region) -> Result<()> {
         return Err(Error::Invalid("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid("milling25 needs a connected region (one grid component)".into()));
+        return Err(Error::Invalid(
+            "milling25 needs a connected region (one grid component)".into(),
+        ));
     }
     Ok(())
 }
@@ -135,7 +137,10 @@ pub fn milling25(region: &Region) -> Result<Solution> {
 
     let walk = graph.into_walk(region, contours[0].walk[0]);
     let mut solution = Solution::default();
-    solution.outputs.push(Output { objective: super::Objective::Length, cover: CycleCover::tour(walk) });
+    solution.outputs.push(Output {
+        objective: super::Objective::Length,
+        cover: CycleCover::tour(walk),
+    });
     let cert = &mut solution.certificates;
     cert.insert("l_db".into(), l_db as i64);
     cert.insert("l_str".into(), l_str as i64);
@@ -163,7 +168,8 @@ fn strip_lines(region: &Region, on_contour: &[bool]) -> Result<Vec<StripLine>> {
             continue;
         }
         // A pixel off every contour has all eight neighbours in the region.
-        let from = west.ok_or_else(|| Error::Invalid("a non-contour pixel lies on the boundary".into()))?;
+        let from =
+            west.ok_or_else(|| Error::Invalid("a non-contour pixel lies on the boundary".into()))?;
         let mut k = i;
         let mut pixels = 1;
         loop {
@@ -171,7 +177,11 @@ fn strip_lines(region: &Region, on_contour: &[bool]) -> Result<Vec<StripLine>> {
                 .neighbor(k, Dir::E)
                 .ok_or_else(|| Error::Invalid("a non-contour pixel lies on the boundary".into()))?;
             if on_contour[e] {
-                out.push(StripLine { from, to: e, pixels });
+                out.push(StripLine {
+                    from,
+                    to: e,
+                    pixels,
+                });
                 break;
             }
             k = e;
@@ -186,7 +196,9 @@ fn row_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
     let mut path = vec![a];
     let mut k = a;
     while k != b {
-        k = region.neighbor(k, Dir::E).expect("strip lines run inside the region");
+        k = region
+            .neighbor(k, Dir::E)
+            .expect("strip lines run inside the region");
         path.push(k);
     }
     path

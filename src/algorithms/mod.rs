@@ -18,6 +18,7 @@ use std::fmt;
 
 pub mod contour;
 pub mod euler;
+pub mod holes1325;
 pub mod lawn;
 pub mod milling25;
 pub mod tsp65;
@@ -29,6 +30,7 @@ pub mod star_cover;
 pub mod strips_double;
 pub mod strips_matching;
 pub mod thin;
+pub mod thin_euler;
 pub mod turn_distance;
 
 /// What a result is measured by.
@@ -213,6 +215,7 @@ impl fmt::Debug for Algorithm {
 pub static REGISTRY: &[Algorithm] = &[
     milling25::ALGORITHM,
     tsp65::ALGORITHM,
+    holes1325::ALGORITHM,
     lawn::LAWN_MST,
     lawn::LAWN_CHRISTOFIDES,
     lawn::LAWN_TWO_OPT,
@@ -224,6 +227,7 @@ pub static REGISTRY: &[Algorithm] = &[
     boundary_cc::ALGORITHM,
     thin::ALGORITHM_CC,
     thin::ALGORITHM_MERGE,
+    thin_euler::ALGORITHM,
 ];
 
 /// The registered algorithm called `name`.

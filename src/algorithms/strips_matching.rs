@@ -108,7 +108,9 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
     let cover = strip_cover(region);
     let (links, ports) = strip_ports(region, &cover.strips);
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
-    let matching = match_ports(region, &ports, &partner)?;
+    // A one-pixel strip closed on itself is a still walk of 4 turns: 2 for the strip, 2 here.
+    let floor: Vec<u32> = (0..ports.len()).map(|i| if links[i / 2].0 == links[i / 2].1 { 2 } else { 0 }).collect();
+    let matching = match_ports(region, &ports, &partner, &floor)?;
     let cc = join_links(region, &links, &ports, &matching)?;
     Ok(StripMatchingCover {
         cover: cc,

@@ -58,7 +58,9 @@ pub fn precondition(region: &Region) -> Result<()> {
         return Err(Error::Invalid("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid("tsp65 needs a connected region (one grid component)".into()));
+        return Err(Error::Invalid(
+            "tsp65 needs a connected region (one grid component)".into(),
+        ));
     }
     let h = topology::holes(region).count;
     if h > 0 {
@@ -149,7 +151,9 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
             bottlenecks += b.0;
             pieces += b.1;
             for i in 0..sub.len() {
-                let g = region.index_of(sub.pixel(i)).expect("block pixels are region pixels");
+                let g = region
+                    .index_of(sub.pixel(i))
+                    .expect("block pixels are region pixels");
                 for d in [Dir::E, Dir::N] {
                     for _ in 0..sub_graph.count(i, d) {
                         let h = region.neighbor(g, d).expect("block edges are region edges");
@@ -160,7 +164,10 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
         }
     }
     let walk = graph.into_walk(region, 0);
-    solution.outputs.push(Output { objective: Objective::Length, cover: CycleCover::tour(walk) });
+    solution.outputs.push(Output {
+        objective: Objective::Length,
+        cover: CycleCover::tour(walk),
+    });
     let cert = &mut solution.certificates;
     stats.certify(cert);
     cert.insert("blocks".into(), blocks.len() as i64);
@@ -175,10 +182,16 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
 
 /// The construction of Theorem 5 on a 2-connected simple region with at least 3 pixels:
 /// adds the tour's edges to `graph` (indexed like `region`). Returns (bottlenecks, pieces).
-fn block_tour(region: &Region, graph: &mut GridMultigraph, stats: &mut LinkStats) -> Result<(i64, i64)> {
+fn block_tour(
+    region: &Region,
+    graph: &mut GridMultigraph,
+    stats: &mut LinkStats,
+) -> Result<(i64, i64)> {
     let contours = contour_walks(region);
     if contours.len() != 1 {
-        return Err(Error::Invalid("tsp65: a block of the region has holes".into()));
+        return Err(Error::Invalid(
+            "tsp65: a block of the region has holes".into(),
+        ));
     }
     let c = &contours[0].walk;
     let n = region.len();
@@ -236,7 +249,9 @@ fn block_tour(region: &Region, graph: &mut GridMultigraph, stats: &mut LinkStats
         let mut s = LinkStats::default();
         *w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
     }
-    let parity: Vec<i32> = (0..piece_count).map(|k| i32::from(waste[1][k] < waste[0][k])).collect();
+    let parity: Vec<i32> = (0..piece_count)
+        .map(|k| i32::from(waste[1][k] < waste[0][k]))
+        .collect();
     let mut g = base;
     let mut s = LinkStats::default();
     link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
@@ -306,7 +321,14 @@ pub(super) fn link_internal_nodes(
     parity: &[i32],
     stats: &mut LinkStats,
 ) -> Vec<i64> {
-    let mut linker = Linker { region, graph, unvisited: internal.to_vec(), piece, parity, stats };
+    let mut linker = Linker {
+        region,
+        graph,
+        unvisited: internal.to_vec(),
+        piece,
+        parity,
+        stats,
+    };
     linker.free_detours();
     let mut waste = vec![0i64; parity.len()];
     linker.remaining_components(&mut waste);
@@ -458,7 +480,8 @@ impl Linker<'_> {
 
     /// Whether pixel (x, y) belongs to the piece of `a` (so it uses the same doublerows).
     fn piece_matches(&self, a: usize, x: i32, y: i32) -> bool {
-        self.at(x, y).is_some_and(|b| self.piece[b] == self.piece[a])
+        self.at(x, y)
+            .is_some_and(|b| self.piece[b] == self.piece[a])
     }
 
     /// Step 5: the components left in each doublerow, by the cases of Fig. 15.
@@ -500,8 +523,10 @@ impl Linker<'_> {
 
     /// Adds a closed walk (pixel coordinates) to the graph.
     fn add_cycle(&mut self, cycle: &[(i32, i32)]) {
-        let idx: Vec<usize> =
-            cycle.iter().map(|&(x, y)| self.at(x, y).expect("cycle pixels are region pixels")).collect();
+        let idx: Vec<usize> = cycle
+            .iter()
+            .map(|&(x, y)| self.at(x, y).expect("cycle pixels are region pixels"))
+            .collect();
         self.graph.add_closed_walk(self.region, &idx);
     }
 
@@ -547,7 +572,11 @@ impl Linker<'_> {
             return self.link_unexpected(comp);
         }
         let row = |x0: i32, x1: i32, y: i32| -> Vec<(i32, i32)> {
-            if x0 <= x1 { (x0..=x1).map(|x| (x, y)).collect() } else { (x1..=x0).rev().map(|x| (x, y)).collect() }
+            if x0 <= x1 {
+                (x0..=x1).map(|x| (x, y)).collect()
+            } else {
+                (x1..=x0).rev().map(|x| (x, y)).collect()
+            }
         };
         match (left, right) {
             (None, None) => {
@@ -606,13 +635,21 @@ impl Linker<'_> {
             .copied()
             .find(|&v| self.region.neighbors(v).any(|w| !inside.contains(&w)))
             .expect("a component has a neighbour outside it");
-        let anchor = self.region.neighbors(root).find(|w| !inside.contains(w)).expect("found above");
+        let anchor = self
+            .region
+            .neighbors(root)
+            .find(|w| !inside.contains(w))
+            .expect("found above");
         self.graph.add_between(self.region, anchor, root);
         self.graph.add_between(self.region, anchor, root);
         done.insert(root);
         let mut stack = vec![root];
         while let Some(v) = stack.pop() {
-            let next: Vec<usize> = self.region.neighbors(v).filter(|w| inside.contains(w)).collect();
+            let next: Vec<usize> = self
+                .region
+                .neighbors(v)
+                .filter(|w| inside.contains(w))
+                .collect();
             for w in next {
                 if done.insert(w) {
                     self.graph.add_between(self.region, v, w);
@@ -648,7 +685,9 @@ pub(super) fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
             let (v, parent, d) = *frame;
             if d < 4 {
                 frame.2 += 1;
-                let Some(w) = region.neighbor(v, Dir::from_index(d)) else { continue };
+                let Some(w) = region.neighbor(v, Dir::from_index(d)) else {
+                    continue;
+                };
                 if disc[w] == u32::MAX {
                     disc[w] = time;
                     low[w] = time;

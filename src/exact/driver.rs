@@ -40,6 +40,9 @@ pub(crate) trait CutModel {
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         None
     }
+    fn describe(&self, j: usize) -> String {
+        format!("col {j}")
+    }
 }
 
 /// Why the driver stopped.
@@ -152,6 +155,14 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 self.s.lp_bound = Some(self.s.lp_bound.map_or(b, |old| old.max(b)));
                 self.raise(b, "lp relaxation with cuts");
             }
+            if std::env::var("MOWMILL_DUMP").is_ok() {
+                eprintln!("LP {:.4}", sol.objective);
+                for (j, v) in sol.x.iter().enumerate() {
+                    if *v > 1e-7 {
+                        eprintln!("  {} = {v:.3}", self.model.describe(j));
+                    }
+                }
+            }
             let cuts = self.model.separate(&sol.x, false);
             let objective = sol.objective;
             self.last_lp = Some(sol);
@@ -181,6 +192,9 @@ impl<'m, M: CutModel> Loop<'m, M> {
     /// A quick MIP with the model's heuristic caps, for an incumbent.
     fn heuristic_phase(&mut self) {
         let Some(caps) = self.model.heuristic_caps() else { return };
+        if std::env::var("MOWMILL_NOHEUR").is_ok() {
+            return;
+        }
         let mut g = self.restricted();
         for (h, c) in g.hi.iter_mut().zip(&caps) {
             *h = h.min(*c);
@@ -188,7 +202,8 @@ impl<'m, M: CutModel> Loop<'m, M> {
         for j in 0..g.num_cols() {
             g.lo[j] = g.lo[j].min(g.hi[j]);
         }
-        let budget = self.deadline.remaining().map_or(30.0, |r| r * 0.25);
+        let frac: f64 = std::env::var("MOWMILL_HFRAC").ok().and_then(|v| v.parse().ok()).unwrap_or(0.25);
+        let budget = self.deadline.remaining().map_or(30.0, |r| r * frac);
         let cap = Deadline::new(Some(budget));
         let start = self.s.best.clone().filter(|x| g.is_feasible(x, &self.pool));
         let mip = solve_mip(&g, &self.pool, start.as_deref(), &cap, self.settings);

@@ -489,6 +489,11 @@ impl CutModel for PassageModel<'_> {
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         Some(vec![2.0; self.vars.len()])
     }
+    fn describe(&self, j: usize) -> String {
+        let p = self.vars[j];
+        let n = ["E", "N", "W", "S"];
+        format!("{} {}{}", self.region.pixel(p.pixel), n[p.a as usize], n[p.b as usize])
+    }
 }
 
 impl PassageModel<'_> {

@@ -207,7 +207,7 @@ impl Config {
             let at = format!("exact[{i}]");
             e.objective.parse::<crate::exact::Objective>().map_err(|err| format!("{at}.objective: {err}"))?;
             crate::exact::Objective::parse(&e.objective, e.turn_cost).map_err(|err| format!("{at}.turn_cost: {err}"))?;
-            if !(e.time_limit > 0.0) {
+            if e.time_limit.is_nan() || e.time_limit <= 0.0 {
                 return Err(format!("{at}.time_limit: expected a positive number of seconds"));
             }
         }

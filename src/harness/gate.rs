@@ -126,6 +126,6 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
             }
         }
     }
-    report.findings.sort_by(|a, b| a.verdict.cmp(&b.verdict));
+    report.findings.sort_by_key(|f| f.verdict);
     Ok(report)
 }

@@ -6,7 +6,7 @@
 use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
-use std::io::{BufRead, BufReader, Write};
+use std::io::{BufReader, Write};
 use std::path::Path;
 
 /// The `algorithm` column of exact-solver rows.
@@ -152,7 +152,7 @@ pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
 /// Writes rows to a fresh `results.csv` in canonical order (instance, algorithm, objective),
 /// the order every run, resumed run and merge of shards ends with.
 pub fn write_sorted(path: &Path, rows: &mut [Row]) -> Result<()> {
-    rows.sort_by(|a, b| a.key().cmp(&b.key()));
+    rows.sort_by_key(Row::key);
     let tmp = path.with_extension("csv.tmp");
     {
         let mut w = csv::Writer::from_path(&tmp).map_err(|e| Error::invalid(format!("{}: {e}", tmp.display())))?;
@@ -162,9 +162,4 @@ pub fn write_sorted(path: &Path, rows: &mut [Row]) -> Result<()> {
         w.flush().map_err(|e| Error::io(&tmp, e))?;
     }
     std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e))
-}
-
-/// Number of lines of a file (for progress messages).
-pub fn count_lines(path: &Path) -> usize {
-    File::open(path).map(|f| BufReader::new(f).lines().count()).unwrap_or(0)
 }
