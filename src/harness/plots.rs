@@ -105,7 +105,8 @@ pub fn draw_all(out: &Path, rows: &[Row]) -> Result<()> {
     }
     for (objective, group) in &by_objective {
         let stem = dir.join(format!("ratio-dist_{}", file_safe(objective)));
-        render(&stem, (1000, 600), &RatioDist { objective, rows: group })?;
+        let groups = distribution_groups(group).1.len() as u32;
+        render(&stem, (1000, 140 + 30 * groups.max(3)), &RatioDist { objective, rows: group })?;
     }
     let exact: Vec<&Row> = ok.into_iter().filter(|r| r.algorithm == EXACT).collect();
     if !exact.is_empty() {
@@ -179,7 +180,8 @@ fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, obj
         Against::Opt => g.factor(),
         Against::N => (g.num as f64 * n + g.add as f64) / (g.den as f64 * n),
     });
-    let y_hi = pts.iter().map(|p| p.2).chain(g_at(max_n)).fold(1.0, f64::max) * 1.08;
+    // Head room above the guarantee line for the legend.
+    let y_hi = pts.iter().map(|p| p.2).chain(g_at(max_n)).fold(1.0, f64::max) * 1.25;
     let y_lo = pts.iter().map(|p| p.2).fold(1.0, f64::min).min(1.0) * 0.97;
     let mut chart = ChartBuilder::on(area)
         .caption(format!("{algo}: {}", kind.label(objective)), (FONT_FAMILY, 26))
@@ -190,6 +192,7 @@ fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, obj
         .map_err(plot_err)?;
     chart
         .configure_mesh()
+        .light_line_style(WHITE)
         .x_desc("N (pixels)")
         .y_desc(kind.label(objective))
         .label_style((FONT_FAMILY, 16))
@@ -229,81 +232,88 @@ fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, obj
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font((FONT_FAMILY, 15))
-        .position(SeriesLabelPosition::LowerRight)
+        .position(SeriesLabelPosition::UpperRight)
         .draw()
         .map_err(plot_err)
 }
 
-fn ratio_distribution<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, objective: &str, rows: &[&Row]) -> Result<()> {
+/// The groups of a distribution figure: (label, sorted ratios), and the ratio shown.
+fn distribution_groups(rows: &[&Row]) -> (Kind, Vec<(String, Vec<f64>)>) {
     let mut groups: BTreeMap<(String, String), Vec<&Row>> = BTreeMap::new();
     for r in rows {
         groups.entry((r.algorithm.clone(), r.family.clone())).or_default().push(r);
     }
-    // One ratio kind for the whole figure so boxes are comparable.
-    let all: Vec<&Row> = rows.to_vec();
-    let kind = if all.iter().all(|r| r.ratio_opt.is_some()) {
+    // One ratio kind for the whole figure so that boxes are comparable.
+    let kind = if rows.iter().all(|r| r.ratio_opt.is_some()) {
         Kind::Opt
-    } else if all.iter().all(|r| r.ratio_lb.is_some()) {
+    } else if rows.iter().all(|r| r.ratio_lb.is_some()) {
         Kind::Lb
     } else {
         Kind::N
     };
-    let boxes: Vec<(String, Vec<f64>)> = groups
+    let boxes = groups
         .into_iter()
         .map(|((a, f), rs)| {
             let mut v: Vec<f64> = rs.iter().filter_map(|r| kind.of(r)).collect();
             v.sort_by(f64::total_cmp);
-            (format!("{a} / {f}"), v)
+            (format!("{a} / {f} ({})", v.len()), v)
         })
         .filter(|(_, v)| !v.is_empty())
         .collect();
-    let y_hi = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::max) * 1.08;
-    let y_lo = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::min).min(1.0) * 0.97;
-    let (upper, lower) = area.split_vertically(area.dim_in_pixel().1.saturating_sub(24 * boxes.len().min(12) as u32 + 10));
-    let mut chart = ChartBuilder::on(&upper)
-        .caption(format!("Distribution of {}", kind.label(objective)), (FONT_FAMILY, 26))
+    (kind, boxes)
+}
+
+/// Horizontal box plots, one row per (algorithm, family), labelled on the left.
+fn ratio_distribution<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, objective: &str, rows: &[&Row]) -> Result<()> {
+    let (kind, boxes) = distribution_groups(rows);
+    let x_hi = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::max) * 1.05;
+    let x_lo = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::min).min(1.0) * 0.98;
+    let count = boxes.len().max(1);
+    let mut chart = ChartBuilder::on(area)
+        .caption(format!("Distribution of {}", kind.label(objective)), (FONT_FAMILY, 24))
         .margin(16)
-        .x_label_area_size(30)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0f64..(boxes.len() as f64 + 1.0), y_lo..y_hi)
+        .x_label_area_size(50)
+        .y_label_area_size(300)
+        .build_cartesian_2d(x_lo..x_hi, -0.5f64..(count as f64 - 0.5))
         .map_err(plot_err)?;
+    let labels: Vec<String> = boxes.iter().map(|b| b.0.clone()).collect();
     chart
         .configure_mesh()
-        .disable_x_mesh()
-        .x_labels(boxes.len() + 2)
-        .x_label_formatter(&|x| {
-            let k = x.round() as usize;
-            if (x - x.round()).abs() < 1e-9 && k >= 1 && k <= boxes.len() { k.to_string() } else { String::new() }
+        .disable_y_mesh()
+        .light_line_style(WHITE)
+        .y_labels(count)
+        .y_label_formatter(&|y| {
+            let k = y.round();
+            if (y - k).abs() < 1e-6 && k >= 0.0 && (k as usize) < labels.len() {
+                labels[labels.len() - 1 - k as usize].clone()
+            } else {
+                String::new()
+            }
         })
-        .x_desc("group (see key below)")
-        .y_desc(kind.label(objective))
-        .label_style((FONT_FAMILY, 16))
-        .axis_desc_style((FONT_FAMILY, 18))
+        .x_desc(kind.label(objective))
+        .label_style((FONT_FAMILY, 15))
+        .axis_desc_style((FONT_FAMILY, 17))
         .draw()
         .map_err(plot_err)?;
     let q = |v: &[f64], p: f64| v[((p * v.len() as f64).ceil() as usize).clamp(1, v.len()) - 1];
     for (k, (_, v)) in boxes.iter().enumerate() {
-        let x = k as f64 + 1.0;
+        // The first group is drawn at the top.
+        let y = (count - 1 - k) as f64;
         let c = colour(k);
         let (p5, q1, med, q3, p95, max) = (q(v, 0.05), q(v, 0.25), q(v, 0.5), q(v, 0.75), q(v, 0.95), v[v.len() - 1]);
-        chart.draw_series([Rectangle::new([(x - 0.3, q1), (x + 0.3, q3)], c.mix(0.35).filled())]).map_err(plot_err)?;
-        chart.draw_series([Rectangle::new([(x - 0.3, q1), (x + 0.3, q3)], c.stroke_width(2))]).map_err(plot_err)?;
+        let h = 0.3;
+        chart.draw_series([Rectangle::new([(q1, y - h), (q3, y + h)], c.mix(0.35).filled())]).map_err(plot_err)?;
+        chart.draw_series([Rectangle::new([(q1, y - h), (q3, y + h)], c.stroke_width(2))]).map_err(plot_err)?;
         chart
             .draw_series([
-                PathElement::new(vec![(x - 0.3, med), (x + 0.3, med)], BLACK.stroke_width(2)),
-                PathElement::new(vec![(x, q3), (x, p95)], c.stroke_width(1)),
-                PathElement::new(vec![(x, p5), (x, q1)], c.stroke_width(1)),
-                PathElement::new(vec![(x - 0.15, p95), (x + 0.15, p95)], c.stroke_width(1)),
-                PathElement::new(vec![(x - 0.15, p5), (x + 0.15, p5)], c.stroke_width(1)),
+                PathElement::new(vec![(med, y - h), (med, y + h)], BLACK.stroke_width(2)),
+                PathElement::new(vec![(q3, y), (p95, y)], c.stroke_width(1)),
+                PathElement::new(vec![(p5, y), (q1, y)], c.stroke_width(1)),
+                PathElement::new(vec![(p95, y - h / 2.0), (p95, y + h / 2.0)], c.stroke_width(1)),
+                PathElement::new(vec![(p5, y - h / 2.0), (p5, y + h / 2.0)], c.stroke_width(1)),
             ])
             .map_err(plot_err)?;
-        chart.draw_series([Cross::new((x, max), 5, BLACK.stroke_width(1))]).map_err(plot_err)?;
-    }
-    for (k, (label, v)) in boxes.iter().enumerate().take(12) {
-        let text = format!("{}: {label} ({} results)", k + 1, v.len());
-        lower
-            .draw_text(&text, &(FONT_FAMILY, 15).into_text_style(&lower).color(&colour(k)), (80, 24 * k as i32))
-            .map_err(plot_err)?;
+        chart.draw_series([Cross::new((max, y), 5, BLACK.stroke_width(1))]).map_err(plot_err)?;
     }
     Ok(())
 }
@@ -324,6 +334,7 @@ fn exact_time<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, rows: &[&Row]) 
         .map_err(plot_err)?;
     chart
         .configure_mesh()
+        .light_line_style(WHITE)
         .x_desc("N (pixels)")
         .y_desc("seconds (log scale)")
         .label_style((FONT_FAMILY, 16))
