@@ -1,7 +1,7 @@
 //! Speed of the min-turn algorithms of *Optimal covering tours with turn costs* (issue 5),
 //! single thread: the strip cover and `star-cover` on 10^6 pixels, `strips-matching` on 10^4
 //! and 10^5 pixels. Run with `cargo bench --bench turns` (add `-- quick` to skip 10^6 and
-//! 10^5).
+//! 10^5, `-- star` for star-cover on 10^6 pixels only, e.g. under a profiler).
 
 use mowmill::algorithms::{self, Options};
 use mowmill::checker::{self, Mode};
@@ -13,7 +13,9 @@ use std::time::Instant;
 fn region(family: Family, n: usize, seed: u64) -> Region {
     let mut p = GenParams::new(family, seed);
     p.n = Some(n);
-    generate(&p).expect("the generator accepts these parameters").region
+    generate(&p)
+        .expect("the generator accepts these parameters")
+        .region
 }
 
 fn time<T>(f: impl FnOnce() -> T) -> (T, f64) {
@@ -27,7 +29,11 @@ fn bench_algorithm(name: &str, r: &Region) {
     let (sol, secs) = time(|| (algo.run)(r, &Options::default()).expect("the algorithm runs"));
     let tour = sol.outputs.last().expect("a tour");
     let rep = checker::check(r, &tour.cover, Mode::Milling);
-    let certs: Vec<String> = sol.certificates.iter().map(|(k, v)| format!("{k}={v}")).collect();
+    let certs: Vec<String> = sol
+        .certificates
+        .iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect();
     println!(
         "{name:16} N={:8} {secs:8.3} s  valid={} turns={} {}",
         r.len(),
@@ -39,13 +45,26 @@ fn bench_algorithm(name: &str, r: &Region) {
 
 fn main() {
     let quick = std::env::args().any(|a| a == "quick");
-    let sizes_fast: &[usize] = if quick { &[100_000] } else { &[100_000, 1_000_000] };
+    if std::env::args().any(|a| a == "star") {
+        bench_algorithm("star-cover", &region(Family::RandomSimple, 1_000_000, 1));
+        return;
+    }
+    let sizes_fast: &[usize] = if quick {
+        &[100_000]
+    } else {
+        &[100_000, 1_000_000]
+    };
     let sizes_matching: &[usize] = if quick { &[10_000] } else { &[10_000, 100_000] };
     for family in [Family::RandomSimple, Family::RandomHoled] {
         for &n in sizes_fast {
             let r = region(family, n, 1);
             let (cover, secs) = time(|| strip_cover(&r));
-            println!("{:16} N={:8} {secs:8.3} s  s={} ({family:?})", "strip-cover", r.len(), cover.size());
+            println!(
+                "{:16} N={:8} {secs:8.3} s  s={} ({family:?})",
+                "strip-cover",
+                r.len(),
+                cover.size()
+            );
             bench_algorithm("star-cover", &r);
         }
         for &n in sizes_matching {

@@ -48,17 +48,30 @@ fn parse_args() -> Result<Args, String> {
     let mut objective_names: Option<String> = None;
     let argv: Vec<String> = std::env::args().skip(1).collect();
     let mut i = 0;
-    let value = |i: usize| argv.get(i + 1).cloned().ok_or(format!("{} needs a value", argv[i]));
+    let value = |i: usize| {
+        argv.get(i + 1)
+            .cloned()
+            .ok_or(format!("{} needs a value", argv[i]))
+    };
     while i < argv.len() {
         match argv[i].as_str() {
             "--objectives" => objective_names = Some(value(i)?),
             "--sizes" => {
-                a.sizes = value(i)?.split(',').map(|s| s.parse().map_err(|e| format!("--sizes: {e}"))).collect::<Result<_, _>>()?
+                a.sizes = value(i)?
+                    .split(',')
+                    .map(|s| s.parse().map_err(|e| format!("--sizes: {e}")))
+                    .collect::<Result<_, _>>()?
             }
             "--seeds" => a.seeds = value(i)?.parse().map_err(|e| format!("--seeds: {e}"))?,
-            "--time-limit" => a.time_limit = value(i)?.parse().map_err(|e| format!("--time-limit: {e}"))?,
+            "--time-limit" => {
+                a.time_limit = value(i)?
+                    .parse()
+                    .map_err(|e| format!("--time-limit: {e}"))?
+            }
             "--jobs" => a.jobs = value(i)?.parse().map_err(|e| format!("--jobs: {e}"))?,
-            "--turn-cost" => turn_cost = value(i)?.parse().map_err(|e| format!("--turn-cost: {e}"))?,
+            "--turn-cost" => {
+                turn_cost = value(i)?.parse().map_err(|e| format!("--turn-cost: {e}"))?
+            }
             "--families" => {
                 a.families = value(i)?
                     .split(',')
@@ -98,7 +111,9 @@ fn instance(family: Family, n: usize, seed: u64) -> Region {
     if family == Family::RandomHoled {
         p.holes = Some(1 + (seed as usize % 3));
     }
-    generate(&p).expect("generator accepts the benchmark parameters").region
+    generate(&p)
+        .expect("generator accepts the benchmark parameters")
+        .region
 }
 
 fn median(xs: &mut [f64]) -> f64 {
@@ -148,7 +163,10 @@ fn main() {
     }
     let rows: Mutex<Vec<Row>> = Mutex::new(Vec::new());
     let next = Mutex::new(0usize);
-    let sink = args.rows.as_ref().map(|p| Mutex::new(std::fs::File::create(p).expect("create --rows file")));
+    let sink = args
+        .rows
+        .as_ref()
+        .map(|p| Mutex::new(std::fs::File::create(p).expect("create --rows file")));
     std::thread::scope(|scope| {
         for _ in 0..args.jobs.max(1) {
             scope.spawn(|| loop {
@@ -201,10 +219,16 @@ fn main() {
     });
     let rows = rows.into_inner().expect("rows");
     println!();
-    println!("objective    N     solved   median s    max s   (time limit {} s, {} job(s))", args.time_limit, args.jobs);
+    println!(
+        "objective    N     solved   median s    max s   (time limit {} s, {} job(s))",
+        args.time_limit, args.jobs
+    );
     for objective in &args.objectives {
         for &n in &args.sizes {
-            let sel: Vec<&Row> = rows.iter().filter(|r| r.objective == objective.to_string() && r.n == n).collect();
+            let sel: Vec<&Row> = rows
+                .iter()
+                .filter(|r| r.objective == objective.to_string() && r.n == n)
+                .collect();
             let solved = sel.iter().filter(|r| r.status == Status::Optimal).count();
             let mut times: Vec<f64> = sel.iter().map(|r| r.seconds).collect();
             let max = times.iter().copied().fold(0.0, f64::max);
@@ -219,7 +243,10 @@ fn main() {
             );
         }
     }
-    let unsolved: Vec<&Row> = rows.iter().filter(|r| r.status != Status::Optimal).collect();
+    let unsolved: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.status != Status::Optimal)
+        .collect();
     if !unsolved.is_empty() {
         println!();
         println!("not proven optimal:");

@@ -38,7 +38,11 @@ impl Bound {
 
     /// The larger of two bounds (the first on ties).
     pub fn max(self, other: Bound) -> Bound {
-        if other.value > self.value { other } else { self }
+        if other.value > self.value {
+            other
+        } else {
+            self
+        }
     }
 }
 
@@ -52,8 +56,15 @@ pub fn length_lower_bound(region: &Region) -> Bound {
         return Bound::new(0, "single pixel");
     }
     let (black, white) = colour_counts(region);
-    let parity = if n % 2 == 1 { Bound::new(n + 1, "n + 1 (odd n, even closed walks)") } else { Bound::new(n, "n") };
-    parity.max(Bound::new(2 * black.max(white) as u64, "2 max(#black, #white)"))
+    let parity = if n % 2 == 1 {
+        Bound::new(n + 1, "n + 1 (odd n, even closed walks)")
+    } else {
+        Bound::new(n, "n")
+    };
+    parity.max(Bound::new(
+        2 * black.max(white) as u64,
+        "2 max(#black, #white)",
+    ))
 }
 
 /// Lower bound on the L1 length of a tour through the centres of all pixels (lawn TSP).
@@ -88,7 +99,10 @@ pub fn turn_lower_bound(region: &Region) -> Bound {
     let strips: u64 = per_component.iter().sum();
     let total: u64 = per_component.iter().map(|&s| s.max(4)).sum();
     if total > strips {
-        Bound::new(total, "min strip cover (Lemma 4.2), at least 4 per closed walk")
+        Bound::new(
+            total,
+            "min strip cover (Lemma 4.2), at least 4 per closed walk",
+        )
     } else {
         Bound::new(total, "min strip cover (Lemma 4.2)")
     }
@@ -103,7 +117,10 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
             // Both bounds hold for the same tour.
             let l = length_lower_bound(region).value;
             let t = turn_lower_bound(region).value;
-            Bound::new(l + u64::from(turn_cost) * t, "length bound + C * turn bound")
+            Bound::new(
+                l + u64::from(turn_cost) * t,
+                "length bound + C * turn bound",
+            )
         }
         Objective::LawnTsp => lawn_tsp_lower_bound(region),
     }
@@ -111,13 +128,22 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
 
 /// The LP relaxation of the exact model with all its connectivity cuts, rounded up to even;
 /// `None` if it did not converge within `time_limit` seconds (or the problem is infeasible).
-pub fn lp_lower_bound(region: &Region, objective: Objective, time_limit: Option<f64>) -> Option<Bound> {
-    exact::lp_relaxation_bound(region, objective, time_limit).map(|v| Bound::new(v, "lp relaxation with cuts"))
+pub fn lp_lower_bound(
+    region: &Region,
+    objective: Objective,
+    time_limit: Option<f64>,
+) -> Option<Bound> {
+    exact::lp_relaxation_bound(region, objective, time_limit)
+        .map(|v| Bound::new(v, "lp relaxation with cuts"))
 }
 
 /// The largest available bound: the cheap ones and, when `lp_time_limit` is given, the LP
 /// relaxation.
-pub fn best_lower_bound(region: &Region, objective: Objective, lp_time_limit: Option<f64>) -> Bound {
+pub fn best_lower_bound(
+    region: &Region,
+    objective: Objective,
+    lp_time_limit: Option<f64>,
+) -> Bound {
     let cheap = cheap_lower_bound(region, objective);
     match lp_time_limit.and_then(|t| lp_lower_bound(region, objective, Some(t))) {
         Some(lp) => cheap.max(lp),

@@ -59,7 +59,11 @@ fn strip_graph(region: &Region) -> StripGraph {
             }
             None => {
                 h_of[i] = h_strips.len() as u32;
-                h_strips.push(Strip { start: region.pixel(i), len: 1, horizontal: true });
+                h_strips.push(Strip {
+                    start: region.pixel(i),
+                    len: 1,
+                    horizontal: true,
+                });
             }
         }
         // The pixel below has a smaller index, so its vertical strip is already known.
@@ -70,11 +74,20 @@ fn strip_graph(region: &Region) -> StripGraph {
             }
             None => {
                 v_of[i] = v_strips.len() as u32;
-                v_strips.push(Strip { start: region.pixel(i), len: 1, horizontal: false });
+                v_strips.push(Strip {
+                    start: region.pixel(i),
+                    len: 1,
+                    horizontal: false,
+                });
             }
         }
     }
-    StripGraph { h_of, v_of, h_strips, v_strips }
+    StripGraph {
+        h_of,
+        v_of,
+        h_strips,
+        v_strips,
+    }
 }
 
 const FREE: u32 = u32::MAX;
@@ -110,12 +123,12 @@ pub fn strip_cover(region: &Region) -> StripCover {
     let mut match_h = vec![FREE; nh];
     let mut match_v = vec![FREE; nv];
     // Greedy start: most strips are matched before the first phase.
-    for h in 0..nh {
+    for (h, m) in match_h.iter_mut().enumerate() {
         for p in adj(h) {
             let v = g.v_of[p] as usize;
             if match_v[v] == FREE {
                 match_v[v] = h as u32;
-                match_h[h] = p as u32;
+                *m = p as u32;
                 break;
             }
         }
@@ -155,9 +168,7 @@ pub fn strip_cover(region: &Region) -> StripCover {
             break;
         }
         // Iterative DFS along the layers, one augmenting path per free strip at most.
-        for h in 0..nh {
-            next_edge[h] = first[h];
-        }
+        next_edge.copy_from_slice(&first[..nh]);
         for root in 0..nh {
             if match_h[root] != FREE {
                 continue;
@@ -219,12 +230,21 @@ pub fn strip_cover(region: &Region) -> StripCover {
             }
         }
     }
-    let mut strips: Vec<Strip> =
-        (0..nh).filter(|&h| !in_z_h[h]).map(|h| g.h_strips[h]).collect();
+    let mut strips: Vec<Strip> = (0..nh)
+        .filter(|&h| !in_z_h[h])
+        .map(|h| g.h_strips[h])
+        .collect();
     strips.extend((0..nv).filter(|&v| in_z_v[v]).map(|v| g.v_strips[v]));
-    let rooks: Vec<Pixel> =
-        match_h.iter().filter(|&&p| p != FREE).map(|&p| region.pixel(p as usize)).collect();
-    assert_eq!(strips.len(), rooks.len(), "König: minimum cover and maximum matching have equal size");
+    let rooks: Vec<Pixel> = match_h
+        .iter()
+        .filter(|&&p| p != FREE)
+        .map(|&p| region.pixel(p as usize))
+        .collect();
+    assert_eq!(
+        strips.len(),
+        rooks.len(),
+        "König: minimum cover and maximum matching have equal size"
+    );
     debug_assert!(covers_every_pixel(&g, &in_z_h, &in_z_v));
     StripCover { strips, rooks }
 }
@@ -259,7 +279,10 @@ mod tests {
                     && (a.x.min(b.x)..=a.x.max(b.x)).all(|x| r.contains(Pixel::new(x, a.y)));
                 let same_col = a.x == b.x
                     && (a.y.min(b.y)..=a.y.max(b.y)).all(|y| r.contains(Pixel::new(a.x, y)));
-                assert!(!same_row && !same_col, "rooks {a} and {b} attack each other");
+                assert!(
+                    !same_row && !same_col,
+                    "rooks {a} and {b} attack each other"
+                );
             }
         }
         assert_eq!(c.strips.len(), c.rooks.len());
@@ -295,9 +318,8 @@ mod tests {
         let m = nh + nv;
         (0u32..1 << m)
             .filter(|mask| {
-                (0..r.len()).all(|p| {
-                    mask >> g.h_of[p] & 1 == 1 || mask >> (nh as u32 + g.v_of[p]) & 1 == 1
-                })
+                (0..r.len())
+                    .all(|p| mask >> g.h_of[p] & 1 == 1 || mask >> (nh as u32 + g.v_of[p]) & 1 == 1)
             })
             .map(|mask| mask.count_ones() as usize)
             .min()

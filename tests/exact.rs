@@ -19,25 +19,45 @@ use std::path::Path;
 const LIMIT: f64 = 20.0;
 
 fn opts() -> ExactOptions {
-    ExactOptions { time_limit: Some(LIMIT), ..ExactOptions::default() }
+    ExactOptions {
+        time_limit: Some(LIMIT),
+        ..ExactOptions::default()
+    }
 }
 
 fn fixture(name: &str) -> Region {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("instances/fixtures").join(name);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("instances/fixtures")
+        .join(name);
     GridFile::read(&path).expect("fixture reads").region
 }
 
 /// Solves and checks everything a result promises about itself.
 fn solved(region: &Region, objective: Objective) -> ExactResult {
     let r = solve(region, objective, &opts());
-    assert_eq!(r.status, Status::Optimal, "{objective} on\n{}{r:?}", region.to_ascii());
-    let cover = r.cover.as_ref().expect("an optimal result carries its cover");
+    assert_eq!(
+        r.status,
+        Status::Optimal,
+        "{objective} on\n{}{r:?}",
+        region.to_ascii()
+    );
+    let cover = r
+        .cover
+        .as_ref()
+        .expect("an optimal result carries its cover");
     let rep = checker::check(region, cover, objective.mode());
     assert!(rep.valid, "{objective}: {:?}", rep.error);
     assert!(r.valid);
-    assert_eq!(Some(objective.value_of(&rep)), r.value, "{objective}: recount equals value");
+    assert_eq!(
+        Some(objective.value_of(&rep)),
+        r.value,
+        "{objective}: recount equals value"
+    );
     assert_eq!(r.value, Some(r.lower_bound));
-    assert_eq!((r.length, r.turns, r.cycles), (Some(rep.length), Some(rep.turns), Some(rep.cycles)));
+    assert_eq!(
+        (r.length, r.turns, r.cycles),
+        (Some(rep.length), Some(rep.turns), Some(rep.cycles))
+    );
     if objective.is_tour() {
         assert_eq!(rep.cycles, 1, "{objective}: a tour is one closed walk");
     }
@@ -68,7 +88,12 @@ fn hand_fixtures_have_their_known_optima() {
 #[test]
 fn small_special_cases() {
     let one = Region::rectangle(1, 1);
-    for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::LawnTsp] {
+    for o in [
+        Objective::Length,
+        Objective::CcTurns,
+        Objective::TourTurns,
+        Objective::LawnTsp,
+    ] {
         let r = solved(&one, o);
         assert_eq!(r.length, Some(0));
     }
@@ -89,7 +114,11 @@ fn small_special_cases() {
 #[test]
 fn disconnected_regions_have_cycle_covers_but_no_tours() {
     let r = Region::from_ascii("##.#\n##..\n");
-    for o in [Objective::Length, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }] {
+    for o in [
+        Objective::Length,
+        Objective::TourTurns,
+        Objective::Weighted { turn_cost: 1 },
+    ] {
         let res = solve(&r, o, &opts());
         assert_eq!(res.status, Status::Infeasible, "{o}");
         assert!(res.value.is_none() && !res.valid && res.message.is_some());
@@ -114,7 +143,18 @@ fn lawn_tsp_of_a_scattered_lawn() {
 fn json_has_the_contract_keys() {
     let r = solve(&Region::rectangle(3, 2), Objective::TourTurns, &opts());
     let v = serde_json::to_value(&r).expect("serializes");
-    for k in ["objective", "value", "lower_bound", "status", "seconds", "rounds", "length", "turns", "cycles", "valid"] {
+    for k in [
+        "objective",
+        "value",
+        "lower_bound",
+        "status",
+        "seconds",
+        "rounds",
+        "length",
+        "turns",
+        "cycles",
+        "valid",
+    ] {
         assert!(v.get(k).is_some(), "key {k}");
     }
     assert_eq!(v["status"], "optimal");
@@ -128,7 +168,10 @@ fn objective_names_round_trip() {
         let o: Objective = name.parse().expect("known name");
         assert_eq!(o.to_string(), name);
     }
-    assert_eq!(Objective::parse("weighted", Some(5)), Ok(Objective::Weighted { turn_cost: 5 }));
+    assert_eq!(
+        Objective::parse("weighted", Some(5)),
+        Ok(Objective::Weighted { turn_cost: 5 })
+    );
     assert!(Objective::parse("weighted", None).is_err());
     assert!(Objective::parse("length", Some(1)).is_err());
     assert!("bogus".parse::<Objective>().is_err());
@@ -138,8 +181,18 @@ fn objective_names_round_trip() {
 fn time_limit_gives_a_checked_incumbent_and_a_bound() {
     // Too large for a tenth of a second: the answer is an incumbent and a bound, not a claim.
     let r = Region::rectangle(14, 13);
-    let res = solve(&r, Objective::TourTurns, &ExactOptions { time_limit: Some(0.1), ..ExactOptions::default() });
-    assert!(matches!(res.status, Status::TimeLimit | Status::Optimal), "{res:?}");
+    let res = solve(
+        &r,
+        Objective::TourTurns,
+        &ExactOptions {
+            time_limit: Some(0.1),
+            ..ExactOptions::default()
+        },
+    );
+    assert!(
+        matches!(res.status, Status::TimeLimit | Status::Optimal),
+        "{res:?}"
+    );
     if let Some(v) = res.value {
         assert!(res.valid && res.lower_bound <= v);
         let rep = checker::check(&r, res.cover.as_ref().expect("cover"), Mode::Milling);
@@ -154,25 +207,75 @@ fn time_limit_gives_a_checked_incumbent_and_a_bound() {
 fn warm_start_is_used_and_checked() {
     let r = Region::rectangle(4, 4);
     // The boundary ring plus the inner 2x2 is not one walk: a bad warm start is ignored.
-    let ring: Vec<Pixel> = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
-        .iter()
-        .map(|&p| p.into())
-        .collect();
+    let ring: Vec<Pixel> = [
+        (0, 0),
+        (1, 0),
+        (2, 0),
+        (3, 0),
+        (3, 1),
+        (3, 2),
+        (3, 3),
+        (2, 3),
+        (1, 3),
+        (0, 3),
+        (0, 2),
+        (0, 1),
+    ]
+    .iter()
+    .map(|&p| p.into())
+    .collect();
     let bad = CycleCover::tour(ring);
-    let res = solve(&r, Objective::Length, &ExactOptions { warm_start: Some(bad), ..opts() });
+    let res = solve(
+        &r,
+        Objective::Length,
+        &ExactOptions {
+            warm_start: Some(bad),
+            ..opts()
+        },
+    );
     assert_eq!(res.value, Some(16));
     // A snake is optimal for length: accepted, and the answer is still 16.
-    let snake: Vec<Pixel> = [(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (2, 1), (1, 1), (1, 2), (2, 2), (3, 2), (3, 3), (2, 3), (1, 3), (0, 3), (0, 2), (0, 1)]
-        .iter()
-        .map(|&p| p.into())
-        .collect();
-    let res = solve(&r, Objective::Length, &ExactOptions { warm_start: Some(CycleCover::tour(snake)), ..opts() });
-    assert_eq!((res.status, res.value, res.rounds), (Status::Optimal, Some(16), 0));
+    let snake: Vec<Pixel> = [
+        (0, 0),
+        (1, 0),
+        (2, 0),
+        (3, 0),
+        (3, 1),
+        (2, 1),
+        (1, 1),
+        (1, 2),
+        (2, 2),
+        (3, 2),
+        (3, 3),
+        (2, 3),
+        (1, 3),
+        (0, 3),
+        (0, 2),
+        (0, 1),
+    ]
+    .iter()
+    .map(|&p| p.into())
+    .collect();
+    let res = solve(
+        &r,
+        Objective::Length,
+        &ExactOptions {
+            warm_start: Some(CycleCover::tour(snake)),
+            ..opts()
+        },
+    );
+    assert_eq!(
+        (res.status, res.value, res.rounds),
+        (Status::Optimal, Some(16), 0)
+    );
 }
 
 /// The number of proptest cases: `PROPTEST_CASES` when set (for long soak runs), else `default`.
 fn cases(default: u32) -> u32 {
-    std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -296,16 +399,22 @@ fn permute(a: &mut Vec<usize>, k: usize, f: &mut dyn FnMut(&[usize])) {
 /// included); `connected` keeps only 4-connected ones.
 fn tiny_region(max_n: usize, connected: bool) -> impl Strategy<Value = Region> {
     (2usize..5, 1usize..5).prop_flat_map(move |(w, h)| {
-        proptest::collection::vec(proptest::bool::weighted(0.7), w * h).prop_filter_map("size", move |bits| {
-            let r = Region::from_pixels(
-                bits.iter().enumerate().filter(|(_, b)| **b).map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
-            )
-            .ok()?;
-            let ok = !r.is_empty()
-                && r.len() <= max_n
-                && (!connected || mowmill::topology::components(&r).count == 1);
-            ok.then_some(r)
-        })
+        proptest::collection::vec(proptest::bool::weighted(0.7), w * h).prop_filter_map(
+            "size",
+            move |bits| {
+                let r = Region::from_pixels(
+                    bits.iter()
+                        .enumerate()
+                        .filter(|(_, b)| **b)
+                        .map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
+                )
+                .ok()?;
+                let ok = !r.is_empty()
+                    && r.len() <= max_n
+                    && (!connected || mowmill::topology::components(&r).count == 1);
+                ok.then_some(r)
+            },
+        )
     })
 }
 
@@ -332,13 +441,19 @@ proptest! {
 
 fn small_region() -> impl Strategy<Value = Region> {
     (3usize..7, 3usize..6).prop_flat_map(|(w, h)| {
-        proptest::collection::vec(proptest::bool::weighted(0.75), w * h).prop_filter_map("connected", move |bits| {
-            let r = Region::from_pixels(
-                bits.iter().enumerate().filter(|(_, b)| **b).map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
-            )
-            .ok()?;
-            (r.len() >= 2 && mowmill::topology::components(&r).count == 1).then_some(r)
-        })
+        proptest::collection::vec(proptest::bool::weighted(0.75), w * h).prop_filter_map(
+            "connected",
+            move |bits| {
+                let r = Region::from_pixels(
+                    bits.iter()
+                        .enumerate()
+                        .filter(|(_, b)| **b)
+                        .map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
+                )
+                .ok()?;
+                (r.len() >= 2 && mowmill::topology::components(&r).count == 1).then_some(r)
+            },
+        )
     })
 }
 

@@ -92,8 +92,18 @@ fn tsp65_fixtures() {
         assert_eq!(run("tsp65", &r).1.length, 2 * k as u64, "{k} x 2");
     }
     assert_eq!(run("tsp65", &Region::rectangle(3, 3)).1.length, 10);
+    // Even rectangles are Hamiltonian: Type I detours push the contour through the interior.
+    assert_eq!(run("tsp65", &Region::rectangle(4, 4)).1.length, 16);
+    assert_eq!(run("tsp65", &Region::rectangle(3, 4)).1.length, 12);
+    assert_eq!(run("tsp65", &Region::rectangle(6, 5)).1.length, 30);
+    // An odd grid graph has no Hamiltonian cycle (bipartite): 26 is optimal for 5 x 5.
+    assert_eq!(run("tsp65", &Region::rectangle(5, 5)).1.length, 26);
     assert_eq!(run("tsp65", &Region::rectangle(1, 1)).1.length, 0);
     assert_eq!(run("tsp65", &Region::rectangle(5, 1)).1.length, 8);
+    // A single edge has no cut vertex but no cycle either: walked twice, no N-bound claimed.
+    let (sol, rep) = run("tsp65", &Region::rectangle(2, 1));
+    assert_eq!(rep.length, 2);
+    assert!(!sol.certificates.contains_key("bound_6n_4_5"));
 }
 
 #[test]
@@ -119,7 +129,7 @@ fn check_tsp65(r: &Region) -> Option<(u64, u64, [i64; 6])> {
         r.to_ascii()
     );
     let no_cut = !topology::cut_vertices(r).iter().any(|&c| c);
-    if no_cut && n >= 2 {
+    if no_cut && n >= 3 {
         assert!(
             5 * rep.length + 4 <= 6 * n,
             "length {} > (6N-4)/5, N = {n}\n{}",
@@ -176,7 +186,10 @@ fn milling25_random_regions() {
         }
         let (sol, rep) = run("milling25", &r);
         let c = &sol.certificates;
-        assert_eq!(rep.length as i64, c["l_db"] + c["l_str"] + c["l_match"]);
+        assert_eq!(
+            rep.length as i64,
+            c["l_db"] + c["l_str"] + c["l_match"] + c["l_connect"]
+        );
         if c["odd_contours"] == 0 {
             assert!(2 * c["l_match"] <= c["l_db"]);
         } else {
@@ -188,18 +201,35 @@ fn milling25_random_regions() {
     eprintln!("milling25: max length / N = {worst:.3}; {odd} regions needed a parity repair");
 }
 
+/// Finding (Theorem 4's "clearly, this graph is connected"): a hole two pixels from the
+/// outer boundary all around gets no strip, so its contour is a separate component; the
+/// construction joins it with one doubled edge.
+#[test]
+fn milling25_joins_a_hole_contour_that_no_strip_reaches() {
+    let r = Region::from_ascii(include_str!(
+        "../instances/fixtures/milling25-unreached-hole.grid"
+    ));
+    let (sol, rep) = run("milling25", &r);
+    let c = &sol.certificates;
+    assert_eq!((c["strips"], c["l_connect"]), (0, 2));
+    assert_eq!(rep.length, 20 + 12 + 2);
+}
+
 /// Grid reading of Theorem 4: the hole's contour runs along row 3, tangent to the strip row,
 /// so it receives a single strip endpoint (the continuous parity argument does not
 /// transfer); the construction repairs the parity with a path between lone endpoints.
 #[test]
 fn milling25_tangent_hole_contour_needs_a_repair() {
-    let r = Region::from_ascii(
-        ".##.....\n.###....\n####....\n##.#####\n########\n.#######\n.###....\n.###....\n",
-    );
+    let r = Region::from_ascii(include_str!(
+        "../instances/fixtures/milling25-tangent-hole.grid"
+    ));
     let (sol, rep) = run("milling25", &r);
     let c = &sol.certificates;
     assert_eq!(c["odd_contours"], 2);
-    assert_eq!(rep.length as i64, c["l_db"] + c["l_str"] + c["l_match"]);
+    assert_eq!(
+        rep.length as i64,
+        c["l_db"] + c["l_str"] + c["l_match"] + c["l_connect"]
+    );
 }
 
 /// A fat region with single-pixel holes punched where the 8-neighbourhood is full; kept only
@@ -453,7 +483,9 @@ mod against_exact {
     /// through the same 8 pixels, so L_δB = 16 > OPT = 8; the tour (16) still meets 2.5 OPT.
     #[test]
     fn thin_ring_contours_exceed_opt() {
-        let r = Region::from_ascii("###\n#.#\n###\n");
+        let r = Region::from_ascii(include_str!(
+            "../instances/fixtures/milling25-thin-ring.grid"
+        ));
         assert_eq!(opt(&r, exact::Objective::Length), Some(8));
         let (sol, rep) = run("milling25", &r);
         assert_eq!(sol.certificates["l_db"], 16);
@@ -481,4 +513,99 @@ mod against_exact {
         }
         assert!(solved > 20);
     }
+}
+
+/// The densest holes without local cut vertices: 1 × 1 holes on a lattice of pitch 3 or 4
+/// (h ≈ N/8), the case where bridges dominate the bound of Theorem 7.
+#[test]
+fn holes1325_hole_lattices() {
+    for pitch in [3, 4, 5] {
+        for k in 1..8 {
+            let side = pitch * (k + 1) + 1;
+            let pixels = (0..side)
+                .flat_map(|y| (0..side).map(move |x| Pixel::new(x, y)))
+                .filter(|p| {
+                    !(p.x % pitch == 0
+                        && p.y % pitch == 0
+                        && p.x > 0
+                        && p.y > 0
+                        && p.x < side - 1
+                        && p.y < side - 1)
+                });
+            let r = Region::from_pixels(pixels).unwrap();
+            assert!(!topology::local_cut_vertices(&r).iter().any(|&c| c));
+            let (sol, rep) = run("holes1325", &r);
+            let n = r.len() as u64;
+            eprintln!(
+                "pitch {pitch}, k {k}: N {n}, holes {}, length {} (bound {}), free {}, paid {}",
+                topology::holes(&r).count,
+                rep.length,
+                53 * n / 40,
+                sol.certificates["free_bridges"],
+                sol.certificates["paid_bridges"]
+            );
+            assert!(
+                40 * rep.length <= 53 * n,
+                "pitch {pitch}, k {k}: {} > 53N/40",
+                rep.length
+            );
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+    /// The theorems' bounds hold on every image of a holed region under the symmetries of
+    /// the square.
+    #[test]
+    fn holed_images_keep_the_bounds(seed in 0u64..1_000_000, s in 0u8..8) {
+        if let Some(r) = random_holed_region(seed, 6, 6) {
+            let r = r.transformed(mowmill::Symmetry(s));
+            let (_, rep) = run("holes1325", &r);
+            prop_assert!(40 * rep.length <= 53 * r.len() as u64);
+            let (sol, rep) = run("milling25", &r);
+            let c = &sol.certificates;
+            prop_assert_eq!(rep.length as i64, c["l_db"] + c["l_str"] + c["l_match"] + c["l_connect"]);
+        }
+    }
+}
+
+/// The CLI runs the lawn algorithms with every cutter and checks them with the lawn checker
+/// (Euclidean lengths in milli-units for free motion and the disk).
+#[test]
+fn cli_solves_lawns_with_every_cutter() {
+    let dir = std::env::temp_dir().join(format!("mowmill-milling-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("lawn.grid");
+    let r = Region::from_ascii("##...##\n##...##\n.......\n...#...\n");
+    std::fs::write(&file, r.to_ascii()).unwrap();
+    for (cutter, algo) in [
+        ("square", "lawn-box"),
+        ("square-free", "lawn-2opt"),
+        ("disk", "lawn-christofides"),
+    ] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_mowmill"))
+            .args([
+                "solve",
+                file.to_str().unwrap(),
+                "--algo",
+                algo,
+                "--cutter",
+                cutter,
+                "--json",
+            ])
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{cutter}: {stdout} {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        assert_eq!(v["valid"], true, "{cutter}: {v}");
+        assert_eq!(v["algorithm"], algo);
+        assert!(v["length"].as_u64().unwrap() > 0);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -102,7 +102,15 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
     }
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
     // A one-pixel link closed on itself is a still walk of 4 turns.
-    let floor: Vec<u32> = (0..ports.len()).map(|i| if links[i / 2].first == links[i / 2].last { 4 } else { 0 }).collect();
+    let floor: Vec<u32> = (0..ports.len())
+        .map(|i| {
+            if links[i / 2].first == links[i / 2].last {
+                4
+            } else {
+                0
+            }
+        })
+        .collect();
     let matching = match_ports(region, &ports, &partner, &floor)?;
     if !matching.complete {
         return Err(Error::invalid(format!(
@@ -181,7 +189,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         against: Against::Opt,
         source: "Theorem 4.1 of Optimal covering tours with turn costs",
     }],
-    precondition: precondition,
+    precondition,
     run,
 };
 

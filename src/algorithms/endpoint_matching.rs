@@ -150,7 +150,9 @@ pub fn match_ports(
         let e = edges.get_mut(&(i.min(j), i.max(j))).expect("just added");
         *e = (*e).max(floor[i]);
     }
-    let edges: Vec<(usize, usize, u32)> = edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
+    // Sorted, so that ties between minimum matchings are broken the same way on every run.
+    let mut edges: Vec<(usize, usize, u32)> = edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
+    edges.sort_unstable();
     let mate = min_weight_perfect_matching(p, &edges)
         .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
     let lookup: HashMap<(usize, usize), u32> = edges.iter().map(|&(a, b, w)| ((a, b), w)).collect();
@@ -191,13 +193,13 @@ pub fn min_weight_perfect_matching(n: usize, edges: &[(usize, usize, u32)]) -> O
     let mut piece_of_root: HashMap<usize, usize> = HashMap::new();
     let mut local = vec![0usize; n];
     let mut pieces: Vec<Vec<usize>> = Vec::new();
-    for v in 0..n {
+    for (v, slot) in local.iter_mut().enumerate() {
         let r = find(&mut root, v);
         let k = *piece_of_root.entry(r).or_insert_with(|| {
             pieces.push(Vec::new());
             pieces.len() - 1
         });
-        local[v] = pieces[k].len();
+        *slot = pieces[k].len();
         pieces[k].push(v);
     }
     let mut piece_edges: Vec<Vec<(u32, u32, i128)>> = vec![Vec::new(); pieces.len()];

@@ -159,13 +159,13 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
     let mut paid_bridges = 0i64;
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
-            if let Some(j) = region.neighbor(i, d) {
-                if uf.find(i) != uf.find(j) {
-                    uf.union(i, j);
-                    graph.add(i, j, d);
-                    graph.add(i, j, d);
-                    paid_bridges += 1;
-                }
+            if let Some(j) = region.neighbor(i, d)
+                && uf.find(i) != uf.find(j)
+            {
+                uf.union(i, j);
+                graph.add(i, j, d);
+                graph.add(i, j, d);
+                paid_bridges += 1;
             }
         }
     }

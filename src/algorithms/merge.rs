@@ -66,6 +66,8 @@ struct Walks<'a> {
     pix: Vec<u32>,
     /// The pixel of each node (`region.pixel(pix[node])`, kept at hand).
     xy: Vec<Pixel>,
+    /// The turn at each node, kept up to date by [`apply`](Self::apply).
+    turn: Vec<i32>,
     next: Vec<u32>,
     prev: Vec<u32>,
     /// Initial cycle of each node (new detour nodes inherit their copy's cycle).
@@ -90,6 +92,7 @@ impl<'a> Walks<'a> {
             region,
             pix: Vec::new(),
             xy: Vec::new(),
+            turn: Vec::new(),
             next: Vec::new(),
             prev: Vec::new(),
             cycle: Vec::new(),
@@ -125,6 +128,10 @@ impl<'a> Walks<'a> {
             w.root.push(c as u32);
             w.size.push(walk.len());
         }
+        w.turn = vec![0; w.pix.len()];
+        for n in 0..w.pix.len() as u32 {
+            w.recount_turn(n);
+        }
         w
     }
 
@@ -155,7 +162,11 @@ impl<'a> Walks<'a> {
     }
 
     fn turn_at(&self, n: u32) -> i32 {
-        self.turn_between(self.prev[n as usize], n, self.next[n as usize])
+        self.turn[n as usize]
+    }
+
+    fn recount_turn(&mut self, n: u32) {
+        self.turn[n as usize] = self.turn_between(self.prev[n as usize], n, self.next[n as usize]);
     }
 
     /// The new partners of the four nodes of an exchange: (node, removed partner, new partner).
@@ -241,7 +252,11 @@ impl<'a> Walks<'a> {
         if !same {
             for backward in [false, true] {
                 out(Op::Detour { x, z, backward });
-                out(Op::Detour { x: z, z: x, backward });
+                out(Op::Detour {
+                    x: z,
+                    z: x,
+                    backward,
+                });
             }
         }
     }
@@ -333,6 +348,9 @@ impl<'a> Walks<'a> {
                     self.link(a1, b2);
                     self.link(a2, b1);
                 }
+                for n in [a1, b1, a2, b2] {
+                    self.recount_turn(n);
+                }
             }
             Op::Detour { x, z, backward } => {
                 if backward {
@@ -344,6 +362,7 @@ impl<'a> Walks<'a> {
                 for (copy, of) in [(z2, z), (x2, x)] {
                     self.pix.push(self.pix[of as usize]);
                     self.xy.push(self.xy[of as usize]);
+                    self.turn.push(0);
                     self.cycle.push(self.cycle[of as usize]);
                     self.next.push(NONE);
                     self.prev.push(NONE);
@@ -358,6 +377,9 @@ impl<'a> Walks<'a> {
                 self.next[x2 as usize] = xn;
                 self.prev[xn as usize] = x2;
                 self.size[ra as usize] += 2;
+                for n in [x, z, z2, x2] {
+                    self.recount_turn(n);
+                }
             }
         }
         self.root[rb as usize] = ra;
@@ -526,7 +548,8 @@ pub fn merge_cycles(
 }
 
 /// The two outputs of a cycle-cover algorithm: the cycle cover (objective `cc-turns`) and the
-/// tour merged from it by `opts.merge` (objective `turns`). Certificates
+/// tour merged from it by `opts.merge` (objective `turns`), rewritten by
+/// [`coverage4`](crate::algorithms::coverage4) when `opts.coverage4` is set. Certificates
 /// gain the checker's recount of the cover (`cc_cycles`, `cc_turns`), the merged tour's turns
 /// (`tour_turns`) and the number of free merges.
 pub fn cover_and_tour(
@@ -535,13 +558,12 @@ pub fn cover_and_tour(
     opts: &Options,
     mut certificates: BTreeMap<String, i64>,
 ) -> Result<Solution> {
+    let (mut tour, stats) = merge_cycles(region, &cover, opts.merge);
     if opts.coverage4 {
-        // Theorem 5.6's rewriting is not implemented yet: refuse rather than ignore the flag.
-        return Err(Error::invalid(
-            "--coverage4 (Theorem 5.6) is not implemented yet",
-        ));
+        let (rewritten, stuck) = crate::algorithms::coverage4::coverage4(region, &tour);
+        tour = rewritten;
+        certificates.insert("coverage4_stuck".to_string(), stuck as i64);
     }
-    let (tour, stats) = merge_cycles(region, &cover, opts.merge);
     let before = check(region, &cover, Mode::Milling);
     let after = check(region, &tour, Mode::Milling);
     certificates.insert("cc_cycles".to_string(), before.cycles as i64);

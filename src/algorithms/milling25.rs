@@ -15,8 +15,14 @@
 //! 3. On every δB_i the strip-line endpoints split the walk into arcs; the two alternating
 //!    arc sets are the matchings M1(δB_i), M2(δB_i), and the shorter one M*(δB_i) (at most
 //!    half of δB_i) is doubled.
-//! 4. Contours + strip lines + M* is connected with even degrees; its Euler circuit
-//!    (Hierholzer) is the tour, of length L_δB + L_str + Σ|M*| ≤ L_δB + L_str + L_δB / 2.
+//! 4. Contours + strip lines + M* has even degrees; its Euler circuit (Hierholzer) is the
+//!    tour, of length L_δB + L_str + Σ|M*| ≤ L_δB + L_str + L_δB / 2.
+//!
+//! Finding: the proof states that this graph is "clearly connected", but a hole whose
+//! contour no strip reaches (every pixel between it and the other boundaries lies on a
+//! contour, e.g. a 6 × 6 square with a 2 × 2 hole) leaves its contour as a separate
+//! component. We join components by doubled grid edges (certificate `l_connect`, 2 per
+//! join), as the bridges of Theorem 7 do.
 //!
 //! Grid reading (a detail the continuous proof leaves open): a strip endpoint pixel can lie
 //! on two contour walks, or twice on one (where the region is one pixel thick); we attach the
@@ -63,7 +69,8 @@ struct StripLine {
 ///
 /// # Returns
 /// One tour (objective length), with certificates `l_db` (L_δB), `l_str` (strip-line
-/// moves), `strip_pixels`, `l_match` (Σ|M*|), `contours`, `strips`, `odd_contours`.
+/// moves), `strip_pixels`, `l_match` (Σ|M*|), `l_connect` (joins of disconnected contours),
+/// `contours`, `strips`, `odd_contours`; length = l_db + l_str + l_match + l_connect.
 ///
 /// # Complexity
 /// O(N) time and space.
@@ -135,6 +142,11 @@ pub fn milling25(region: &Region) -> Result<Solution> {
         }
     }
 
+    // The proof's "clearly, this graph is connected" fails when no strip reaches a hole's
+    // contour (e.g. a hole two pixels from the outer boundary all around): join such
+    // components by doubled grid edges, in Kruskal order over the grid.
+    let l_connect = connect_components(region, &mut graph);
+
     let walk = graph.into_walk(region, contours[0].walk[0]);
     let mut solution = Solution::default();
     solution.outputs.push(Output {
@@ -149,7 +161,45 @@ pub fn milling25(region: &Region) -> Result<Solution> {
     cert.insert("contours".into(), contours.len() as i64);
     cert.insert("strips".into(), strips.len() as i64);
     cert.insert("odd_contours".into(), odd_contours);
+    cert.insert("l_connect".into(), l_connect as i64);
     Ok(solution)
+}
+
+/// Joins the components of the multigraph by doubled grid edges; returns the moves added.
+fn connect_components(region: &Region, graph: &mut GridMultigraph) -> u64 {
+    let n = region.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn find(parent: &mut [usize], mut x: usize) -> usize {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        x
+    }
+    for i in 0..n {
+        for d in [Dir::E, Dir::N] {
+            if graph.count(i, d) > 0 {
+                let j = region.neighbor(i, d).expect("edges join region pixels");
+                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
+                parent[a] = b;
+            }
+        }
+    }
+    let mut added = 0;
+    for i in 0..n {
+        for d in [Dir::E, Dir::N] {
+            if let Some(j) = region.neighbor(i, d) {
+                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
+                if a != b {
+                    parent[a] = b;
+                    graph.add(i, j, d);
+                    graph.add(i, j, d);
+                    added += 2;
+                }
+            }
+        }
+    }
+    added
 }
 
 /// Maximal horizontal runs of pixels not on any contour, with their contour endpoints.

@@ -24,6 +24,7 @@ pub mod milling25;
 pub mod tsp65;
 // Turn-cost paper (issue 5).
 pub mod boundary_cc;
+pub mod coverage4;
 pub mod endpoint_matching;
 pub mod merge;
 pub mod star_cover;

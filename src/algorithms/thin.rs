@@ -52,8 +52,8 @@ fn cover_plus_centres(region: &Region, cover: &mut CycleCover) -> usize {
         }
     }
     let mut fallbacks = 0;
-    for c in 0..region.len() {
-        if visited[c] {
+    for (c, seen) in visited.iter_mut().enumerate() {
+        if *seen {
             continue;
         }
         let cp = region.pixel(c);
@@ -86,7 +86,7 @@ fn cover_plus_centres(region: &Region, cover: &mut CycleCover) -> usize {
             }
             fallbacks += 1;
         }
-        visited[c] = true;
+        *seen = true;
     }
     fallbacks
 }

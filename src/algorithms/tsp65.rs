@@ -27,15 +27,16 @@
 //!    is not in the text; from the proof's counts we construct (s = singleton node, t = the
 //!    other node of its column, a boundary node, D = the 2 × w block of doubleton columns
 //!    l..r, rows A (the row of the left singleton, else the bottom row) and B):
-//!    (a) one node: the edge s–t doubled (waste 1);
-//!    (b) two singletons in one row: the 4-cycle t1 s1 s2 t2 (waste 2; t1 t2 is not in C',
-//!        or Type II would have applied);
-//!    (c) only doubleton columns: the cycle around D (for w = 1 the edge doubled), tied to
-//!        its visited west neighbour by a doubled edge (waste 2);
-//!    (d) D plus one singleton: the cycle t s, along D's row of s to the far end, back along
-//!        the other row, t (waste 1);
-//!    (e), (f) D plus singletons at both ends, in the same row (e) or not (f): the cycle
-//!        t1 s1, row A of D, (r + 1, A), (r + 1, B), row B of D back, t1 (waste 2).
+//!    - (a) one node: the edge s–t doubled (waste 1);
+//!    - (b) two singletons in one row: the 4-cycle t1 s1 s2 t2 (waste 2; t1 t2 is not in C',
+//!      or Type II would have applied);
+//!    - (c) only doubleton columns: the cycle around D (for w = 1 the edge doubled), tied to
+//!      its visited west neighbour by a doubled edge (waste 2);
+//!    - (d) D plus one singleton: the cycle t s, along D's row of s to the far end, back along
+//!      the other row, t (waste 1);
+//!    - (e), (f) D plus singletons at both ends, in the same row (e) or not (f): the cycle
+//!      t1 s1, row A of D, (r + 1, A), (r + 1, B), row B of D back, t1 (waste 2).
+//!
 //!    A component of any other shape would contradict the proof; it is linked by a doubled
 //!    spanning tree and counted in the certificate `unexpected_components`.
 //!
@@ -111,7 +112,7 @@ impl LinkStats {
 /// # Returns
 /// One tour (objective length); certificates: blocks, bridges, bottlenecks, pieces, the
 /// detours and cases applied, the wasted edges, and `bound_6n_4_5` = ⌊(6N − 4)/5⌋ when the
-/// region has no cut vertices (the bound of Theorem 5 that the length must meet).
+/// region has no cut vertices and N ≥ 3 (the bound of Theorem 5 that the length must meet).
 ///
 /// # Complexity
 /// O(N) time and space for a region without cut vertices (three passes of the linear
@@ -174,7 +175,8 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
     cert.insert("bridges".into(), bridges);
     cert.insert("bottlenecks".into(), bottlenecks);
     cert.insert("pieces".into(), pieces);
-    if blocks.len() <= 1 && n >= 2 {
+    // Theorem 5 speaks of graphs with a cycle: a single edge (N = 2) is walked twice.
+    if blocks.len() == 1 && n >= 3 {
         cert.insert("bound_6n_4_5".into(), (6 * n as i64 - 4).div_euclid(5));
     }
     Ok(solution)
@@ -294,11 +296,11 @@ fn label_pieces(region: &Region, cut: &[[bool; 4]]) -> (Vec<u32>, usize) {
                 if cut[v][d.index()] {
                     continue;
                 }
-                if let Some(w) = region.neighbor(v, d) {
-                    if label[w] == u32::MAX {
-                        label[w] = count;
-                        stack.push(w);
-                    }
+                if let Some(w) = region.neighbor(v, d)
+                    && label[w] == u32::MAX
+                {
+                    label[w] = count;
+                    stack.push(w);
                 }
             }
         }
@@ -469,10 +471,10 @@ impl Linker<'_> {
                 break;
             }
             for (x, yb) in opened {
-                if let Some(a) = self.at(x, yb) {
-                    if self.unvisited[a] {
-                        self.type1_at(a);
-                    }
+                if let Some(a) = self.at(x, yb)
+                    && self.unvisited[a]
+                {
+                    self.type1_at(a);
                 }
             }
         }
@@ -504,11 +506,12 @@ impl Linker<'_> {
                     if q.y != yb && q.y != yb + 1 {
                         continue;
                     }
-                    if let Some(w) = self.region.index_of(q) {
-                        if self.unvisited[w] && mark.insert(w) {
-                            comp.push(w);
-                            stack.push(w);
-                        }
+                    if let Some(w) = self.region.index_of(q)
+                        && self.unvisited[w]
+                        && mark.insert(w)
+                    {
+                        comp.push(w);
+                        stack.push(w);
                     }
                 }
             }
@@ -742,3 +745,42 @@ pub const ALGORITHM: Algorithm = Algorithm {
     precondition,
     run: |region, _| tsp65(region),
 };
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blocks_of_two_squares_and_a_bridge() {
+        // Two 2×2 squares joined by a one-pixel corridor: blocks 2×2, three bridges, 2×2.
+        let r = Region::from_ascii("##..##\n######\n");
+        let blocks = biconnected_blocks(&r);
+        let mut sizes: Vec<usize> = blocks.iter().map(Vec::len).collect();
+        sizes.sort_unstable();
+        assert_eq!(sizes, vec![2, 2, 2, 4, 4]);
+        let sol = tsp65(&r).unwrap();
+        let rep = crate::checker::check(&r, &sol.outputs[0].cover, crate::checker::Mode::Milling);
+        assert!(rep.valid);
+        // Each square 4, each bridge twice.
+        assert_eq!(rep.length, 14);
+        assert!(!sol.certificates.contains_key("bound_6n_4_5"));
+    }
+
+    #[test]
+    fn bottleneck_splits_a_dumbbell() {
+        // Two 4×4 squares joined by a 2-wide corridor: the corridor's squares are bottlenecks.
+        let r = Region::from_ascii("####..####\n##########\n##########\n####..####\n");
+        let sol = tsp65(&r).unwrap();
+        assert!(sol.certificates["bottlenecks"] >= 1);
+        let rep = crate::checker::check(&r, &sol.outputs[0].cover, crate::checker::Mode::Milling);
+        assert!(rep.valid);
+        assert!(5 * rep.length + 4 <= 6 * r.len() as u64);
+    }
+
+    #[test]
+    fn case_a_on_the_three_by_three_square() {
+        let sol = tsp65(&Region::rectangle(3, 3)).unwrap();
+        assert_eq!(sol.certificates["case_a"], 1);
+        assert_eq!(sol.certificates["wasted_edges"], 1);
+    }
+}

@@ -15,7 +15,10 @@ pub(crate) struct UnionFind {
 
 impl UnionFind {
     pub fn new(n: usize) -> UnionFind {
-        UnionFind { parent: (0..n as u32).collect(), size: vec![1; n] }
+        UnionFind {
+            parent: (0..n as u32).collect(),
+            size: vec![1; n],
+        }
     }
 
     pub fn find(&mut self, mut a: usize) -> usize {
@@ -46,21 +49,25 @@ impl UnionFind {
         let n = self.parent.len();
         let mut label = vec![u32::MAX; n];
         let mut count = 0u32;
-        let mut out = vec![0u32; n];
-        for v in 0..n {
-            let r = self.find(v);
-            if label[r] == u32::MAX {
-                label[r] = count;
-                count += 1;
-            }
-            out[v] = label[r];
-        }
+        let out = (0..n)
+            .map(|v| {
+                let r = self.find(v);
+                if label[r] == u32::MAX {
+                    label[r] = count;
+                    count += 1;
+                }
+                label[r]
+            })
+            .collect();
         (out, count as usize)
     }
 }
 
 /// Connected components of a graph on `n` nodes given by its edges.
-pub(crate) fn components(n: usize, edges: impl IntoIterator<Item = (usize, usize)>) -> (Vec<u32>, usize) {
+pub(crate) fn components(
+    n: usize,
+    edges: impl IntoIterator<Item = (usize, usize)>,
+) -> (Vec<u32>, usize) {
     let mut uf = UnionFind::new(n);
     for (a, b) in edges {
         uf.union(a, b);
@@ -155,7 +162,10 @@ impl FlowGraph {
         let mut u = s;
         loop {
             if u == t {
-                let f = path.iter().map(|&k| self.cap[k]).fold(f64::INFINITY, f64::min);
+                let f = path
+                    .iter()
+                    .map(|&k| self.cap[k])
+                    .fold(f64::INFINITY, f64::min);
                 for &k in &path {
                     self.cap[k] -= f;
                     self.cap[k ^ 1] += f;
@@ -190,7 +200,11 @@ impl FlowGraph {
 /// Components of the positive-weight support come first; on a connected support, Gusfield's
 /// algorithm yields a minimum cut for every pair of nodes (through the Gomory–Hu tree), and
 /// each tree cut below the threshold is returned once.
-pub(crate) fn violated_cuts(n: usize, edges: &[(usize, usize, f64)], threshold: f64) -> Vec<Vec<bool>> {
+pub(crate) fn violated_cuts(
+    n: usize,
+    edges: &[(usize, usize, f64)],
+    threshold: f64,
+) -> Vec<Vec<bool>> {
     if n < 2 {
         return Vec::new();
     }
@@ -225,7 +239,11 @@ pub(crate) fn violated_cuts(n: usize, edges: &[(usize, usize, f64)], threshold: 
         }
         if f < threshold {
             // Normalize so that S excludes node 0.
-            let cut: Vec<bool> = if side[0] { side.iter().map(|&b| !b).collect() } else { side.clone() };
+            let cut: Vec<bool> = if side[0] {
+                side.iter().map(|&b| !b).collect()
+            } else {
+                side.clone()
+            };
             if seen.insert(cut.clone()) {
                 out.push(cut);
             }
@@ -237,7 +255,11 @@ pub(crate) fn violated_cuts(n: usize, edges: &[(usize, usize, f64)], threshold: 
 /// The weight of the cut `S` in the given graph.
 #[cfg(test)]
 pub(crate) fn cut_weight(edges: &[(usize, usize, f64)], s: &[bool]) -> f64 {
-    edges.iter().filter(|&&(a, b, _)| s[a] != s[b]).map(|e| e.2).sum()
+    edges
+        .iter()
+        .filter(|&&(a, b, _)| s[a] != s[b])
+        .map(|e| e.2)
+        .sum()
 }
 
 #[cfg(test)]

@@ -21,7 +21,9 @@
 //!
 //! The loop stops as soon as the incumbent meets the best bound; nothing else is optimal.
 
-use super::lp::{Deadline, Formulation, IncrementalLp, LpSolution, Outcome, Row, Settings, ceil_bound, solve_mip};
+use super::lp::{
+    Deadline, Formulation, IncrementalLp, LpSolution, Outcome, Row, Settings, ceil_bound, solve_mip,
+};
 use std::collections::HashSet;
 
 /// What a model gives the driver.
@@ -39,9 +41,6 @@ pub(crate) trait CutModel {
     /// solutions only become incumbents).
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         None
-    }
-    fn describe(&self, j: usize) -> String {
-        format!("col {j}")
     }
 }
 
@@ -120,7 +119,10 @@ impl<'m, M: CutModel> Loop<'m, M> {
     }
 
     fn round_integers(&self, x: &[f64]) -> Vec<f64> {
-        x.iter().zip(&self.f().integer).map(|(&v, &int)| if int { v.round() } else { v }).collect()
+        x.iter()
+            .zip(&self.f().integer)
+            .map(|(&v, &int)| if int { v.round() } else { v })
+            .collect()
     }
 
     fn accepts(&self, xi: &[f64]) -> bool {
@@ -131,15 +133,22 @@ impl<'m, M: CutModel> Loop<'m, M> {
     fn add_cuts(&mut self, cuts: Vec<Row>) -> Vec<Row> {
         let fresh: Vec<Row> = cuts
             .into_iter()
-            .filter(|r| self.seen.insert((r.idx.clone(), r.val.iter().map(|v| v.to_bits()).collect())))
+            .filter(|r| {
+                self.seen
+                    .insert((r.idx.clone(), r.val.iter().map(|v| v.to_bits()).collect()))
+            })
             .collect();
         self.pool.extend(fresh.iter().cloned());
         self.lp.add_rows(&fresh);
         fresh
     }
 
-    /// Re-solves and separates the LP until no cut is violated.
-    fn lp_phase(&mut self) -> Result<(), Stop> {
+    /// Re-solves and separates the LP until no cut is violated, or (unless `converge`) until
+    /// the LP value has stalled for a few rounds: the MIP rounds separate what is left.
+    fn lp_phase(&mut self, converge: bool) -> Result<(), Stop> {
+        const STALL_ROUNDS: u32 = 3;
+        let mut stalled = 0;
+        let mut last = f64::NEG_INFINITY;
         for _ in 0..1000 {
             if self.deadline.expired() {
                 return Err(Stop::TimeLimit);
@@ -155,14 +164,6 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 self.s.lp_bound = Some(self.s.lp_bound.map_or(b, |old| old.max(b)));
                 self.raise(b, "lp relaxation with cuts");
             }
-            if std::env::var("MOWMILL_DUMP").is_ok() {
-                eprintln!("LP {:.4}", sol.objective);
-                for (j, v) in sol.x.iter().enumerate() {
-                    if *v > 1e-7 {
-                        eprintln!("  {} = {v:.3}", self.model.describe(j));
-                    }
-                }
-            }
             let cuts = self.model.separate(&sol.x, false);
             let objective = sol.objective;
             self.last_lp = Some(sol);
@@ -170,8 +171,24 @@ impl<'m, M: CutModel> Loop<'m, M> {
             if fresh.is_empty() {
                 return Ok(());
             }
+            stalled = if objective > last + 1e-6 {
+                0
+            } else {
+                stalled + 1
+            };
+            last = last.max(objective);
+            if !converge && stalled >= STALL_ROUNDS {
+                self.log(|| format!("LP stalled at {objective:.3}"));
+                return Ok(());
+            }
             self.s.rounds += 1;
-            self.log(|| format!("LP round {}: value {objective:.3}, {} new cuts", self.s.rounds, fresh.len()));
+            self.log(|| {
+                format!(
+                    "LP round {}: value {objective:.3}, {} new cuts",
+                    self.s.rounds,
+                    fresh.len()
+                )
+            });
         }
         Ok(())
     }
@@ -179,7 +196,9 @@ impl<'m, M: CutModel> Loop<'m, M> {
     /// The model R: every solution better than the incumbent, with bounds from the model's
     /// own argument and from reduced costs.
     fn restricted(&self) -> Formulation {
-        let Some(u) = self.s.upper else { return self.f().clone() };
+        let Some(u) = self.s.upper else {
+            return self.f().clone();
+        };
         let target = u.saturating_sub(2);
         let mut g = self.f().clone();
         self.model.tighten(&mut g, target);
@@ -191,10 +210,9 @@ impl<'m, M: CutModel> Loop<'m, M> {
 
     /// A quick MIP with the model's heuristic caps, for an incumbent.
     fn heuristic_phase(&mut self) {
-        let Some(caps) = self.model.heuristic_caps() else { return };
-        if std::env::var("MOWMILL_NOHEUR").is_ok() {
+        let Some(caps) = self.model.heuristic_caps() else {
             return;
-        }
+        };
         let mut g = self.restricted();
         for (h, c) in g.hi.iter_mut().zip(&caps) {
             *h = h.min(*c);
@@ -202,8 +220,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
         for j in 0..g.num_cols() {
             g.lo[j] = g.lo[j].min(g.hi[j]);
         }
-        let frac: f64 = std::env::var("MOWMILL_HFRAC").ok().and_then(|v| v.parse().ok()).unwrap_or(0.25);
-        let budget = self.deadline.remaining().map_or(30.0, |r| r * frac);
+        let budget = self.deadline.remaining().map_or(30.0, |r| r * 0.25);
         let cap = Deadline::new(Some(budget));
         let start = self.s.best.clone().filter(|x| g.is_feasible(x, &self.pool));
         let mip = solve_mip(&g, &self.pool, start.as_deref(), &cap, self.settings);
@@ -223,12 +240,12 @@ impl<'m, M: CutModel> Loop<'m, M> {
     }
 
     fn finish(mut self, stop: Stop) -> Solved {
-        if let Some(u) = self.s.upper {
-            if self.s.lower >= u {
-                self.s.lower = u;
-                self.s.stop = Stop::Optimal;
-                return self.s;
-            }
+        if let Some(u) = self.s.upper
+            && self.s.lower >= u
+        {
+            self.s.lower = u;
+            self.s.stop = Stop::Optimal;
+            return self.s;
         }
         self.s.stop = match stop {
             Stop::Optimal => Stop::Error("internal: optimal without matching bounds".into()),
@@ -241,7 +258,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
         if self.done() {
             return self.finish(Stop::Optimal);
         }
-        if let Err(stop) = self.lp_phase() {
+        if let Err(stop) = self.lp_phase(false) {
             return self.finish(stop);
         }
         // An integral LP optimum that is feasible is optimal.
@@ -253,7 +270,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
         }
         if !self.done() {
             self.heuristic_phase();
-            if let Err(stop) = self.lp_phase() {
+            if let Err(stop) = self.lp_phase(false) {
                 return self.finish(stop);
             }
         }
@@ -265,7 +282,13 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 return self.finish(Stop::TimeLimit);
             }
             let restricted = self.restricted();
-            let mip = solve_mip(&restricted, &self.pool, self.s.best.as_deref(), self.deadline, self.settings);
+            let mip = solve_mip(
+                &restricted,
+                &self.pool,
+                self.s.best.as_deref(),
+                self.deadline,
+                self.settings,
+            );
             self.s.rounds += 1;
             match &mip.outcome {
                 Outcome::Failed(m) => return self.finish(Stop::Error(m.clone())),
@@ -291,13 +314,19 @@ impl<'m, M: CutModel> Loop<'m, M> {
                             self.offer(r, "repair");
                         }
                     }
-                    let stop = if self.done() { Stop::Optimal } else { Stop::TimeLimit };
+                    let stop = if self.done() {
+                        Stop::Optimal
+                    } else {
+                        Stop::TimeLimit
+                    };
                     return self.finish(stop);
                 }
                 Outcome::Optimal => {}
             }
             let Some(x) = &mip.x else {
-                return self.finish(Stop::Error("HiGHS reported an optimal MIP without a solution".into()));
+                return self.finish(Stop::Error(
+                    "HiGHS reported an optimal MIP without a solution".into(),
+                ));
             };
             // Optimal within an absolute gap below 2 on an even objective: the optimum of R.
             if let Some(b) = even_bound(mip.dual_bound.max(mip.objective - 1.99)) {
@@ -306,11 +335,22 @@ impl<'m, M: CutModel> Loop<'m, M> {
             let xi = self.round_integers(x);
             if self.accepts(&xi) {
                 self.offer(xi, "mip");
-                let stop = if self.done() { Stop::Optimal } else { Stop::Error("MIP optimum and bound disagree".into()) };
+                let stop = if self.done() {
+                    Stop::Optimal
+                } else {
+                    Stop::Error("MIP optimum and bound disagree".into())
+                };
                 return self.finish(stop);
             }
             let cuts = self.model.separate(&xi, true);
-            self.log(|| format!("MIP round {}: value {:.1}, {} violated cuts", self.s.rounds, mip.objective, cuts.len()));
+            self.log(|| {
+                format!(
+                    "MIP round {}: value {:.1}, {} violated cuts",
+                    self.s.rounds,
+                    mip.objective,
+                    cuts.len()
+                )
+            });
             if let Some(r) = self.model.repair(&xi) {
                 self.offer(r, "repair");
             }
@@ -318,9 +358,11 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 return self.finish(Stop::Optimal);
             }
             if self.add_cuts(cuts).is_empty() {
-                return self.finish(Stop::Error("separation found no cut for an infeasible integer solution".into()));
+                return self.finish(Stop::Error(
+                    "separation found no cut for an infeasible integer solution".into(),
+                ));
             }
-            if let Err(stop) = self.lp_phase() {
+            if let Err(stop) = self.lp_phase(false) {
                 return self.finish(stop);
             }
         }
@@ -354,16 +396,20 @@ pub(crate) fn run<M: CutModel>(
         lp: IncrementalLp::new(model.formulation(), *settings),
         last_lp: None,
     };
-    if let Some(x) = start {
-        if l.accepts(&x) {
-            l.offer(x, "start");
-        }
+    if let Some(x) = start
+        && l.accepts(&x)
+    {
+        l.offer(x, "start");
     }
     l.run()
 }
 
 /// The LP relaxation's bound with all its cuts (the LP phase alone), if it converges in time.
-pub(crate) fn lp_bound<M: CutModel>(model: &M, deadline: &Deadline, settings: &Settings) -> Option<u64> {
+pub(crate) fn lp_bound<M: CutModel>(
+    model: &M,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Option<u64> {
     let mut l = Loop {
         model,
         deadline,
@@ -382,7 +428,7 @@ pub(crate) fn lp_bound<M: CutModel>(model: &M, deadline: &Deadline, settings: &S
         lp: IncrementalLp::new(model.formulation(), *settings),
         last_lp: None,
     };
-    let _ = l.lp_phase();
+    let _ = l.lp_phase(true);
     l.s.lp_bound
 }
 

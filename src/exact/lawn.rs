@@ -33,9 +33,17 @@ impl<'a> LawnModel<'a> {
                 pairs.push((i as u32, j as u32));
             }
         }
-        let mut m = LawnModel { region, pairs, formulation: Formulation::default() };
+        let mut m = LawnModel {
+            region,
+            pairs,
+            formulation: Formulation::default(),
+        };
         for v in 0..n {
-            f.rows.push(Row::range((0..n).filter(|&w| w != v).map(|w| (m.col(v, w), 1.0)), 2.0, 2.0));
+            f.rows.push(Row::range(
+                (0..n).filter(|&w| w != v).map(|w| (m.col(v, w), 1.0)),
+                2.0,
+                2.0,
+            ));
         }
         m.formulation = f;
         m
@@ -84,8 +92,7 @@ impl<'a> LawnModel<'a> {
             let mut cycle = vec![s];
             seen[s] = true;
             let (mut prev, mut cur) = (usize::MAX, s);
-            loop {
-                let Some(&next) = adj[cur].iter().find(|&&w| w != prev && !seen[w]) else { break };
+            while let Some(&next) = adj[cur].iter().find(|&&w| w != prev && !seen[w]) {
                 seen[next] = true;
                 cycle.push(next);
                 prev = cur;
@@ -173,7 +180,11 @@ impl<'a> LawnModel<'a> {
                             continue; // that is where the segment came from
                         }
                         for rev in [false, true] {
-                            let (s0, s1) = if rev { (seg[len - 1], seg[0]) } else { (seg[0], seg[len - 1]) };
+                            let (s0, s1) = if rev {
+                                (seg[len - 1], seg[0])
+                            } else {
+                                (seg[0], seg[len - 1])
+                            };
                             if d(p, s0) + d(s1, q) - d(p, q) < gain {
                                 let mut t: Vec<usize> = rest[..=k].to_vec();
                                 if rev {
@@ -204,7 +215,10 @@ impl<'a> LawnModel<'a> {
         seen[0] = true;
         for _ in 1..n {
             let cur = *tour.last().expect("non-empty");
-            let next = (0..n).filter(|&w| !seen[w]).min_by_key(|&w| (self.dist(cur, w), w)).expect("unvisited");
+            let next = (0..n)
+                .filter(|&w| !seen[w])
+                .min_by_key(|&w| (self.dist(cur, w), w))
+                .expect("unvisited");
             seen[next] = true;
             tour.push(next);
         }
@@ -214,7 +228,12 @@ impl<'a> LawnModel<'a> {
 
     /// The unit-step walk of a cyclic order of pixels.
     pub fn walk(&self, order: &[usize]) -> Vec<Pixel> {
-        lawn_walk(&order.iter().map(|&v| self.region.pixel(v)).collect::<Vec<_>>())
+        lawn_walk(
+            &order
+                .iter()
+                .map(|&v| self.region.pixel(v))
+                .collect::<Vec<_>>(),
+        )
     }
 
     /// The cyclic pixel order of an integer solution with one cycle.
@@ -278,7 +297,12 @@ impl CutModel for LawnModel<'_> {
     }
 
     fn is_feasible(&self, x: &[f64]) -> bool {
-        let used = self.pairs.iter().enumerate().filter(|&(k, _)| x[k] > 0.5).map(|(_, &(i, j))| (i as usize, j as usize));
+        let used = self
+            .pairs
+            .iter()
+            .enumerate()
+            .filter(|&(k, _)| x[k] > 0.5)
+            .map(|(_, &(i, j))| (i as usize, j as usize));
         components(self.n(), used).1 == 1
     }
 

@@ -6,9 +6,12 @@
 //! whole model on every solve and exposes neither adding rows to a solved model (the cutting
 //! plane loop re-solves the LP from the previous basis, dual simplex, after each round of
 //! cuts), nor the LP's reduced costs (used for reduced-cost fixing), nor the MIP's dual bound
-//! (the proven `lower_bound` of a `time_limit` answer).
+//! (the proven `lower_bound` of a `time_limit` answer). `highs-sys` is used for one thing the
+//! `highs` crate lacks: with `--verbose`, HiGHS's log goes through its logging callback to
+//! stderr, so that stdout stays clean for `--json`.
 
 use highs::{Col, HighsModelStatus, Model, RowProblem, Sense};
+use std::ffi::{CStr, c_char, c_int, c_void};
 use std::time::Instant;
 
 /// One linear constraint `lo <= Σ val[k] · x[idx[k]] <= hi`.
@@ -46,7 +49,11 @@ impl Row {
 
     /// The row's activity at `x`.
     pub fn activity(&self, x: &[f64]) -> f64 {
-        self.idx.iter().zip(&self.val).map(|(&i, &v)| v * x[i as usize]).sum()
+        self.idx
+            .iter()
+            .zip(&self.val)
+            .map(|(&i, &v)| v * x[i as usize])
+            .sum()
     }
 
     /// How far `x` violates the row (0 when satisfied).
@@ -114,7 +121,12 @@ impl Formulation {
 }
 
 fn add_row_to_problem(pb: &mut RowProblem, cols: &[Col], r: &Row) {
-    let terms: Vec<(Col, f64)> = r.idx.iter().zip(&r.val).map(|(&i, &v)| (cols[i as usize], v)).collect();
+    let terms: Vec<(Col, f64)> = r
+        .idx
+        .iter()
+        .zip(&r.val)
+        .map(|(&i, &v)| (cols[i as usize], v))
+        .collect();
     match (r.lo.is_finite(), r.hi.is_finite()) {
         (true, true) => pb.add_row(r.lo..=r.hi, terms),
         (true, false) => pb.add_row(r.lo.., terms),
@@ -132,7 +144,10 @@ pub(crate) struct Deadline {
 
 impl Deadline {
     pub fn new(limit: Option<f64>) -> Deadline {
-        Deadline { start: Instant::now(), limit }
+        Deadline {
+            start: Instant::now(),
+            limit,
+        }
     }
 
     pub fn elapsed(&self) -> f64 {
@@ -156,10 +171,35 @@ pub(crate) struct Settings {
     pub verbose: bool,
 }
 
+/// HiGHS's log, sent to stderr so that stdout stays clean for `--json`.
+unsafe extern "C" fn log_to_stderr(
+    _kind: c_int,
+    message: *const c_char,
+    _out: *const highs_sys::HighsCallbackDataOut,
+    _in: *mut highs_sys::HighsCallbackDataIn,
+    _user: *mut c_void,
+) {
+    if !message.is_null() {
+        // SAFETY: HiGHS passes a NUL-terminated message that lives for the call.
+        let text = unsafe { CStr::from_ptr(message) };
+        eprint!("{}", text.to_string_lossy());
+    }
+}
+
 fn configure(model: &mut Model, s: &Settings) {
     if s.verbose {
         model.set_option("output_flag", true);
-        model.set_option("log_to_console", true);
+        model.set_option("log_to_console", false);
+        // SAFETY: the pointer is the live HiGHS instance owned by `model`; the callback is a
+        // plain function without user data.
+        unsafe {
+            highs_sys::Highs_setCallback(
+                model.as_mut_ptr(),
+                Some(log_to_stderr),
+                std::ptr::null_mut(),
+            );
+            highs_sys::Highs_startCallback(model.as_mut_ptr(), highs_sys::kHighsCallbackLogging);
+        }
     } else {
         model.make_quiet();
     }
@@ -168,7 +208,6 @@ fn configure(model: &mut Model, s: &Settings) {
     // in the bipartite grid), so an absolute gap below 2 proves optimality; no relative slack.
     model.set_option("mip_rel_gap", 0.0);
     model.set_option("mip_abs_gap", 1.99);
-    // TEMPORARY experiment hook.
     if let Ok(opts) = std::env::var("MOWMILL_HIGHS") {
         for kv in opts.split(',').filter(|s| !s.is_empty()) {
             let (k, v) = kv.split_once('=').expect("k=v");
@@ -198,7 +237,9 @@ pub(crate) enum Outcome {
 fn outcome(status: HighsModelStatus) -> Outcome {
     match status {
         HighsModelStatus::Optimal => Outcome::Optimal,
-        HighsModelStatus::ReachedTimeLimit | HighsModelStatus::ReachedInterrupt => Outcome::TimeLimit,
+        HighsModelStatus::ReachedTimeLimit | HighsModelStatus::ReachedInterrupt => {
+            Outcome::TimeLimit
+        }
         HighsModelStatus::Infeasible => Outcome::Infeasible,
         s => Outcome::Failed(format!("HiGHS ended with status {s:?}")),
     }
@@ -231,13 +272,24 @@ impl IncrementalLp {
         // Dual simplex re-solves from the previous basis after rows are added.
         model.set_option("presolve", "off");
         model.set_option("solver", "simplex");
-        IncrementalLp { model: Some(model), cols, spent: 0.0, rows: f.rows.len() }
+        IncrementalLp {
+            model: Some(model),
+            cols,
+            spent: 0.0,
+            rows: f.rows.len(),
+        }
     }
 
     pub fn add_rows(&mut self, rows: &[Row]) {
-        let Some(model) = self.model.as_mut() else { return };
+        let Some(model) = self.model.as_mut() else {
+            return;
+        };
         for r in rows {
-            let terms = r.idx.iter().zip(&r.val).map(|(&i, &v)| (self.cols[i as usize], v));
+            let terms = r
+                .idx
+                .iter()
+                .zip(&r.val)
+                .map(|(&i, &v)| (self.cols[i as usize], v));
             model.add_row(r.lo..=r.hi, terms);
         }
         self.rows += rows.len();
@@ -299,10 +351,11 @@ pub(crate) fn solve_mip(
     if let Some(r) = deadline.remaining() {
         model.set_option("time_limit", r.max(1e-3));
     }
-    if let Some(x) = start {
-        if f.is_feasible(x, extra) {
-            let _ = model.try_set_solution(Some(x), None, None, None);
-        }
+    if let Some(x) = start
+        && f.is_feasible(x, extra)
+    {
+        // A rejected start only costs HiGHS the search for its own first solution.
+        let _ = model.try_set_solution(Some(x), None, None, None);
     }
     let solved = match model.try_solve() {
         Ok(s) => s,
@@ -322,16 +375,27 @@ pub(crate) fn solve_mip(
     );
     let dual_bound = match out {
         Outcome::Infeasible => f64::INFINITY,
-        _ => solved.double_info_value(c"mip_dual_bound").unwrap_or(f64::NEG_INFINITY),
+        _ => solved
+            .double_info_value(c"mip_dual_bound")
+            .unwrap_or(f64::NEG_INFINITY),
     };
     let x = has_solution.then(|| solved.get_solution().columns().to_vec());
-    MipSolution { outcome: out, x, objective: solved.objective_value(), dual_bound }
+    MipSolution {
+        outcome: out,
+        x,
+        objective: solved.objective_value(),
+        dual_bound,
+    }
 }
 
 /// The smallest integer at least `b`, tolerating round-off of HiGHS's bounds.
 pub(crate) fn ceil_bound(b: f64) -> Option<u64> {
     if !b.is_finite() || b <= 0.0 {
-        return if b.is_finite() || b == f64::NEG_INFINITY { Some(0) } else { None };
+        return if b.is_finite() || b == f64::NEG_INFINITY {
+            Some(0)
+        } else {
+            None
+        };
     }
     Some((b - 1e-6).ceil().max(0.0) as u64)
 }
@@ -347,13 +411,19 @@ mod tests {
         let x = f.add_col(1.0, 0.0, 2.0, true);
         let y = f.add_col(1.0, 0.0, 2.0, true);
         f.rows.push(Row::at_least([(x, 1.0), (y, 1.0)], 1.5));
-        let s = Settings { threads: 1, verbose: false };
+        let s = Settings {
+            threads: 1,
+            verbose: false,
+        };
         let d = Deadline::new(Some(10.0));
         let mut lp = IncrementalLp::new(&f, s);
         let a = lp.solve(&d);
         assert_eq!(a.outcome, Outcome::Optimal);
         assert!((a.objective - 1.5).abs() < 1e-9);
-        lp.add_rows(&[Row::at_least([(x, 1.0)], 1.0), Row::at_least([(y, 1.0)], 1.0)]);
+        lp.add_rows(&[
+            Row::at_least([(x, 1.0)], 1.0),
+            Row::at_least([(y, 1.0)], 1.0),
+        ]);
         let b = lp.solve(&d);
         assert!((b.objective - 2.0).abs() < 1e-9);
         let m = solve_mip(&f, &[], Some(&[2.0, 0.0]), &d, &s);

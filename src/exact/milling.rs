@@ -37,10 +37,10 @@ impl<'a> MillingModel<'a> {
         for _ in &edges {
             f.add_col(1.0, 0.0, 2.0, true);
         }
-        for v in 0..n {
-            let deg = incident[v].len() as f64;
+        for at in &incident {
+            let deg = at.len() as f64;
             let z = f.add_col(0.0, 1.0, deg.max(1.0), true);
-            let terms = incident[v].iter().map(|&k| (k, 1.0)).chain([(z, -2.0)]);
+            let terms = at.iter().map(|&k| (k, 1.0)).chain([(z, -2.0)]);
             f.rows.push(Row::range(terms, 0.0, 0.0));
         }
         let edge_index: std::collections::HashMap<(usize, usize), usize> =
@@ -54,7 +54,13 @@ impl<'a> MillingModel<'a> {
                 squares.push([e(v, r), e(t, tr), e(v, t), e(r, tr)]);
             }
         }
-        MillingModel { region, edges, incident, squares, formulation: f }
+        MillingModel {
+            region,
+            edges,
+            incident,
+            squares,
+            formulation: f,
+        }
     }
 
     fn num_edges(&self) -> usize {
@@ -72,13 +78,20 @@ impl<'a> MillingModel<'a> {
     }
 
     pub fn multiplicities(&self, x: &[f64]) -> Vec<u32> {
-        x[..self.num_edges()].iter().map(|&v| v.round().max(0.0) as u32).collect()
+        x[..self.num_edges()]
+            .iter()
+            .map(|&v| v.round().max(0.0) as u32)
+            .collect()
     }
 
     /// Edge multiplicities of a closed walk, reduced to at most 2 per edge (same parity).
-    pub fn from_walk(&self, walk: &[Pixel]) -> Option<Vec<u32>> {
-        let index: std::collections::HashMap<(usize, usize), usize> =
-            self.edges.iter().enumerate().map(|(k, &e)| (e, k)).collect();
+    pub fn walk_multiplicities(&self, walk: &[Pixel]) -> Option<Vec<u32>> {
+        let index: std::collections::HashMap<(usize, usize), usize> = self
+            .edges
+            .iter()
+            .enumerate()
+            .map(|(k, &e)| (e, k))
+            .collect();
         let mut mult = vec![0u32; self.num_edges()];
         if walk.len() < 2 {
             return None;
@@ -98,7 +111,9 @@ impl<'a> MillingModel<'a> {
 
     /// The closed walk of a connected Eulerian multiplicity vector.
     pub fn walk(&self, mult: &[u32]) -> Vec<Pixel> {
-        let start = (0..self.num_edges()).find(|&k| mult[k] > 0).map_or(0, |k| self.edges[k].0);
+        let start = (0..self.num_edges())
+            .find(|&k| mult[k] > 0)
+            .map_or(0, |k| self.edges[k].0);
         euler_walk(self.region.len(), &self.edges, mult, start)
             .into_iter()
             .map(|v| self.region.pixel(v))
@@ -106,7 +121,9 @@ impl<'a> MillingModel<'a> {
     }
 
     fn labels(&self, mult: &[u32]) -> (Vec<u32>, usize) {
-        let used = (0..self.num_edges()).filter(|&k| mult[k] > 0).map(|k| self.edges[k]);
+        let used = (0..self.num_edges())
+            .filter(|&k| mult[k] > 0)
+            .map(|k| self.edges[k]);
         components(self.region.len(), used)
     }
 
@@ -162,10 +179,8 @@ impl<'a> MillingModel<'a> {
             }
             mult[k] = 0;
             let mut uf = UnionFind::new(self.region.len());
-            for j in 0..self.num_edges() {
-                if mult[j] > 0 {
-                    uf.union(self.edges[j].0, self.edges[j].1);
-                }
+            for (&(a, b), _) in self.edges.iter().zip(mult.iter()).filter(|&(_, &m)| m > 0) {
+                uf.union(a, b);
             }
             if uf.labels().1 != 1 {
                 mult[k] = 2;
@@ -180,8 +195,12 @@ impl CutModel for MillingModel<'_> {
     }
 
     fn separate(&self, x: &[f64], _integral: bool) -> Vec<Row> {
-        let weighted: Vec<(usize, usize, f64)> =
-            self.edges.iter().enumerate().map(|(k, &(a, b))| (a, b, x[k])).collect();
+        let weighted: Vec<(usize, usize, f64)> = self
+            .edges
+            .iter()
+            .enumerate()
+            .map(|(k, &(a, b))| (a, b, x[k]))
+            .collect();
         violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6)
             .into_iter()
             .map(|s| {

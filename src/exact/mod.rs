@@ -69,22 +69,31 @@ pub enum Objective {
 
 impl Objective {
     /// All objective names, as the CLI spells them.
-    pub const NAMES: [&'static str; 5] = ["length", "cc-turns", "tour-turns", "weighted", "lawn-tsp"];
+    pub const NAMES: [&'static str; 5] =
+        ["length", "cc-turns", "tour-turns", "weighted", "lawn-tsp"];
 
     /// The objective named `name`; `turn_cost` is required by, and only accepted with,
     /// `weighted`.
     pub fn parse(name: &str, turn_cost: Option<u32>) -> Result<Objective, String> {
         match (name.parse::<Objective>()?, turn_cost) {
             (Objective::Weighted { .. }, Some(c)) => Ok(Objective::Weighted { turn_cost: c }),
-            (Objective::Weighted { .. }, None) => Err("objective weighted needs --turn-cost C".into()),
+            (Objective::Weighted { .. }, None) => {
+                Err("objective weighted needs --turn-cost C".into())
+            }
             (o, None) => Ok(o),
-            (o, Some(_)) => Err(format!("--turn-cost applies to objective weighted, not {o}")),
+            (o, Some(_)) => Err(format!(
+                "--turn-cost applies to objective weighted, not {o}"
+            )),
         }
     }
 
     /// Milling or lawn mode for the checker.
     pub fn mode(self) -> Mode {
-        if self == Objective::LawnTsp { Mode::Lawn } else { Mode::Milling }
+        if self == Objective::LawnTsp {
+            Mode::Lawn
+        } else {
+            Mode::Milling
+        }
     }
 
     /// Whether the answer must be a single closed walk.
@@ -97,7 +106,9 @@ impl Objective {
         match self {
             Objective::Length | Objective::LawnTsp => report.length,
             Objective::CcTurns | Objective::TourTurns => report.turns,
-            Objective::Weighted { turn_cost } => report.length + u64::from(turn_cost) * report.turns,
+            Objective::Weighted { turn_cost } => {
+                report.length + u64::from(turn_cost) * report.turns
+            }
         }
     }
 }
@@ -125,7 +136,10 @@ impl FromStr for Objective {
             "tour-turns" => Ok(Objective::TourTurns),
             "weighted" => Ok(Objective::Weighted { turn_cost: 1 }),
             "lawn-tsp" => Ok(Objective::LawnTsp),
-            _ => Err(format!("unknown objective {s:?}: expected one of {}", Objective::NAMES.join(", "))),
+            _ => Err(format!(
+                "unknown objective {s:?}: expected one of {}",
+                Objective::NAMES.join(", ")
+            )),
         }
     }
 }
@@ -146,7 +160,12 @@ pub struct ExactOptions {
 
 impl Default for ExactOptions {
     fn default() -> Self {
-        ExactOptions { time_limit: None, threads: 1, verbose: false, warm_start: None }
+        ExactOptions {
+            time_limit: None,
+            threads: 1,
+            verbose: false,
+            warm_start: None,
+        }
     }
 }
 
@@ -217,11 +236,23 @@ struct Answer {
 
 impl Answer {
     fn trivial(cover: CycleCover, lower: Bound) -> Answer {
-        Answer { stop: Stop::Optimal, cover: Some(cover), lower, lp_bound: None, rounds: 0 }
+        Answer {
+            stop: Stop::Optimal,
+            cover: Some(cover),
+            lower,
+            lp_bound: None,
+            rounds: 0,
+        }
     }
 
     fn stopped(stop: Stop, lower: Bound) -> Answer {
-        Answer { stop, cover: None, lower, lp_bound: None, rounds: 0 }
+        Answer {
+            stop,
+            cover: None,
+            lower,
+            lp_bound: None,
+            rounds: 0,
+        }
     }
 }
 
@@ -254,9 +285,18 @@ impl Answer {
 /// ```
 pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> ExactResult {
     let deadline = Deadline::new(opts.time_limit);
-    let settings = Settings { threads: opts.threads.max(1), verbose: opts.verbose };
+    let settings = Settings {
+        threads: opts.threads.max(1),
+        verbose: opts.verbose,
+    };
     let answer = if region.is_empty() {
-        Answer::stopped(Stop::Error("the region is empty".into()), Bound { value: 0, source: "empty region" })
+        Answer::stopped(
+            Stop::Error("the region is empty".into()),
+            Bound {
+                value: 0,
+                source: "empty region",
+            },
+        )
     } else {
         match objective {
             Objective::Length => solve_length(region, opts, &deadline, &settings),
@@ -306,11 +346,20 @@ fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> E
         let report = checker::check(region, &cover, objective.mode());
         let value = objective.value_of(&report);
         if !report.valid {
-            message = Some(format!("internal: the checker rejected the cover: {}", report.error.unwrap_or_default()));
+            message = Some(format!(
+                "internal: the checker rejected the cover: {}",
+                report.error.unwrap_or_default()
+            ));
         } else if objective.is_tour() && report.cycles != 1 {
-            message = Some(format!("internal: a tour with {} closed walks", report.cycles));
+            message = Some(format!(
+                "internal: a tour with {} closed walks",
+                report.cycles
+            ));
         } else if value < a.lower.value {
-            message = Some(format!("internal: value {value} below the proven bound {}", a.lower.value));
+            message = Some(format!(
+                "internal: value {value} below the proven bound {}",
+                a.lower.value
+            ));
         } else {
             r.value = Some(value);
             r.length = Some(report.length);
@@ -339,7 +388,11 @@ fn not_connected(region: &Region) -> bool {
 }
 
 /// A warm-start cover accepted by the checker for this objective.
-fn checked_warm_start<'c>(region: &Region, objective: Objective, opts: &'c ExactOptions) -> Option<&'c CycleCover> {
+fn checked_warm_start<'c>(
+    region: &Region,
+    objective: Objective,
+    opts: &'c ExactOptions,
+) -> Option<&'c CycleCover> {
     let c = opts.warm_start.as_ref()?;
     let rep = checker::check(region, c, objective.mode());
     (rep.valid && (!objective.is_tour() || rep.cycles == 1)).then_some(c)
@@ -347,14 +400,28 @@ fn checked_warm_start<'c>(region: &Region, objective: Objective, opts: &'c Exact
 
 fn to_answer(s: Solved, cover: Option<CycleCover>, source_lower: Bound) -> Answer {
     let lower = if s.lower > source_lower.value {
-        Bound { value: s.lower, source: s.lower_source }
+        Bound {
+            value: s.lower,
+            source: s.lower_source,
+        }
     } else {
         source_lower
     };
-    Answer { stop: s.stop, cover, lower, lp_bound: s.lp_bound, rounds: s.rounds }
+    Answer {
+        stop: s.stop,
+        cover,
+        lower,
+        lp_bound: s.lp_bound,
+        rounds: s.rounds,
+    }
 }
 
-fn solve_length(region: &Region, opts: &ExactOptions, deadline: &Deadline, settings: &Settings) -> Answer {
+fn solve_length(
+    region: &Region,
+    opts: &ExactOptions,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Answer {
     let lower = bounds::length_lower_bound(region);
     if not_connected(region) {
         return Answer::stopped(Stop::Infeasible, lower);
@@ -365,15 +432,24 @@ fn solve_length(region: &Region, opts: &ExactOptions, deadline: &Deadline, setti
     let model = milling::MillingModel::new(region);
     let mut start = model.columns(&milling::tree_tour(&model));
     if let Some(mult) = checked_warm_start(region, Objective::Length, opts)
-        .and_then(|c| model.from_walk(&c.cycles[0]))
+        .and_then(|c| model.walk_multiplicities(&c.cycles[0]))
     {
         let x = model.columns(&mult);
         if model.formulation().objective(&x) < model.formulation().objective(&start) {
             start = x;
         }
     }
-    let s = driver::run(&model, Some(start), (lower.value, lower.source), deadline, settings);
-    let cover = s.best.as_ref().map(|x| CycleCover::tour(model.walk(&model.multiplicities(x))));
+    let s = driver::run(
+        &model,
+        Some(start),
+        (lower.value, lower.source),
+        deadline,
+        settings,
+    );
+    let cover = s
+        .best
+        .as_ref()
+        .map(|x| CycleCover::tour(model.walk(&model.multiplicities(x))));
     to_answer(s, cover, lower)
 }
 
@@ -404,7 +480,7 @@ fn solve_turns(
     let constant = 4 * model.isolated as u64;
     let value = |counts: &Vec<u32>| model.formulation().objective(&as_columns(counts));
     let warm = checked_warm_start(region, objective, opts)
-        .and_then(|c| model.from_walks(&c.cycles))
+        .and_then(|c| model.walk_counts(&c.cycles))
         .filter(|counts| model.is_feasible_counts(counts));
     let start = [warm, model.strip_solution()]
         .into_iter()
@@ -428,7 +504,10 @@ fn solve_turns(
         s.lp_bound = s.lp_bound.map(|b| b + constant);
         s
     };
-    let cover = s.best.as_ref().map(|x| CycleCover::new(model.walks(&model.counts(x))));
+    let cover = s
+        .best
+        .as_ref()
+        .map(|x| CycleCover::new(model.walks(&model.counts(x))));
     to_answer(s, cover, lower)
 }
 
@@ -436,7 +515,12 @@ fn as_columns(counts: &[u32]) -> Vec<f64> {
     counts.iter().map(|&c| f64::from(c)).collect()
 }
 
-fn solve_lawn(region: &Region, opts: &ExactOptions, deadline: &Deadline, settings: &Settings) -> Answer {
+fn solve_lawn(
+    region: &Region,
+    opts: &ExactOptions,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Answer {
     let lower = bounds::lawn_tsp_lower_bound(region);
     let n = region.len();
     if n <= 3 {
@@ -450,10 +534,10 @@ fn solve_lawn(region: &Region, opts: &ExactOptions, deadline: &Deadline, setting
         let mut seen = vec![false; n];
         let mut warm: Vec<usize> = Vec::new();
         for p in &c.cycles[0] {
-            if let Some(i) = region.index_of(*p) {
-                if !std::mem::replace(&mut seen[i], true) {
-                    warm.push(i);
-                }
+            if let Some(i) = region.index_of(*p)
+                && !std::mem::replace(&mut seen[i], true)
+            {
+                warm.push(i);
             }
         }
         model.improve(&mut warm);
@@ -462,21 +546,41 @@ fn solve_lawn(region: &Region, opts: &ExactOptions, deadline: &Deadline, setting
             order = warm;
         }
     }
-    let s = driver::run(&model, Some(model.columns(&order)), (lower.value, lower.source), deadline, settings);
-    let cover = s.best.as_ref().map(|x| CycleCover::tour(model.walk(&model.order(x))));
+    let s = driver::run(
+        &model,
+        Some(model.columns(&order)),
+        (lower.value, lower.source),
+        deadline,
+        settings,
+    );
+    let cover = s
+        .best
+        .as_ref()
+        .map(|x| CycleCover::tour(model.walk(&model.order(x))));
     to_answer(s, cover, lower)
 }
 
 /// The LP relaxation bound of an objective's exact model with all its connectivity cuts
 /// (rounded up to even), or `None` if it does not converge in time or does not apply.
-pub fn lp_relaxation_bound(region: &Region, objective: Objective, time_limit: Option<f64>) -> Option<u64> {
+pub fn lp_relaxation_bound(
+    region: &Region,
+    objective: Objective,
+    time_limit: Option<f64>,
+) -> Option<u64> {
     let deadline = Deadline::new(time_limit);
-    let settings = Settings { threads: 1, verbose: false };
-    if region.len() < 3 || (objective.is_tour() && objective != Objective::LawnTsp && not_connected(region)) {
+    let settings = Settings {
+        threads: 1,
+        verbose: false,
+    };
+    if region.len() < 3
+        || (objective.is_tour() && objective != Objective::LawnTsp && not_connected(region))
+    {
         return None;
     }
     match objective {
-        Objective::Length => driver::lp_bound(&milling::MillingModel::new(region), &deadline, &settings),
+        Objective::Length => {
+            driver::lp_bound(&milling::MillingModel::new(region), &deadline, &settings)
+        }
         Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. } => {
             let goal = match objective {
                 Objective::CcTurns => turns::TurnGoal::CycleCover,

@@ -6,6 +6,12 @@
 //! through `v` entering from side `a` and leaving through side `b`. Its turn cost is 0 when `a`
 //! and `b` are opposite (straight), 1 when they are perpendicular, 2 when `a = b` (U-turn).
 //!
+//! With turn costs only (`cc-turns`, `tour-turns`), U-turn variables exist only where the
+//! strip ends (no neighbour beyond): a U-turn at `v` with a neighbour `w` beyond it can be
+//! replaced by two straight passes through `v` and the U-turn at `w`, same turns and the same
+//! walks (only longer), and repeating this reaches the strip's end. This removes equivalent
+//! optima; `weighted` counts length and keeps every U-turn.
+//!
 //! **Constraints.** Coverage: `Σ_{ab} p_{v,ab} >= 1` for every pixel. Consistency: for every
 //! grid edge `{v, w}` (w on side `d` of v), the passage ends using side `d` of `v` equal those
 //! using the facing side of `w` (a U-turn counts twice): this is the edge's multiplicity
@@ -55,6 +61,16 @@ pub(crate) fn passage_turns(a: u8, b: u8) -> u32 {
     }
 }
 
+/// A merging move of [`PassageModel::connect`]: passages removed and added, and the cost
+/// change.
+struct Move {
+    delta: i64,
+    /// Columns losing one passage.
+    rem: Vec<usize>,
+    /// Passages gained, as (pixel, side, side).
+    add: Vec<(usize, u8, u8)>,
+}
+
 pub(crate) struct PassageModel<'a> {
     region: &'a Region,
     goal: TurnGoal,
@@ -80,11 +96,17 @@ impl<'a> PassageModel<'a> {
         let mut f = Formulation::default();
         let mut vars = Vec::new();
         let mut first = Vec::with_capacity(n + 1);
-        for v in 0..n {
+        for (v, around) in nb.iter().enumerate() {
             first.push(vars.len());
             for a in 0..4u8 {
                 for b in a..4u8 {
-                    if nb[v][a as usize] != NONE && nb[v][b as usize] != NONE {
+                    // With turn costs only, a U-turn can move on to the end of its strip
+                    // (see `add_passage`): no U-turn columns where the strip goes on.
+                    let inner_uturn = a == b && around[(a as usize + 2) % 4] != NONE;
+                    if inner_uturn && !matches!(goal, TurnGoal::Weighted(_)) {
+                        continue;
+                    }
+                    if around[a as usize] != NONE && around[b as usize] != NONE {
                         let t = f64::from(passage_turns(a, b));
                         let cost = match goal {
                             TurnGoal::Weighted(c) => 1.0 + f64::from(c) * t,
@@ -98,9 +120,9 @@ impl<'a> PassageModel<'a> {
         }
         first.push(vars.len());
         let mut edges = Vec::new();
-        for v in 0..n {
+        for (v, around) in nb.iter().enumerate() {
             for d in [Dir::E, Dir::N] {
-                let w = nb[v][d.index()];
+                let w = around[d.index()];
                 if w != NONE {
                     edges.push((v, d.index() as u8, w as usize));
                 }
@@ -117,14 +139,19 @@ impl<'a> PassageModel<'a> {
             formulation: Formulation::default(),
         };
         for &(v, d, w) in &m.edges {
-            let terms = m.side_terms(v, d).chain(m.side_terms(w, (d + 2) % 4).map(|(k, c)| (k, -c)));
+            let terms = m
+                .side_terms(v, d)
+                .chain(m.side_terms(w, (d + 2) % 4).map(|(k, c)| (k, -c)));
             f.rows.push(Row::range(terms, 0.0, 0.0));
         }
         for v in 0..n {
             if m.first[v] == m.first[v + 1] {
                 m.isolated += 1;
             } else {
-                f.rows.push(Row::at_least((m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)), 1.0));
+                f.rows.push(Row::at_least(
+                    (m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)),
+                    1.0,
+                ));
             }
         }
         m.formulation = f;
@@ -214,7 +241,10 @@ impl<'a> PassageModel<'a> {
         let count = count.min(64);
         let touch: Vec<u64> = (0..n)
             .map(|v| {
-                (0..4).filter(|&d| label[v * 4 + d] != u32::MAX && (label[v * 4 + d] as usize) < count)
+                (0..4)
+                    .filter(|&d| {
+                        label[v * 4 + d] != u32::MAX && (label[v * 4 + d] as usize) < count
+                    })
                     .fold(0u64, |m, d| m | 1u64 << label[v * 4 + d])
             })
             .collect();
@@ -232,14 +262,22 @@ impl<'a> PassageModel<'a> {
                     .collect()
             })
         };
-        let mut out: Vec<Row> = (0..count).filter_map(|c| try_q(1u64 << c)).map(|s| self.side_cut(&s)).collect();
+        let mut out: Vec<Row> = (0..count)
+            .filter_map(|c| try_q(1u64 << c))
+            .map(|s| self.side_cut(&s))
+            .collect();
         if out.is_empty() {
             // Unions: the components touching one pixel (valid whenever two pixels are
             // touched by disjoint sets of components).
             let mut qs: Vec<u64> = touch.clone();
             qs.sort_unstable();
             qs.dedup();
-            out.extend(qs.into_iter().filter_map(try_q).take(8).map(|s| self.side_cut(&s)));
+            out.extend(
+                qs.into_iter()
+                    .filter_map(try_q)
+                    .take(8)
+                    .map(|s| self.side_cut(&s)),
+            );
         }
         out
     }
@@ -258,7 +296,9 @@ impl<'a> PassageModel<'a> {
                 passages.push(self.vars[k]);
             }
         }
-        let walks = passage_walks(self.region.len(), &passages, |v, d| self.nb[v][d as usize] as usize);
+        let walks = passage_walks(self.region.len(), &passages, |v, d| {
+            self.nb[v][d as usize] as usize
+        });
         let mut out: Vec<Vec<Pixel>> = splice_walks(walks)
             .into_iter()
             .map(|w| w.into_iter().map(|v| self.region.pixel(v)).collect())
@@ -276,12 +316,45 @@ impl<'a> PassageModel<'a> {
         (self.first[v]..self.first[v + 1]).find(|&k| self.vars[k].a == a && self.vars[k].b == b)
     }
 
+    /// Adds one passage at `v` between sides `a` and `b`. A U-turn without a column (the strip
+    /// goes on beyond `v`) becomes two straight passages through `v` and a U-turn one pixel
+    /// further: same turns, two more moves. False if the passage is not possible at `v`.
+    fn add_passage(&self, counts: &mut [u32], v: usize, a: u8, b: u8) -> bool {
+        if let Some(k) = self.column(v, a, b) {
+            counts[k] += 1;
+            return true;
+        }
+        let beyond = self.nb[v][((a + 2) % 4) as usize];
+        if a != b || beyond == NONE || self.nb[v][a as usize] == NONE {
+            return false;
+        }
+        match self.column(v, a, (a + 2) % 4) {
+            Some(k) => counts[k] += 2,
+            None => return false,
+        }
+        self.add_passage(counts, beyond as usize, a, a)
+    }
+
+    /// The cost of a passage as `add_passage` realises it (i64::MAX / 4 if impossible).
+    fn passage_cost(&self, v: usize, a: u8, b: u8) -> i64 {
+        match self.column(v, a, b) {
+            Some(k) => self.cost(k) as i64,
+            None if a == b && self.nb[v][((a + 2) % 4) as usize] != NONE => {
+                self.passage_cost(self.nb[v][((a + 2) % 4) as usize] as usize, a, a)
+            }
+            None => i64::MAX / 4,
+        }
+    }
+
     /// Passage counts of closed walks (a one-pixel walk becomes a step to a neighbour and
     /// back, same turn count); `None` when a walk is not a walk of this region.
-    pub fn from_walks(&self, walks: &[Vec<Pixel>]) -> Option<Vec<u32>> {
+    pub fn walk_counts(&self, walks: &[Vec<Pixel>]) -> Option<Vec<u32>> {
         let mut counts = vec![0u32; self.vars.len()];
         for walk in walks {
-            let idx: Vec<usize> = walk.iter().map(|&p| self.region.index_of(p)).collect::<Option<_>>()?;
+            let idx: Vec<usize> = walk
+                .iter()
+                .map(|&p| self.region.index_of(p))
+                .collect::<Option<_>>()?;
             if idx.len() == 1 {
                 let v = idx[0];
                 if self.first[v] == self.first[v + 1] {
@@ -289,15 +362,19 @@ impl<'a> PassageModel<'a> {
                 }
                 let d = (0..4u8).find(|&d| self.nb[v][d as usize] != NONE)?;
                 let w = self.nb[v][d as usize] as usize;
-                counts[self.column(v, d, d)?] += 1;
-                counts[self.column(w, (d + 2) % 4, (d + 2) % 4)?] += 1;
+                let back = (d + 2) % 4;
+                if !self.add_passage(&mut counts, v, d, d) || !self.add_passage(&mut counts, w, back, back) {
+                    return None;
+                }
                 continue;
             }
             let m = idx.len();
             for i in 0..m {
                 let (prev, cur, next) = (idx[(i + m - 1) % m], idx[i], idx[(i + 1) % m]);
                 let side = |w: usize| (0..4u8).find(|&d| self.nb[cur][d as usize] == w as u32);
-                counts[self.column(cur, side(prev)?, side(next)?)?] += 1;
+                if !self.add_passage(&mut counts, cur, side(prev)?, side(next)?) {
+                    return None;
+                }
             }
         }
         Some(counts)
@@ -322,18 +399,17 @@ impl<'a> PassageModel<'a> {
                 return counts;
             }
             let comp = |v: usize, d: u8| label[v * 4 + d as usize];
-            // Moves: (cost change, removed columns, added (pixel, a, b)).
-            let mut best: Option<(i64, Vec<usize>, Vec<(usize, u8, u8)>)> = None;
+            let mut best: Option<Move> = None;
             let mut consider = |delta: i64, rem: Vec<usize>, add: Vec<(usize, u8, u8)>| {
-                if best.as_ref().is_none_or(|b| delta < b.0) {
-                    best = Some((delta, rem, add));
+                if best.as_ref().is_none_or(|b| delta < b.delta) {
+                    best = Some(Move { delta, rem, add });
                 }
             };
-            let cost_of = |v: usize, a: u8, b: u8| -> i64 {
-                self.column(v, a, b).map_or(i64::MAX / 4, |k| self.cost(k) as i64)
-            };
+            let cost_of = |v: usize, a: u8, b: u8| self.passage_cost(v, a, b);
             for v in 0..self.region.len() {
-                let here: Vec<usize> = (self.first[v]..self.first[v + 1]).filter(|&k| counts[k] > 0).collect();
+                let here: Vec<usize> = (self.first[v]..self.first[v + 1])
+                    .filter(|&k| counts[k] > 0)
+                    .collect();
                 // Re-pair two passages of different components at v.
                 for &k1 in &here {
                     for &k2 in &here {
@@ -362,7 +438,9 @@ impl<'a> PassageModel<'a> {
                             if comp(v, p.a) == comp(w, q.a) {
                                 continue;
                             }
-                            let delta = cost_of(v, p.a, s) + cost_of(v, s, p.b) + cost_of(w, q.a, t)
+                            let delta = cost_of(v, p.a, s)
+                                + cost_of(v, s, p.b)
+                                + cost_of(w, q.a, t)
                                 + cost_of(w, t, q.b)
                                 - self.cost(k) as i64
                                 - self.cost(j) as i64;
@@ -397,32 +475,45 @@ impl<'a> PassageModel<'a> {
                     // Replace one end of a passage at each corner.
                     let pick = |v: usize, side: u8| {
                         (self.first[v]..self.first[v + 1])
-                            .filter(|&k| counts[k] > 0 && (self.vars[k].a == side || self.vars[k].b == side))
+                            .filter(|&k| {
+                                counts[k] > 0 && (self.vars[k].a == side || self.vars[k].b == side)
+                            })
                             .min_by_key(|&k| self.cost(k))
                     };
-                    let (Some(k1), Some(k2), Some(k3), Some(k4)) = (pick(v1, d), pick(v2, e), pick(w1, d), pick(w2, e))
+                    let (Some(k1), Some(k2), Some(k3), Some(k4)) =
+                        (pick(v1, d), pick(v2, e), pick(w1, d), pick(w2, e))
                     else {
                         continue;
                     };
                     let swap_end = |k: usize, from: u8, to: u8| {
                         let p = self.vars[k];
-                        if p.a == from { (p.pixel, to, p.b) } else { (p.pixel, p.a, to) }
+                        if p.a == from {
+                            (p.pixel, to, p.b)
+                        } else {
+                            (p.pixel, p.a, to)
+                        }
                     };
-                    let add = vec![swap_end(k1, d, s), swap_end(k2, e, s), swap_end(k3, d, t), swap_end(k4, e, t)];
+                    let add = vec![
+                        swap_end(k1, d, s),
+                        swap_end(k2, e, s),
+                        swap_end(k3, d, t),
+                        swap_end(k4, e, t),
+                    ];
                     let rem = vec![k1, k2, k3, k4];
                     let delta: i64 = add.iter().map(|&(v, a, b)| cost_of(v, a, b)).sum::<i64>()
                         - rem.iter().map(|&k| self.cost(k) as i64).sum::<i64>();
                     consider(delta, rem, add);
                 }
             }
-            let Some((_, rem, add)) = best else { return counts };
+            let Some(Move { rem, add, .. }) = best else {
+                return counts;
+            };
             for k in rem {
                 counts[k] -= 1;
             }
             for (v, a, b) in add {
-                match self.column(v, a, b) {
-                    Some(k) => counts[k] += 1,
-                    None => return counts,
+                if !self.add_passage(&mut counts, v, a, b) {
+                    return counts;
                 }
             }
         }
@@ -438,8 +529,11 @@ impl CutModel for PassageModel<'_> {
         if !self.needs_connectivity() {
             return Vec::new();
         }
-        let weighted: Vec<(usize, usize, f64)> =
-            self.edges.iter().map(|&(v, d, w)| (v, w, self.side_usage(x, v, d))).collect();
+        let weighted: Vec<(usize, usize, f64)> = self
+            .edges
+            .iter()
+            .map(|&(v, d, w)| (v, w, self.side_usage(x, v, d)))
+            .collect();
         let cuts = violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6);
         if !cuts.is_empty() {
             return cuts
@@ -459,7 +553,8 @@ impl CutModel for PassageModel<'_> {
 
     fn repair(&self, x: &[f64]) -> Option<Vec<f64>> {
         let counts = self.connect(self.counts(x));
-        self.is_feasible_counts(&counts).then(|| counts.iter().map(|&c| f64::from(c)).collect())
+        self.is_feasible_counts(&counts)
+            .then(|| counts.iter().map(|&c| f64::from(c)).collect())
     }
 
     /// In a solution with at most T turns, a passage of turn cost c is used at most T / c times
@@ -478,7 +573,11 @@ impl CutModel for PassageModel<'_> {
         };
         for (k, p) in self.vars.iter().enumerate() {
             let c = f.cost[k];
-            let mut hi = if c > 0.0 { ((target - rest).max(0.0) / c).floor() } else { f64::INFINITY };
+            let mut hi = if c > 0.0 {
+                ((target - rest).max(0.0) / c).floor()
+            } else {
+                f64::INFINITY
+            };
             if passage_turns(p.a, p.b) == 0 {
                 hi = hi.min((turn_budget / 2.0).floor());
             }
@@ -488,11 +587,6 @@ impl CutModel for PassageModel<'_> {
 
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         Some(vec![2.0; self.vars.len()])
-    }
-    fn describe(&self, j: usize) -> String {
-        let p = self.vars[j];
-        let n = ["E", "N", "W", "S"];
-        format!("{} {}{}", self.region.pixel(p.pixel), n[p.a as usize], n[p.b as usize])
     }
 }
 
@@ -511,8 +605,12 @@ impl PassageModel<'_> {
             }
             walks.push(walk);
         }
-        let counts = self.from_walks(&walks)?;
-        let counts = if self.needs_connectivity() { self.connect(counts) } else { counts };
+        let counts = self.walk_counts(&walks)?;
+        let counts = if self.needs_connectivity() {
+            self.connect(counts)
+        } else {
+            counts
+        };
         self.is_feasible_counts(&counts).then_some(counts)
     }
 }

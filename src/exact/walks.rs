@@ -9,7 +9,12 @@ use std::collections::HashMap;
 /// (its length is the total multiplicity), starting at `start`. Every vertex must have even
 /// degree and the edges with positive multiplicity must form one connected graph containing
 /// `start`.
-pub(crate) fn euler_walk(n: usize, edges: &[(usize, usize)], mult: &[u32], start: usize) -> Vec<usize> {
+pub(crate) fn euler_walk(
+    n: usize,
+    edges: &[(usize, usize)],
+    mult: &[u32],
+    start: usize,
+) -> Vec<usize> {
     let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut left: Vec<u32> = mult.to_vec();
     for (k, &(a, b)) in edges.iter().enumerate() {
@@ -74,7 +79,13 @@ pub(crate) fn passage_walks(
             list.push((k as u32, end));
         }
     }
-    let side_of = |k: usize, end: u8| if end == 0 { passages[k].a } else { passages[k].b };
+    let side_of = |k: usize, end: u8| {
+        if end == 0 {
+            passages[k].a
+        } else {
+            passages[k].b
+        }
+    };
     let mut used = vec![false; passages.len()];
     let mut walks = Vec::new();
     for first in 0..passages.len() {
@@ -166,7 +177,11 @@ mod tests {
         assert_eq!(w.len(), 4);
         for i in 0..4 {
             let (a, b) = (w[i], w[(i + 1) % 4]);
-            assert!([(0, 1), (1, 3), (3, 2), (2, 0)].iter().any(|&e| e == (a, b) || e == (b, a)));
+            assert!(
+                [(0, 1), (1, 3), (3, 2), (2, 0)]
+                    .iter()
+                    .any(|&e| e == (a, b) || e == (b, a))
+            );
         }
     }
 
