@@ -40,11 +40,25 @@ impl std::str::FromStr for Mode {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Violation {
     NoCycles,
-    EmptyCycle { cycle: usize },
+    EmptyCycle {
+        cycle: usize,
+    },
     /// Step from position `step` to the next (the last step closes the walk).
-    NotUnitMove { cycle: usize, step: usize, from: Pixel, to: Pixel },
-    OutsideRegion { cycle: usize, position: usize, pixel: Pixel },
-    NotVisited { pixel: Pixel, missing: usize },
+    NotUnitMove {
+        cycle: usize,
+        step: usize,
+        from: Pixel,
+        to: Pixel,
+    },
+    OutsideRegion {
+        cycle: usize,
+        position: usize,
+        pixel: Pixel,
+    },
+    NotVisited {
+        pixel: Pixel,
+        missing: usize,
+    },
 }
 
 impl fmt::Display for Violation {
@@ -52,14 +66,32 @@ impl fmt::Display for Violation {
         match self {
             Violation::NoCycles => write!(f, "the cover has no closed walk"),
             Violation::EmptyCycle { cycle } => write!(f, "cycle {cycle} is empty"),
-            Violation::NotUnitMove { cycle, step, from, to } => {
-                write!(f, "cycle {cycle}, step {step}: {from} -> {to} is not a unit move")
+            Violation::NotUnitMove {
+                cycle,
+                step,
+                from,
+                to,
+            } => {
+                write!(
+                    f,
+                    "cycle {cycle}, step {step}: {from} -> {to} is not a unit move"
+                )
             }
-            Violation::OutsideRegion { cycle, position, pixel } => {
-                write!(f, "cycle {cycle}, position {position}: pixel {pixel} is outside the region")
+            Violation::OutsideRegion {
+                cycle,
+                position,
+                pixel,
+            } => {
+                write!(
+                    f,
+                    "cycle {cycle}, position {position}: pixel {pixel} is outside the region"
+                )
             }
             Violation::NotVisited { pixel, missing } => {
-                write!(f, "pixel {pixel} is not visited ({missing} pixels unvisited in all)")
+                write!(
+                    f,
+                    "pixel {pixel} is not visited ({missing} pixels unvisited in all)"
+                )
             }
         }
     }
@@ -96,7 +128,9 @@ pub fn walk_cost(walk: &[Pixel]) -> Result<(u64, u64), (usize, Pixel, Pixel)> {
         let (a, b) = (walk[i], walk[(i + 1) % m]);
         dirs.push(a.dir_to(b).ok_or((i, a, b))?);
     }
-    let turns = (0..m).map(|i| u64::from(dirs[(i + m - 1) % m].turn_to(dirs[i]))).sum();
+    let turns = (0..m)
+        .map(|i| u64::from(dirs[(i + m - 1) % m].turn_to(dirs[i])))
+        .sum();
     Ok((m as u64, turns))
 }
 
@@ -123,7 +157,12 @@ pub fn check(region: &Region, cover: &CycleCover, mode: Mode) -> Report {
     report
 }
 
-fn recount(region: &Region, cover: &CycleCover, mode: Mode, report: &mut Report) -> Option<Violation> {
+fn recount(
+    region: &Region,
+    cover: &CycleCover,
+    mode: Mode,
+    report: &mut Report,
+) -> Option<Violation> {
     if cover.cycles.is_empty() {
         return Some(Violation::NoCycles);
     }
@@ -136,13 +175,24 @@ fn recount(region: &Region, cover: &CycleCover, mode: Mode, report: &mut Report)
                 report.length += length;
                 report.turns += turns;
             }
-            Err((step, from, to)) => return Some(Violation::NotUnitMove { cycle: c, step, from, to }),
+            Err((step, from, to)) => {
+                return Some(Violation::NotUnitMove {
+                    cycle: c,
+                    step,
+                    from,
+                    to,
+                });
+            }
         }
         for (position, &pixel) in walk.iter().enumerate() {
             match region.index_of(pixel) {
                 Some(i) => report.coverage[i] += 1,
                 None if mode == Mode::Milling => {
-                    return Some(Violation::OutsideRegion { cycle: c, position, pixel });
+                    return Some(Violation::OutsideRegion {
+                        cycle: c,
+                        position,
+                        pixel,
+                    });
                 }
                 None => {}
             }
@@ -150,7 +200,10 @@ fn recount(region: &Region, cover: &CycleCover, mode: Mode, report: &mut Report)
     }
     let missing = report.coverage.iter().filter(|&&k| k == 0).count();
     let first = report.coverage.iter().position(|&k| k == 0)?;
-    Some(Violation::NotVisited { pixel: region.pixel(first), missing })
+    Some(Violation::NotVisited {
+        pixel: region.pixel(first),
+        missing,
+    })
 }
 
 #[cfg(test)]
@@ -169,7 +222,10 @@ mod tests {
         let c = CycleCover::tour(walk(&[(0, 0), (1, 0), (1, 1), (1, 2), (0, 2), (0, 1)]));
         let rep = check(&r, &c, Mode::Milling);
         assert!(rep.valid, "{:?}", rep.error);
-        assert_eq!((rep.length, rep.turns, rep.cycles, rep.max_coverage), (6, 4, 1, 1));
+        assert_eq!(
+            (rep.length, rep.turns, rep.cycles, rep.max_coverage),
+            (6, 4, 1, 1)
+        );
     }
 
     #[test]
@@ -186,7 +242,16 @@ mod tests {
         let r = Region::rectangle(3, 3);
         // Up the left column's neighbour rows in a zig-zag, back down column 0.
         let c = CycleCover::tour(walk(&[
-            (0, 0), (1, 0), (2, 0), (2, 1), (1, 1), (1, 2), (2, 2), (1, 2), (0, 2), (0, 1),
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (2, 1),
+            (1, 1),
+            (1, 2),
+            (2, 2),
+            (1, 2),
+            (0, 2),
+            (0, 1),
         ]));
         let rep = check(&r, &c, Mode::Milling);
         assert!(rep.valid, "{:?}", rep.error);
@@ -209,12 +274,23 @@ mod tests {
         let partial = CycleCover::tour(walk(&[(0, 0), (1, 0)]));
         let rep = check(&r, &partial, Mode::Milling);
         assert!(!rep.valid);
-        assert_eq!(rep.error.unwrap(), "pixel (0, 1) is not visited (2 pixels unvisited in all)");
-        assert_eq!(check(&r, &CycleCover::default(), Mode::Milling).violation, Some(Violation::NoCycles));
+        assert_eq!(
+            rep.error.unwrap(),
+            "pixel (0, 1) is not visited (2 pixels unvisited in all)"
+        );
+        assert_eq!(
+            check(&r, &CycleCover::default(), Mode::Milling).violation,
+            Some(Violation::NoCycles)
+        );
         let closing = CycleCover::tour(walk(&[(0, 0), (1, 0), (1, 1)]));
         assert_eq!(
             check(&r, &closing, Mode::Milling).violation,
-            Some(Violation::NotUnitMove { cycle: 0, step: 2, from: Pixel::new(1, 1), to: Pixel::new(0, 0) })
+            Some(Violation::NotUnitMove {
+                cycle: 0,
+                step: 2,
+                from: Pixel::new(1, 1),
+                to: Pixel::new(0, 0)
+            })
         );
     }
 
@@ -241,7 +317,11 @@ mod tests {
     fn snake(w: i32, h: i32) -> Vec<Pixel> {
         let mut out = Vec::new();
         for y in 0..h {
-            let xs: Vec<i32> = if y % 2 == 0 { (1..w).collect() } else { (1..w).rev().collect() };
+            let xs: Vec<i32> = if y % 2 == 0 {
+                (1..w).collect()
+            } else {
+                (1..w).rev().collect()
+            };
             out.extend(xs.into_iter().map(|x| Pixel::new(x, y)));
         }
         out.extend((0..h).rev().map(|y| Pixel::new(0, y)));

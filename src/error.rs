@@ -9,7 +9,12 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 pub enum Error {
     /// Malformed input: `file:line:column: message` (line and column start at 1).
     #[error("{file}:{line}:{column}: {message}")]
-    Parse { file: String, line: usize, column: usize, message: String },
+    Parse {
+        file: String,
+        line: usize,
+        column: usize,
+        message: String,
+    },
 
     /// A file could not be read or written.
     #[error("{file}: {source}")]
@@ -27,11 +32,19 @@ pub enum Error {
 
 impl Error {
     pub fn parse(file: &str, line: usize, column: usize, message: impl Into<String>) -> Error {
-        Error::Parse { file: file.to_string(), line, column, message: message.into() }
+        Error::Parse {
+            file: file.to_string(),
+            line,
+            column,
+            message: message.into(),
+        }
     }
 
     pub fn io(file: &Path, source: std::io::Error) -> Error {
-        Error::Io { file: file.display().to_string(), source }
+        Error::Io {
+            file: file.display().to_string(),
+            source,
+        }
     }
 
     pub fn invalid(message: impl Into<String>) -> Error {

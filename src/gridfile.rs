@@ -87,7 +87,8 @@ impl GridFile {
                 "empty region: expected at least one '#' pixel",
             ));
         }
-        let region = Region::from_pixels(pixels).map_err(|e| Error::parse(file, 1, 1, e.to_string()))?;
+        let region =
+            Region::from_pixels(pixels).map_err(|e| Error::parse(file, 1, 1, e.to_string()))?;
         Ok(GridFile { comments, region })
     }
 
@@ -99,7 +100,12 @@ impl GridFile {
             let upto = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let line = upto.iter().filter(|&&b| b == b'\n').count() + 1;
             let col = upto.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-            Error::parse(&name, line, col, "invalid UTF-8: expected a UTF-8 text file")
+            Error::parse(
+                &name,
+                line,
+                col,
+                "invalid UTF-8: expected a UTF-8 text file",
+            )
         })?;
         GridFile::parse(&text, &name)
     }
@@ -126,7 +132,11 @@ impl GridFile {
         s.reserve((b.max_x as usize + 2) * (b.max_y as usize + 1));
         for y in (0..=b.max_y).rev() {
             for x in 0..=b.max_x {
-                s.push(if self.region.contains(Pixel::new(x, y)) { '#' } else { '.' });
+                s.push(if self.region.contains(Pixel::new(x, y)) {
+                    '#'
+                } else {
+                    '.'
+                });
             }
             s.push('\n');
         }
@@ -148,16 +158,26 @@ mod tests {
         let f = GridFile::parse("; family: test\n; seed: 7\n#..\n##\n", "a.grid").unwrap();
         assert_eq!(f.meta("family"), Some("test"));
         assert_eq!(f.meta("seed"), Some("7"));
-        assert_eq!(f.region.pixels(), &[Pixel::new(0, 0), Pixel::new(1, 0), Pixel::new(0, 1)]);
+        assert_eq!(
+            f.region.pixels(),
+            &[Pixel::new(0, 0), Pixel::new(1, 0), Pixel::new(0, 1)]
+        );
         assert_eq!(f.to_text().unwrap(), "; family: test\n; seed: 7\n#.\n##\n");
     }
 
     #[test]
     fn errors_name_line_and_column() {
         let e = GridFile::parse("; c\n##\n#x#\n", "bad.grid").unwrap_err();
-        assert!(e.to_string().starts_with("bad.grid:3:2: unexpected character 'x'"), "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("bad.grid:3:2: unexpected character 'x'"),
+            "{e}"
+        );
         let e = GridFile::parse("; only comments\n...\n", "empty.grid").unwrap_err();
-        assert!(e.to_string().starts_with("empty.grid:2:1: empty region"), "{e}");
+        assert!(
+            e.to_string().starts_with("empty.grid:2:1: empty region"),
+            "{e}"
+        );
         let e = GridFile::parse("", "void.grid").unwrap_err();
         assert!(e.to_string().contains("empty region"), "{e}");
     }

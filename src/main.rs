@@ -16,7 +16,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "mowmill", version, about = "Benchmark harness for covering tours of grid polygons")]
+#[command(
+    name = "mowmill",
+    version,
+    about = "Benchmark harness for covering tours of grid polygons"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -147,9 +151,13 @@ struct BenchArgs {
 }
 
 fn parse_shard(s: &str) -> Result<(usize, usize), String> {
-    let (i, n) = s.split_once('/').ok_or_else(|| format!("expected I/N, got {s:?}"))?;
-    let (i, n): (usize, usize) =
-        (i.parse().map_err(|_| format!("bad shard index {i:?}"))?, n.parse().map_err(|_| format!("bad shard count {n:?}"))?);
+    let (i, n) = s
+        .split_once('/')
+        .ok_or_else(|| format!("expected I/N, got {s:?}"))?;
+    let (i, n): (usize, usize) = (
+        i.parse().map_err(|_| format!("bad shard index {i:?}"))?,
+        n.parse().map_err(|_| format!("bad shard count {n:?}"))?,
+    );
     if n == 0 || i >= n {
         return Err(format!("shard {i}/{n}: expected 0 <= I < N"));
     }
@@ -279,7 +287,12 @@ fn run(cli: Cli) -> Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Validate { file, tour, mode, json } => {
+        Command::Validate {
+            file,
+            tour,
+            mode,
+            json,
+        } => {
             let inst = Instance::read(&file)?;
             let cover = CycleCover::read(&tour)?;
             let report = checker::check(&inst.region, &cover, mode);
@@ -293,7 +306,11 @@ fn run(cli: Cli) -> Result<ExitCode> {
             } else {
                 println!("invalid: {}", report.error.as_deref().unwrap_or("?"));
             }
-            Ok(if report.valid { ExitCode::SUCCESS } else { ExitCode::from(1) })
+            Ok(if report.valid {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            })
         }
         Command::Solve(args) => solve_command(args),
         Command::Bench(args) => bench_command(args),
@@ -306,13 +323,25 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
         Command::Merge { dirs, out } => {
             let n = harness::merge::merge(&dirs, &out)?;
-            eprintln!("merged {} shard(s), {n} rows, into {}", dirs.len(), out.display());
+            eprintln!(
+                "merged {} shard(s), {n} rows, into {}",
+                dirs.len(),
+                out.display()
+            );
             Ok(ExitCode::SUCCESS)
         }
-        Command::Gate { baseline, current, tolerance } => {
+        Command::Gate {
+            baseline,
+            current,
+            tolerance,
+        } => {
             let report = harness::gate::gate(&baseline, &current, tolerance)?;
             print!("{}", report.table());
-            Ok(if report.passed() { ExitCode::SUCCESS } else { ExitCode::from(1) })
+            Ok(if report.passed() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            })
         }
         Command::Algos { json } => {
             let list: Vec<serde_json::Value> = algorithms::REGISTRY
@@ -338,13 +367,21 @@ fn run(cli: Cli) -> Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
-        Command::Draw { file, tour, out, title } => {
+        Command::Draw {
+            file,
+            tour,
+            out,
+            title,
+        } => {
             let inst = Instance::read(&file)?;
             let cover = tour.as_deref().map(CycleCover::read).transpose()?;
             let mut caption = format!("N = {}", inst.region.len());
             if let Some(c) = &cover {
                 let r = checker::check(&inst.region, c, Mode::Milling);
-                caption += &format!(", length {}, turns {}, {} cycle(s)", r.length, r.turns, r.cycles);
+                caption += &format!(
+                    ", length {}, turns {}, {} cycle(s)",
+                    r.length, r.turns, r.cycles
+                );
                 if !r.valid {
                     caption += " (not a valid milling cover)";
                 }
@@ -362,7 +399,8 @@ fn run(cli: Cli) -> Result<ExitCode> {
 }
 
 fn exact_command(a: ExactArgs) -> Result<ExitCode> {
-    let objective = exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
+    let objective =
+        exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
     let inst = Instance::read(&a.file)?;
     let opts = exact::ExactOptions {
         time_limit: a.time_limit,
@@ -386,11 +424,19 @@ fn exact_command(a: ExactArgs) -> Result<ExitCode> {
             result.lb_source,
             result.seconds,
             result.rounds,
-            result.message.as_deref().map(|m| format!(" — {m}")).unwrap_or_default()
+            result
+                .message
+                .as_deref()
+                .map(|m| format!(" — {m}"))
+                .unwrap_or_default()
         );
     }
     let ok = result.valid && !matches!(result.status, exact::Status::Error);
-    Ok(if ok { ExitCode::SUCCESS } else { ExitCode::from(1) })
+    Ok(if ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 fn bench_command(a: BenchArgs) -> Result<ExitCode> {
@@ -400,9 +446,12 @@ fn bench_command(a: BenchArgs) -> Result<ExitCode> {
         // A resumed run continues with the config it recorded.
         (None, Some(dir)) => {
             let path = dir.join("manifest.json");
-            let text = std::fs::read_to_string(&path).with_context(|| format!("reading {}", path.display()))?;
-            let v: serde_json::Value = serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
-            let toml_text = toml::to_string(&v["config"]).context("re-encoding the recorded config")?;
+            let text = std::fs::read_to_string(&path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            let v: serde_json::Value = serde_json::from_str(&text)
+                .with_context(|| format!("parsing {}", path.display()))?;
+            let toml_text =
+                toml::to_string(&v["config"]).context("re-encoding the recorded config")?;
             Config::parse(&toml_text, &path.display().to_string())?
         }
         (None, None) => Config::parse(harness::DEFAULT_CONFIG, "built-in default suite")?,
@@ -412,7 +461,11 @@ fn bench_command(a: BenchArgs) -> Result<ExitCode> {
         Some(dir) => harness::manifest::read_run_id(dir).unwrap_or_else(|| config.name.clone()),
         None => match std::env::var("SLURM_ARRAY_JOB_ID") {
             Ok(job) => format!("{}-slurm{job}", config.name),
-            Err(_) => format!("{}-{}", config.name, harness::manifest::now().replace([':', '-'], "")),
+            Err(_) => format!(
+                "{}-{}",
+                config.name,
+                harness::manifest::now().replace([':', '-'], "")
+            ),
         },
     };
     let out = a.resume.clone().or(a.out.clone()).unwrap_or_else(|| {
@@ -443,18 +496,29 @@ fn bench_command(a: BenchArgs) -> Result<ExitCode> {
 
 fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let algo = algorithms::find(&a.algo).with_context(|| {
-        format!("unknown algorithm {:?}: expected one of {}", a.algo, algorithms::names().join(", "))
+        format!(
+            "unknown algorithm {:?}: expected one of {}",
+            a.algo,
+            algorithms::names().join(", ")
+        )
     })?;
     let inst = Instance::read(&a.file)?;
     (algo.precondition)(&inst.region)
         .with_context(|| format!("{} does not apply to {}", algo.name, a.file.display()))?;
-    let opts = Options { merge: a.merge, cutter: a.cutter, coverage4: a.coverage4 };
+    let opts = Options {
+        merge: a.merge,
+        cutter: a.cutter,
+        coverage4: a.coverage4,
+    };
     let start = std::time::Instant::now();
     let solution = (algo.run)(&inst.region, &opts)?;
     let seconds = start.elapsed().as_secs_f64();
     // The merged tour by default; the cycle cover with --cycle-cover.
     let pick = |want_cc: bool| {
-        solution.outputs.iter().find(|o| (o.objective == algorithms::Objective::CcTurns) == want_cc)
+        solution
+            .outputs
+            .iter()
+            .find(|o| (o.objective == algorithms::Objective::CcTurns) == want_cc)
     };
     let output = pick(a.cycle_cover)
         .or_else(|| solution.outputs.first())
@@ -462,7 +526,9 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let mut report = checker::check(&inst.region, &output.cover, output.objective.mode());
     // Lawn tours with free motion or the disk are lattice polygons: the lawn checker recounts
     // their Euclidean length (milli-units, rounded up) and the cells they must visit.
-    if output.objective == algorithms::Objective::LawnLength && mowmill::lawn_check::is_milli(opts.cutter) {
+    if output.objective == algorithms::Objective::LawnLength
+        && mowmill::lawn_check::is_milli(opts.cutter)
+    {
         let lawn = mowmill::lawn_check::check_lawn(&inst.region, &output.cover, opts.cutter);
         report = checker::Report {
             valid: lawn.valid,
@@ -484,7 +550,7 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let guarantees: Vec<serde_json::Value> = algo
         .guarantees
         .iter()
-        .filter(|g| g.objective == output.objective)
+        .filter(|g| g.objective == output.objective && g.when.applies(&inst.region))
         .map(|g| {
             let holds = match g.against {
                 algorithms::Against::N => Some(g.holds(value, n)),
@@ -524,14 +590,24 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             report.turns,
             report.cycles,
             report.max_coverage,
-            if valid { "valid".to_string() } else { format!("INVALID: {}", report.error.unwrap_or_default()) }
+            if valid {
+                "valid".to_string()
+            } else {
+                format!("INVALID: {}", report.error.unwrap_or_default())
+            }
         );
         for (k, v) in &solution.certificates {
             println!("  {k}: {v}");
         }
     }
-    let violated = guarantees.iter().any(|g| g["holds"] == serde_json::Value::Bool(false));
-    Ok(if valid && !violated { ExitCode::SUCCESS } else { ExitCode::from(1) })
+    let violated = guarantees
+        .iter()
+        .any(|g| g["holds"] == serde_json::Value::Bool(false));
+    Ok(if valid && !violated {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 fn gen_command(a: GenArgs) -> Result<ExitCode> {

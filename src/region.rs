@@ -209,7 +209,12 @@ impl Region {
         if pixels.is_empty() {
             return Ok(Region {
                 pixels,
-                bbox: BBox { min_x: 0, min_y: 0, max_x: -1, max_y: -1 },
+                bbox: BBox {
+                    min_x: 0,
+                    min_y: 0,
+                    max_x: -1,
+                    max_y: -1,
+                },
                 index: Vec::new(),
             });
         }
@@ -233,7 +238,11 @@ impl Region {
         for (i, p) in pixels.iter().enumerate() {
             index[(p.y - bbox.min_y) as usize * w + (p.x - bbox.min_x) as usize] = i as u32;
         }
-        Ok(Region { pixels, bbox, index })
+        Ok(Region {
+            pixels,
+            bbox,
+            index,
+        })
     }
 
     /// A `w` × `h` rectangle with lower-left pixel (0, 0).
@@ -290,7 +299,9 @@ impl Region {
     /// The 4-neighbours of pixel `i` in the region (its grid-graph neighbours), in the order
     /// E, N, W, S.
     pub fn neighbors(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
-        Dir::ALL.into_iter().filter_map(move |d| self.neighbor(i, d))
+        Dir::ALL
+            .into_iter()
+            .filter_map(move |d| self.neighbor(i, d))
     }
 
     /// Number of grid-graph neighbours of pixel `i`.
@@ -301,7 +312,9 @@ impl Region {
     /// The edges of the grid graph, each once as `(i, j)` with `i < j`.
     pub fn edges(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
         (0..self.len()).flat_map(move |i| {
-            [Dir::E, Dir::N].into_iter().filter_map(move |d| self.neighbor(i, d).map(|j| (i, j)))
+            [Dir::E, Dir::N]
+                .into_iter()
+                .filter_map(move |d| self.neighbor(i, d).map(|j| (i, j)))
         })
     }
 
@@ -334,7 +347,11 @@ impl Region {
         let b = self.bbox;
         for y in (b.min_y..=b.max_y).rev() {
             for x in b.min_x..=b.max_x {
-                s.push(if self.contains(Pixel::new(x, y)) { '#' } else { '.' });
+                s.push(if self.contains(Pixel::new(x, y)) {
+                    '#'
+                } else {
+                    '.'
+                });
             }
             s.push('\n');
         }
@@ -343,8 +360,11 @@ impl Region {
 
     /// Parses a `#`/`.` picture (highest row first, last line y = 0); for tests and fixtures.
     pub fn from_ascii(text: &str) -> Region {
-        let rows: Vec<&str> =
-            text.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with(';')).collect();
+        let rows: Vec<&str> = text
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty() && !l.starts_with(';'))
+            .collect();
         let h = rows.len() as i32;
         let pixels = rows.iter().enumerate().flat_map(|(r, row)| {
             row.chars()
@@ -372,7 +392,8 @@ mod tests {
     #[test]
     fn symmetries_form_the_dihedral_group() {
         let p = Pixel::new(3, -2);
-        let images: std::collections::HashSet<Pixel> = Symmetry::all().map(|s| s.apply(p)).collect();
+        let images: std::collections::HashSet<Pixel> =
+            Symmetry::all().map(|s| s.apply(p)).collect();
         assert_eq!(images.len(), 8);
         // Rotating four times is the identity.
         let mut q = p;

@@ -36,7 +36,9 @@ pub fn summary(region: &Region) -> Summary {
     let cut = cut_vertices(region);
     let local = local_cut_vertices_with(region, &cut);
     let (black, white) = colour_counts(region);
-    let boundary = (0..region.len()).filter(|&i| is_boundary(region, i)).count();
+    let boundary = (0..region.len())
+        .filter(|&i| is_boundary(region, i))
+        .count();
     Summary {
         n: region.len(),
         holes: holes(region).count,
@@ -84,7 +86,10 @@ pub fn components(region: &Region) -> Labels {
         }
         count += 1;
     }
-    Labels { label, count: count as usize }
+    Labels {
+        label,
+        count: count as usize,
+    }
 }
 
 /// The complement of a region inside its bounding box grown by one cell on every side,
@@ -131,7 +136,13 @@ impl Holes {
 /// The holes of a region: bounded 8-connected components of its complement.
 pub fn holes(region: &Region) -> Holes {
     if region.is_empty() {
-        return Holes { count: 0, origin: Pixel::new(0, 0), width: 0, height: 0, label: vec![] };
+        return Holes {
+            count: 0,
+            origin: Pixel::new(0, 0),
+            width: 0,
+            height: 0,
+            label: vec![],
+        };
     }
     let b = region.bbox();
     let origin = Pixel::new(b.min_x - 1, b.min_y - 1);
@@ -168,7 +179,13 @@ pub fn holes(region: &Region) -> Holes {
         }
         next += 1;
     }
-    Holes { count: next as usize - 1, origin, width, height, label }
+    Holes {
+        count: next as usize - 1,
+        origin,
+        width,
+        height,
+        label,
+    }
 }
 
 /// A boundary pixel shares at least one side with the region's boundary (fewer than 4
@@ -200,7 +217,9 @@ pub fn cut_vertices(region: &Region) -> Vec<bool> {
             let (v, parent, d) = *frame;
             if d < 4 {
                 frame.2 += 1;
-                let Some(w) = region.neighbor(v, Dir::from_index(d)) else { continue };
+                let Some(w) = region.neighbor(v, Dir::from_index(d)) else {
+                    continue;
+                };
                 if disc[w] == u32::MAX {
                     disc[w] = time;
                     low[w] = time;
@@ -263,8 +282,16 @@ fn local_cut_vertices_with(region: &Region, cut: &[bool]) -> Vec<bool> {
 /// The eight neighbours of `p` in counter-clockwise order starting east:
 /// E, NE, N, NW, W, SW, S, SE.
 pub fn ring(p: Pixel) -> [Pixel; 8] {
-    const OFFSETS: [(i32, i32); 8] =
-        [(1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1)];
+    const OFFSETS: [(i32, i32); 8] = [
+        (1, 0),
+        (1, 1),
+        (0, 1),
+        (-1, 1),
+        (-1, 0),
+        (-1, -1),
+        (0, -1),
+        (1, -1),
+    ];
     OFFSETS.map(|(dx, dy)| Pixel::new(p.x + dx, p.y + dy))
 }
 
@@ -276,7 +303,11 @@ pub fn ring(p: Pixel) -> [Pixel; 8] {
 pub fn connectivity_number(occupied: [bool; 8]) -> u32 {
     (0..4)
         .map(|k| {
-            let (a, b, c) = (occupied[2 * k], occupied[2 * k + 1], occupied[(2 * k + 2) % 8]);
+            let (a, b, c) = (
+                occupied[2 * k],
+                occupied[2 * k + 1],
+                occupied[(2 * k + 2) % 8],
+            );
             u32::from(a && !(b && c))
         })
         .sum()
@@ -334,7 +365,11 @@ impl Strip {
 /// The maximal horizontal (`horizontal = true`) or vertical strips of the region, ordered by
 /// their start pixel's index.
 pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
-    let (back, fwd) = if horizontal { (Dir::W, Dir::E) } else { (Dir::S, Dir::N) };
+    let (back, fwd) = if horizontal {
+        (Dir::W, Dir::E)
+    } else {
+        (Dir::S, Dir::N)
+    };
     let mut out = Vec::new();
     for i in 0..region.len() {
         if region.neighbor(i, back).is_some() {
@@ -346,7 +381,11 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
             len += 1;
             j = k;
         }
-        out.push(Strip { start: region.pixel(i), len, horizontal });
+        out.push(Strip {
+            start: region.pixel(i),
+            len,
+            horizontal,
+        });
     }
     out
 }
@@ -388,10 +427,19 @@ mod tests {
              ##...##\n",
         );
         let cut = cut_vertices(&r);
-        let cuts: Vec<Pixel> = (0..r.len()).filter(|&i| cut[i]).map(|i| r.pixel(i)).collect();
+        let cuts: Vec<Pixel> = (0..r.len())
+            .filter(|&i| cut[i])
+            .map(|i| r.pixel(i))
+            .collect();
         assert_eq!(
             cuts,
-            vec![Pixel::new(1, 1), Pixel::new(2, 1), Pixel::new(3, 1), Pixel::new(4, 1), Pixel::new(5, 1)]
+            vec![
+                Pixel::new(1, 1),
+                Pixel::new(2, 1),
+                Pixel::new(3, 1),
+                Pixel::new(4, 1),
+                Pixel::new(5, 1)
+            ]
         );
         let s = summary(&r);
         assert_eq!(s.cut_vertices, 5);
@@ -432,8 +480,14 @@ mod tests {
         assert_eq!(s.holes, 2);
         assert_eq!(s.cut_vertices, 0);
         let local = local_cut_vertices(&r);
-        let walls: Vec<Pixel> = (0..r.len()).filter(|&i| local[i]).map(|i| r.pixel(i)).collect();
-        assert_eq!(walls, vec![Pixel::new(3, 1), Pixel::new(3, 2), Pixel::new(3, 3)]);
+        let walls: Vec<Pixel> = (0..r.len())
+            .filter(|&i| local[i])
+            .map(|i| r.pixel(i))
+            .collect();
+        assert_eq!(
+            walls,
+            vec![Pixel::new(3, 1), Pixel::new(3, 2), Pixel::new(3, 3)]
+        );
         // In a thin frame every pixel touches both the hole and the outside.
         let frame = Region::from_ascii("#####\n#.#.#\n#####\n");
         assert_eq!(summary(&frame).local_cut_vertices, 13);
@@ -450,20 +504,30 @@ mod tests {
 
     fn random_region() -> impl Strategy<Value = Region> {
         (1usize..8, 1usize..8)
-            .prop_flat_map(|(w, h)| proptest::collection::vec(proptest::bool::weighted(0.65), w * h)
-                .prop_map(move |bits| {
-                    Region::from_pixels(bits.iter().enumerate().filter(|(_, b)| **b).map(|(k, _)| {
-                        Pixel::new((k % w) as i32, (k / w) as i32)
-                    }))
-                    .unwrap()
-                }))
+            .prop_flat_map(|(w, h)| {
+                proptest::collection::vec(proptest::bool::weighted(0.65), w * h).prop_map(
+                    move |bits| {
+                        Region::from_pixels(
+                            bits.iter()
+                                .enumerate()
+                                .filter(|(_, b)| **b)
+                                .map(|(k, _)| Pixel::new((k % w) as i32, (k / w) as i32)),
+                        )
+                        .unwrap()
+                    },
+                )
+            })
             .prop_filter("non-empty", |r| !r.is_empty())
     }
 
     /// Removes pixel `i` and recounts, straight from Definition 6.
     fn is_local_cut_by_definition(r: &Region, i: usize) -> bool {
         let rest = Region::from_pixels(
-            r.pixels().iter().enumerate().filter(|&(j, _)| j != i).map(|(_, &p)| p),
+            r.pixels()
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != i)
+                .map(|(_, &p)| p),
         )
         .unwrap();
         let before = components(r);
@@ -527,8 +591,17 @@ mod tests {
     fn connectivity_number_cases() {
         // Interior pixel: 0; end of a corridor: 1; middle of a corridor: 2; plus centre: 4.
         assert_eq!(connectivity_number([true; 8]), 0);
-        assert_eq!(connectivity_number([true, false, false, false, false, false, false, false]), 1);
-        assert_eq!(connectivity_number([true, false, false, false, true, false, false, false]), 2);
-        assert_eq!(connectivity_number([true, false, true, false, true, false, true, false]), 4);
+        assert_eq!(
+            connectivity_number([true, false, false, false, false, false, false, false]),
+            1
+        );
+        assert_eq!(
+            connectivity_number([true, false, false, false, true, false, false, false]),
+            2
+        );
+        assert_eq!(
+            connectivity_number([true, false, true, false, true, false, true, false]),
+            4
+        );
     }
 }

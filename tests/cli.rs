@@ -14,7 +14,11 @@ fn mowmill(args: &[&str]) -> Output {
 
 fn json(out: &Output) -> Value {
     serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
-        panic!("not JSON ({e}): {}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
+        panic!(
+            "not JSON ({e}): {}\n{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        )
     })
 }
 
@@ -32,26 +36,65 @@ fn temp_dir(tag: &str) -> PathBuf {
 #[allow(clippy::type_complexity)]
 fn info_reports_hand_checked_topology() {
     // name, n, holes, components, boundary, internal, cut, local cut, black, white, thin, strips h, v
-    let cases: &[(&str, u64, u64, u64, u64, u64, u64, u64, u64, u64, bool, u64, u64)] = &[
+    let cases: &[(
+        &str,
+        u64,
+        u64,
+        u64,
+        u64,
+        u64,
+        u64,
+        u64,
+        u64,
+        u64,
+        bool,
+        u64,
+        u64,
+    )] = &[
         ("rect-2x3.grid", 6, 0, 1, 6, 0, 0, 0, 3, 3, false, 3, 2),
         ("row-1x4.grid", 4, 0, 1, 4, 0, 2, 2, 2, 2, true, 1, 4),
         ("square-3x3.grid", 9, 0, 1, 8, 1, 0, 0, 5, 4, false, 3, 3),
         ("dumbbell.grid", 15, 0, 1, 13, 2, 5, 5, 7, 8, false, 5, 7),
         ("two-holes.grid", 33, 2, 1, 27, 6, 0, 3, 16, 17, false, 7, 9),
-        ("tailed-frame.grid", 17, 2, 1, 16, 1, 4, 16, 8, 9, true, 7, 9),
+        (
+            "tailed-frame.grid",
+            17,
+            2,
+            1,
+            16,
+            1,
+            4,
+            16,
+            8,
+            9,
+            true,
+            7,
+            9,
+        ),
     ];
     for &(name, n, holes, comps, bnd, int, cut, local, black, white, thin, sh, sv) in cases {
         let out = mowmill(&["info", &fixture(name), "--json"]);
-        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let v = json(&out);
-        let got = |k: &str| v[k].as_u64().unwrap_or_else(|| panic!("{name}: key {k} missing"));
+        let got = |k: &str| {
+            v[k].as_u64()
+                .unwrap_or_else(|| panic!("{name}: key {k} missing"))
+        };
         assert_eq!(got("n"), n, "{name} n");
         assert_eq!(got("holes"), holes, "{name} holes");
         assert_eq!(got("components"), comps, "{name} components");
         assert_eq!(got("boundary"), bnd, "{name} boundary");
         assert_eq!(got("internal"), int, "{name} internal");
         assert_eq!(got("cut_vertices"), cut, "{name} cut_vertices");
-        assert_eq!(got("local_cut_vertices"), local, "{name} local_cut_vertices");
+        assert_eq!(
+            got("local_cut_vertices"),
+            local,
+            "{name} local_cut_vertices"
+        );
         assert_eq!(got("black"), black, "{name} black");
         assert_eq!(got("white"), white, "{name} white");
         assert_eq!(v["thin"].as_bool(), Some(thin), "{name} thin");
@@ -59,7 +102,12 @@ fn info_reports_hand_checked_topology() {
         assert_eq!(got("strips_v"), sv, "{name} strips_v");
     }
     // Minimum strip covers (turn-cost paper, Lemma 4.4): two columns, one row, three rows.
-    for (name, cover) in [("rect-2x3.grid", 2), ("row-1x4.grid", 1), ("square-3x3.grid", 3), ("square-5x5.grid", 5)] {
+    for (name, cover) in [
+        ("rect-2x3.grid", 2),
+        ("row-1x4.grid", 1),
+        ("square-3x3.grid", 3),
+        ("square-5x5.grid", 5),
+    ] {
         let v = json(&mowmill(&["info", &fixture(name), "--json"]));
         assert_eq!(v["strip_cover"].as_u64(), Some(cover), "{name} strip_cover");
     }
@@ -72,8 +120,18 @@ fn validate_recounts_fixture_tours() {
         ("row-1x4.grid", "row-1x4.tour.json", 6, 4),
         ("square-3x3.grid", "square-3x3.tour.json", 10, 8),
     ] {
-        let out = mowmill(&["validate", &fixture(grid), "--tour", &fixture(tour), "--json"]);
-        assert!(out.status.success(), "{grid}: {}", String::from_utf8_lossy(&out.stdout));
+        let out = mowmill(&[
+            "validate",
+            &fixture(grid),
+            "--tour",
+            &fixture(tour),
+            "--json",
+        ]);
+        assert!(
+            out.status.success(),
+            "{grid}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
         let v = json(&out);
         assert_eq!(v["valid"], Value::Bool(true));
         assert_eq!(v["length"].as_u64(), Some(length), "{grid}");
@@ -85,13 +143,29 @@ fn validate_recounts_fixture_tours() {
 
 #[test]
 fn validate_rejects_a_broken_tour_with_exit_1() {
-    let out = mowmill(&["validate", &fixture("square-3x3.grid"), "--tour", &fixture("square-3x3.bad-tour.json"), "--json"]);
+    let out = mowmill(&[
+        "validate",
+        &fixture("square-3x3.grid"),
+        "--tour",
+        &fixture("square-3x3.bad-tour.json"),
+        "--json",
+    ]);
     assert_eq!(out.status.code(), Some(1));
     let v = json(&out);
     assert_eq!(v["valid"], Value::Bool(false));
-    assert_eq!(v["error"].as_str(), Some("cycle 0, step 6: (2, 2) -> (0, 2) is not a unit move"));
+    assert_eq!(
+        v["error"].as_str(),
+        Some("cycle 0, step 6: (2, 2) -> (0, 2) is not a unit move")
+    );
     // Lawn mode on the same tour is still broken: the jump is not a unit move.
-    let out = mowmill(&["validate", &fixture("square-3x3.grid"), "--tour", &fixture("square-3x3.bad-tour.json"), "--mode", "lawn"]);
+    let out = mowmill(&[
+        "validate",
+        &fixture("square-3x3.grid"),
+        "--tour",
+        &fixture("square-3x3.bad-tour.json"),
+        "--mode",
+        "lawn",
+    ]);
     assert_eq!(out.status.code(), Some(1));
 }
 
@@ -103,7 +177,10 @@ fn bad_input_names_file_line_column_and_exits_2() {
     let out = mowmill(&["info", bad.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("bad.grid:3:2:") && err.contains("expected '#'"), "{err}");
+    assert!(
+        err.contains("bad.grid:3:2:") && err.contains("expected '#'"),
+        "{err}"
+    );
 
     let empty = dir.join("empty.grid");
     std::fs::write(&empty, "; nothing\n...\n").unwrap();
@@ -117,7 +194,12 @@ fn bad_input_names_file_line_column_and_exits_2() {
 
     let badtour = dir.join("t.json");
     std::fs::write(&badtour, "{\"cycles\": [[[0, 0], [1, \"a\"]]]}").unwrap();
-    let out = mowmill(&["validate", &fixture("rect-2x3.grid"), "--tour", badtour.to_str().unwrap()]);
+    let out = mowmill(&[
+        "validate",
+        &fixture("rect-2x3.grid"),
+        "--tour",
+        badtour.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("t.json:1:"));
 
@@ -132,7 +214,11 @@ fn bad_input_names_file_line_column_and_exits_2() {
 fn wkt_instances_read_like_grid_files() {
     let dir = temp_dir("wkt");
     let f = dir.join("donut.wkt");
-    std::fs::write(&f, "POLYGON((0 0, 5 0, 5 4, 0 4, 0 0), (1 1, 4 1, 4 3, 1 3, 1 1))\n").unwrap();
+    std::fs::write(
+        &f,
+        "POLYGON((0 0, 5 0, 5 4, 0 4, 0 0), (1 1, 4 1, 4 3, 1 3, 1 1))\n",
+    )
+    .unwrap();
     let v = json(&mowmill(&["info", f.to_str().unwrap(), "--json"]));
     assert_eq!(v["n"].as_u64(), Some(14));
     assert_eq!(v["holes"].as_u64(), Some(1));
@@ -144,8 +230,23 @@ fn gen_is_deterministic_and_info_agrees() {
     let a = dir.join("a.grid");
     let b = dir.join("b.grid");
     for f in [&a, &b] {
-        let out = mowmill(&["gen", "random-holed", "--n", "300", "--holes", "3", "--seed", "11", "--out", f.to_str().unwrap()]);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let out = mowmill(&[
+            "gen",
+            "random-holed",
+            "--n",
+            "300",
+            "--holes",
+            "3",
+            "--seed",
+            "11",
+            "--out",
+            f.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
     }
     let (ta, tb) = (std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
     assert_eq!(ta, tb);
@@ -158,19 +259,72 @@ fn gen_is_deterministic_and_info_agrees() {
     assert_eq!(v["components"].as_u64(), Some(1));
 
     let c = dir.join("c.grid");
-    let out = mowmill(&["gen", "random-simple", "--n", "200", "--no-cut", "--seed", "5", "--out", c.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = mowmill(&[
+        "gen",
+        "random-simple",
+        "--n",
+        "200",
+        "--no-cut",
+        "--seed",
+        "5",
+        "--out",
+        c.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v = json(&mowmill(&["info", c.to_str().unwrap(), "--json"]));
-    assert_eq!((v["n"].as_u64(), v["holes"].as_u64(), v["cut_vertices"].as_u64()), (Some(200), Some(0), Some(0)));
+    assert_eq!(
+        (
+            v["n"].as_u64(),
+            v["holes"].as_u64(),
+            v["cut_vertices"].as_u64()
+        ),
+        (Some(200), Some(0), Some(0))
+    );
 
     let d = dir.join("d.grid");
-    let out = mowmill(&["gen", "donut", "--k", "2", "--side", "7", "--seed", "0", "--out", d.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = mowmill(&[
+        "gen",
+        "donut",
+        "--k",
+        "2",
+        "--side",
+        "7",
+        "--seed",
+        "0",
+        "--out",
+        d.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v = json(&mowmill(&["info", d.to_str().unwrap(), "--json"]));
-    assert_eq!((v["n"].as_u64(), v["holes"].as_u64()), (Some(49 - 9), Some(1)));
+    assert_eq!(
+        (v["n"].as_u64(), v["holes"].as_u64()),
+        (Some(49 - 9), Some(1))
+    );
 
-    let out = mowmill(&["gen", "random-simple", "--n", "3", "--no-cut", "--seed", "1", "--out", dir.join("x.grid").to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2), "no-cut on 3 pixels is impossible");
+    let out = mowmill(&[
+        "gen",
+        "random-simple",
+        "--n",
+        "3",
+        "--no-cut",
+        "--seed",
+        "1",
+        "--out",
+        dir.join("x.grid").to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "no-cut on 3 pixels is impossible"
+    );
 }
 
 #[test]
@@ -186,16 +340,28 @@ fn draw_writes_svg_and_png() {
             "--out",
             out_file.to_str().unwrap(),
         ]);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let bytes = std::fs::read(&out_file).unwrap();
         assert!(bytes.len() > 500, "{ext} too small");
         if ext == "png" {
             assert_eq!(&bytes[1..4], b"PNG");
         } else {
             let s = String::from_utf8(bytes).unwrap();
-            assert!(s.contains("<svg") && s.contains("length 10, turns 8"), "caption missing");
+            assert!(
+                s.contains("<svg") && s.contains("length 10, turns 8"),
+                "caption missing"
+            );
         }
     }
-    let out = mowmill(&["draw", &fixture("square-3x3.grid"), "--out", dir.join("x.bmpx").to_str().unwrap()]);
+    let out = mowmill(&[
+        "draw",
+        &fixture("square-3x3.grid"),
+        "--out",
+        dir.join("x.bmpx").to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(2));
 }

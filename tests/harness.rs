@@ -61,7 +61,11 @@ fn comparable(dir: &Path) -> Vec<Row> {
     read_rows(&dir.join("results.csv"))
         .unwrap()
         .into_iter()
-        .map(|r| Row { seconds: 0.0, run_id: String::new(), ..r })
+        .map(|r| Row {
+            seconds: 0.0,
+            run_id: String::new(),
+            ..r
+        })
         .collect()
 }
 
@@ -77,21 +81,40 @@ fn same_seed_same_results_and_every_row_checked() {
     let rows = comparable(&a);
     assert_eq!(rows, comparable(&b));
     // 4 rects + 4 random + 2 thin instances, each with at least the exact length row.
-    let instances: std::collections::BTreeSet<&str> = rows.iter().map(|r| r.instance.as_str()).collect();
+    let instances: std::collections::BTreeSet<&str> =
+        rows.iter().map(|r| r.instance.as_str()).collect();
     assert_eq!(instances.len(), 10);
-    assert!(rows.iter().all(|r| r.error.is_empty()), "{:?}", rows.iter().find(|r| !r.error.is_empty()));
-    let exact_len: Vec<&Row> = rows.iter().filter(|r| r.algorithm == "exact" && r.objective == "length").collect();
+    assert!(
+        rows.iter().all(|r| r.error.is_empty()),
+        "{:?}",
+        rows.iter().find(|r| !r.error.is_empty())
+    );
+    let exact_len: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.algorithm == "exact" && r.objective == "length")
+        .collect();
     assert_eq!(exact_len.len(), 10);
     // The 2 x 3 rectangle has a Hamiltonian cycle.
-    let r23 = exact_len.iter().find(|r| r.instance == "rect_width2_height3_i000").unwrap();
-    assert_eq!((r23.value, r23.opt, r23.opt_status.as_str()), (Some(6), Some(6), "optimal"));
+    let r23 = exact_len
+        .iter()
+        .find(|r| r.instance == "rect_width2_height3_i000")
+        .unwrap();
+    assert_eq!(
+        (r23.value, r23.opt, r23.opt_status.as_str()),
+        (Some(6), Some(6), "optimal")
+    );
     // Instance files and their hashes are saved.
     for r in &rows {
         let f = a.join("instances").join(format!("{}.grid", r.instance));
         let bytes = std::fs::read(&f).unwrap();
         assert_eq!(mowmill::harness::run::sha256_hex(&bytes), r.sha256);
     }
-    for f in ["stats.csv", "manifest.json", "plots/exact-time.png", "plots/exact-time.svg"] {
+    for f in [
+        "stats.csv",
+        "manifest.json",
+        "plots/exact-time.png",
+        "plots/exact-time.svg",
+    ] {
         assert!(a.join(f).exists(), "{f} missing");
     }
 }
@@ -168,17 +191,33 @@ fn gate_passes_a_rerun_and_catches_a_planted_regression() {
     assert!(report.table().contains("ratio_n max"), "{}", report.table());
 
     // A baseline family that the current run lacks is a failure too.
-    let missing = text.replacen("\nrect,", "\nrect-gone,", 1);
+    let missing = text.replace("\nrect,", "\nrect-gone,");
     std::fs::write(planted.join("stats.csv"), missing).unwrap();
     let report = gate(&planted.join("stats.csv"), &cur, 0.005).unwrap();
     assert!(!report.passed());
-    assert!(report.table().contains("missing in current run"), "{}", report.table());
+    assert!(
+        report.table().contains("missing in current run"),
+        "{}",
+        report.table()
+    );
 
     // The CLI exits 1 on the regression and 0 on the rerun.
     let bin = env!("CARGO_BIN_EXE_mowmill");
-    let st = Command::new(bin).args(["gate", "--baseline"]).arg(base.join("stats.csv")).arg("--current").arg(&cur).status().unwrap();
+    let st = Command::new(bin)
+        .args(["gate", "--baseline"])
+        .arg(base.join("stats.csv"))
+        .arg("--current")
+        .arg(&cur)
+        .status()
+        .unwrap();
     assert_eq!(st.code(), Some(0));
-    let st = Command::new(bin).args(["gate", "--baseline"]).arg(planted.join("stats.csv")).arg("--current").arg(&cur).status().unwrap();
+    let st = Command::new(bin)
+        .args(["gate", "--baseline"])
+        .arg(planted.join("stats.csv"))
+        .arg("--current")
+        .arg(&cur)
+        .status()
+        .unwrap();
     assert_eq!(st.code(), Some(1));
 }
 
@@ -187,7 +226,11 @@ fn malformed_config_is_refused_before_any_job() {
     let dir = temp("badcfg");
     std::fs::create_dir_all(&dir).unwrap();
     let cfg = dir.join("bad.toml");
-    std::fs::write(&cfg, "name = \"x\"\n[[family]]\nfamily = \"rect\"\nwidth = 3\nheigth = 4\n").unwrap();
+    std::fs::write(
+        &cfg,
+        "name = \"x\"\n[[family]]\nfamily = \"rect\"\nwidth = 3\nheigth = 4\n",
+    )
+    .unwrap();
     let out = dir.join("out");
     let o = Command::new(env!("CARGO_BIN_EXE_mowmill"))
         .args(["bench", "--config"])
@@ -198,6 +241,9 @@ fn malformed_config_is_refused_before_any_job() {
         .unwrap();
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("bad.toml:5:1") && err.contains("heigth"), "{err}");
+    assert!(
+        err.contains("bad.toml:5:1") && err.contains("heigth"),
+        "{err}"
+    );
     assert!(!out.exists(), "no job may run");
 }

@@ -306,7 +306,9 @@ fn check_against_opt(
     let Some((opt_cc, opt_tour)) = exact_optima(region) else {
         return;
     };
-    *worst.entry("instances solved exactly".to_string()).or_insert(0.0) += 1.0;
+    *worst
+        .entry("instances solved exactly".to_string())
+        .or_insert(0.0) += 1.0;
     for &name in names {
         let algo = algorithms::find(name).unwrap();
         if (algo.precondition)(region).is_err() {
@@ -495,4 +497,40 @@ fn coverage4_never_adds_turns() {
     eprintln!(
         "coverage4: {runs} tours, {over4_before} covered a pixel > 4 times, {over4_after} still do"
     );
+}
+
+/// Deterministic: the same region gives the same walks (ties in the matching are broken by a
+/// sorted edge list, not by hash order).
+#[test]
+fn same_region_same_walks() {
+    for seed in 0..20u64 {
+        let r = random_region(seed, 30 + seed as usize, seed % 2 == 0);
+        for name in ["star-cover", "strips-double", "strips-matching"] {
+            let a = run(name, &r, &Options::default());
+            let b = run(name, &r, &Options::default());
+            for (x, y) in a.solution.outputs.iter().zip(&b.solution.outputs) {
+                assert_eq!(x.cover, y.cover, "{name}");
+            }
+        }
+    }
+}
+
+/// A thin pocket on which an earlier version of thin-cc returned 18 turns instead of the
+/// optimum 14: one-pixel links matched into cycles that never move were priced below the 4
+/// turns such a walk counts (see `boundary_cc::drop_still_duplicates` and the floors in
+/// `endpoint_matching::match_ports`).
+#[test]
+fn thin_cc_fixture_with_one_pixel_links() {
+    let r = Region::from_ascii(
+        "#.###\n\
+         #...#\n\
+         #####\n\
+         #.#..\n\
+         #####\n",
+    );
+    let cc = run("thin-cc", &r, &Options::default());
+    assert_eq!(cc.cc.turns, 14);
+    if let Some((opt_cc, _)) = exact_optima(&r) {
+        assert_eq!(opt_cc, 14);
+    }
 }

@@ -187,6 +187,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 1,
         add: 0,
         against: Against::Opt,
+        when: super::When::Always,
         source: "Theorem 4.1 of Optimal covering tours with turn costs",
     }],
     precondition,

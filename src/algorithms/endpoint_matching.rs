@@ -101,8 +101,18 @@ pub fn match_ports(
     partner: &[usize],
     floor: &[u32],
 ) -> Result<PortMatching> {
+    match_ports_with(region, ports, partner, floor, ports.len() <= COMPLETE_LIMIT)
+}
+
+/// [`match_ports`] with the candidate graph complete or tiled as asked.
+pub fn match_ports_with(
+    region: &Region,
+    ports: &[Port],
+    partner: &[usize],
+    floor: &[u32],
+    complete: bool,
+) -> Result<PortMatching> {
     let p = ports.len();
-    let complete = p <= COMPLETE_LIMIT;
     let mut at_pixel: HashMap<usize, Vec<usize>> = HashMap::new();
     for (i, port) in ports.iter().enumerate() {
         at_pixel.entry(port.pixel).or_default().push(i);
@@ -151,7 +161,8 @@ pub fn match_ports(
         *e = (*e).max(floor[i]);
     }
     // Sorted, so that ties between minimum matchings are broken the same way on every run.
-    let mut edges: Vec<(usize, usize, u32)> = edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
+    let mut edges: Vec<(usize, usize, u32)> =
+        edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
     edges.sort_unstable();
     let mate = min_weight_perfect_matching(p, &edges)
         .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
@@ -260,6 +271,42 @@ mod tests {
             best
         }
         rec(&mut (0..n).collect(), w)
+    }
+
+    /// How much the tiled candidate graph loses against the complete one (run with
+    /// `cargo test --release --lib tiled_matching_loss -- --ignored --nocapture`).
+    #[test]
+    #[ignore = "a measurement, takes a minute"]
+    fn tiled_matching_loss() {
+        use crate::algorithms::strips_matching::strip_ports;
+        use crate::generate::{Family, GenParams, generate};
+        for (family, n) in [(Family::RandomSimple, 6000), (Family::RandomHoled, 4000)] {
+            let mut params = GenParams::new(family, 3);
+            params.n = Some(n);
+            let region = generate(&params).unwrap().region;
+            let cover = crate::strip_cover::strip_cover(&region);
+            let (links, ports) = strip_ports(&region, &cover.strips);
+            let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
+            let floor: Vec<u32> = (0..ports.len())
+                .map(|i| {
+                    if links[i / 2].0 == links[i / 2].1 {
+                        2
+                    } else {
+                        0
+                    }
+                })
+                .collect();
+            let tiled = match_ports_with(&region, &ports, &partner, &floor, false).unwrap();
+            let full = match_ports_with(&region, &ports, &partner, &floor, true).unwrap();
+            eprintln!(
+                "{family:?} N = {}: {} ports, w(M) tiled {} vs complete {}",
+                region.len(),
+                ports.len(),
+                tiled.total,
+                full.total
+            );
+            assert!(full.total <= tiled.total);
+        }
     }
 
     #[test]

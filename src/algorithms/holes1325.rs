@@ -195,6 +195,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 40,
         add: 0,
         against: Against::N,
+        when: super::When::Always,
         source: "Theorem 7 of Lawn mowing and milling",
     }],
     precondition,

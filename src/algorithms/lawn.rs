@@ -853,6 +853,7 @@ const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guar
         den,
         add,
         against: Against::Opt,
+        when: super::When::Always,
         source,
     }
 }

@@ -320,6 +320,7 @@ pub const ALGORITHM: super::Algorithm = super::Algorithm {
         den: 2,
         add: 0,
         against: super::Against::Opt,
+        when: super::When::Always,
         source: "Theorem 4 of Lawn mowing and milling",
     }],
     precondition,

@@ -49,8 +49,12 @@ pub enum Objective {
 }
 
 impl Objective {
-    pub const ALL: [Objective; 4] =
-        [Objective::Length, Objective::CcTurns, Objective::Turns, Objective::LawnLength];
+    pub const ALL: [Objective; 4] = [
+        Objective::Length,
+        Objective::CcTurns,
+        Objective::Turns,
+        Objective::LawnLength,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -91,7 +95,30 @@ pub enum Against {
     N,
 }
 
-/// A proven upper bound `value ≤ (num · X + add) / den`, X being OPT or N.
+/// The instances a guarantee is proven for, beyond the algorithm's preconditions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum When {
+    /// Every instance the algorithm accepts.
+    Always,
+    /// Regions without cut vertices and with at least 3 pixels (Theorem 5 of the milling
+    /// paper: a 2-pixel region needs a tour of length 2 > (6·2 − 4)/5).
+    Biconnected,
+}
+
+impl When {
+    pub fn applies(self, region: &Region) -> bool {
+        match self {
+            When::Always => true,
+            When::Biconnected => {
+                region.len() >= 3 && !crate::topology::cut_vertices(region).into_iter().any(|c| c)
+            }
+        }
+    }
+}
+
+/// A proven upper bound `value ≤ (num · X + add) / den`, X being OPT or N, on the instances
+/// `when` names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Guarantee {
     pub objective: Objective,
@@ -99,6 +126,7 @@ pub struct Guarantee {
     pub den: i64,
     pub add: i64,
     pub against: Against,
+    pub when: When,
     /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling".
     pub source: &'static str,
 }
@@ -117,8 +145,8 @@ impl Guarantee {
 
     /// The bound's value for a given X, rounded down (values are integers).
     pub fn bound(&self, x: u64) -> i64 {
-        ((i128::from(self.num) * i128::from(x) + i128::from(self.add)).div_euclid(i128::from(self.den)))
-            as i64
+        ((i128::from(self.num) * i128::from(x) + i128::from(self.add))
+            .div_euclid(i128::from(self.den))) as i64
     }
 }
 
@@ -128,18 +156,31 @@ impl fmt::Display for Guarantee {
             Against::Opt => "OPT",
             Against::N => "N",
         };
-        let num = if self.num == 1 { String::new() } else { self.num.to_string() };
+        let num = if self.num == 1 {
+            String::new()
+        } else {
+            self.num.to_string()
+        };
         let add = match self.add {
             0 => String::new(),
             a if a > 0 => format!(" + {a}"),
             a => format!(" - {}", -a),
         };
+        let source = match self.when {
+            When::Always => self.source.to_string(),
+            When::Biconnected => format!("without cut vertices, N >= 3; {}", self.source),
+        };
+        let source = source.as_str();
         if self.den == 1 {
-            write!(f, "{} <= {num}{x}{add} ({})", self.objective, self.source)
+            write!(f, "{} <= {num}{x}{add} ({source})", self.objective)
         } else if add.is_empty() {
-            write!(f, "{} <= {num}/{} {x} ({})", self.objective, self.den, self.source)
+            write!(f, "{} <= {num}/{} {x} ({source})", self.objective, self.den)
         } else {
-            write!(f, "{} <= ({num}{x}{add})/{} ({})", self.objective, self.den, self.source)
+            write!(
+                f,
+                "{} <= ({num}{x}{add})/{} ({source})",
+                self.objective, self.den
+            )
         }
     }
 }
@@ -208,7 +249,9 @@ pub struct Algorithm {
 
 impl fmt::Debug for Algorithm {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("Algorithm").field("name", &self.name).finish()
+        f.debug_struct("Algorithm")
+            .field("name", &self.name)
+            .finish()
     }
 }
 
@@ -253,6 +296,7 @@ mod tests {
             den: 5,
             add: -4,
             against: Against::N,
+            when: When::Always,
             source: "Theorem 5",
         };
         // N = 9: (54 - 4) / 5 = 10.
@@ -260,7 +304,13 @@ mod tests {
         assert!(!g.holds(11, 9));
         assert_eq!(g.bound(9), 10);
         assert_eq!(g.to_string(), "length <= (6N - 4)/5 (Theorem 5)");
-        let h = Guarantee { num: 5, den: 2, add: 0, against: Against::Opt, ..g };
+        let h = Guarantee {
+            num: 5,
+            den: 2,
+            add: 0,
+            against: Against::Opt,
+            ..g
+        };
         assert!(h.holds(25, 10) && !h.holds(26, 10));
         assert_eq!(h.to_string(), "length <= 5/2 OPT (Theorem 5)");
     }

@@ -114,6 +114,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.1 / Corollary 5.2 of Optimal covering tours with turn costs",
         },
         Guarantee {
@@ -122,6 +123,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Corollary 5.2 of Optimal covering tours with turn costs",
         },
     ],

@@ -81,6 +81,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.4 of Optimal covering tours with turn costs (4 turns per strip, Lemma 4.2)",
         },
         Guarantee {
@@ -89,6 +90,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.4 of Optimal covering tours with turn costs",
         },
     ],

@@ -157,6 +157,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 2,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.5 of Optimal covering tours with turn costs",
         },
         Guarantee {
@@ -165,6 +166,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 4,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
         },
     ],

@@ -136,6 +136,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
         },
         Guarantee {
@@ -144,6 +145,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             den: 2,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
         },
     ],
@@ -163,6 +165,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
         },
         Guarantee {
@@ -171,6 +174,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             den: 3,
             add: 0,
             against: Against::Opt,
+            when: super::When::Always,
             source: "Theorem 5.9 of Optimal covering tours with turn costs",
         },
     ],

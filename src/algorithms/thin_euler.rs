@@ -126,6 +126,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 5,
         add: 0,
         against: Against::Opt,
+        when: super::When::Always,
         source: "Theorem 5.8 of Optimal covering tours with turn costs",
     }],
     precondition,

@@ -734,14 +734,26 @@ pub const ALGORITHM: Algorithm = Algorithm {
     summary: "contour + free detours + the six cases, blocks spliced (Theorem 5, milling paper); \
               length <= (6N-4)/5 without cut vertices (certificate bound_6n_4_5)",
     objectives: &[Objective::Length],
-    guarantees: &[Guarantee {
-        objective: Objective::Length,
-        num: 6,
-        den: 5,
-        add: 0,
-        against: Against::Opt,
-        source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
-    }],
+    guarantees: &[
+        Guarantee {
+            objective: Objective::Length,
+            num: 6,
+            den: 5,
+            add: 0,
+            against: Against::Opt,
+            when: super::When::Always,
+            source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
+        },
+        Guarantee {
+            objective: Objective::Length,
+            num: 6,
+            den: 5,
+            add: -4,
+            against: Against::N,
+            when: super::When::Biconnected,
+            source: "Theorem 5 of Lawn mowing and milling",
+        },
+    ],
     precondition,
     run: |region, _| tsp65(region),
 };

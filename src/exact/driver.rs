@@ -223,7 +223,18 @@ impl<'m, M: CutModel> Loop<'m, M> {
         let budget = self.deadline.remaining().map_or(30.0, |r| r * 0.25);
         let cap = Deadline::new(Some(budget));
         let start = self.s.best.clone().filter(|x| g.is_feasible(x, &self.pool));
-        let mip = solve_mip(&g, &self.pool, start.as_deref(), &cap, self.settings);
+        let gap: f64 = std::env::var("MOWMILL_HGAP")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(1.99);
+        let mip = solve_mip(
+            &g,
+            &self.pool,
+            start.as_deref(),
+            &cap,
+            self.settings,
+            Some(gap),
+        );
         self.s.rounds += 1;
         if let Some(x) = &mip.x {
             let xi = self.round_integers(x);
@@ -288,6 +299,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 self.s.best.as_deref(),
                 self.deadline,
                 self.settings,
+                None,
             );
             self.s.rounds += 1;
             match &mip.outcome {

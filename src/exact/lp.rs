@@ -338,16 +338,21 @@ pub(crate) struct MipSolution {
 }
 
 /// Solves `f` plus `extra` rows as a MIP from scratch, with an optional start solution.
+/// `abs_gap`, when given, replaces the proof gap (for heuristic solves that may stop early).
 pub(crate) fn solve_mip(
     f: &Formulation,
     extra: &[Row],
     start: Option<&[f64]>,
     deadline: &Deadline,
     settings: &Settings,
+    abs_gap: Option<f64>,
 ) -> MipSolution {
     let (pb, _) = f.to_problem(true, extra);
     let mut model = pb.optimise(Sense::Minimise);
     configure(&mut model, settings);
+    if let Some(g) = abs_gap {
+        model.set_option("mip_abs_gap", g);
+    }
     if let Some(r) = deadline.remaining() {
         model.set_option("time_limit", r.max(1e-3));
     }
@@ -426,7 +431,7 @@ mod tests {
         ]);
         let b = lp.solve(&d);
         assert!((b.objective - 2.0).abs() < 1e-9);
-        let m = solve_mip(&f, &[], Some(&[2.0, 0.0]), &d, &s);
+        let m = solve_mip(&f, &[], Some(&[2.0, 0.0]), &d, &s, None);
         assert_eq!(m.outcome, Outcome::Optimal);
         assert_eq!(ceil_bound(m.dual_bound), Some(2));
         assert!((m.objective - 2.0).abs() < 1e-9);

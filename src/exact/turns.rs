@@ -363,7 +363,9 @@ impl<'a> PassageModel<'a> {
                 let d = (0..4u8).find(|&d| self.nb[v][d as usize] != NONE)?;
                 let w = self.nb[v][d as usize] as usize;
                 let back = (d + 2) % 4;
-                if !self.add_passage(&mut counts, v, d, d) || !self.add_passage(&mut counts, w, back, back) {
+                if !self.add_passage(&mut counts, v, d, d)
+                    || !self.add_passage(&mut counts, w, back, back)
+                {
                     return None;
                 }
                 continue;

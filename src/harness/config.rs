@@ -131,7 +131,10 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for OneOrMany<T> {
             Ok(Either::Many(v)) => Ok(OneOrMany(v)),
             Err(_) => Err(serde::de::Error::custom(format!(
                 "expected a {} or a list of them",
-                std::any::type_name::<T>().rsplit("::").next().unwrap_or("value")
+                std::any::type_name::<T>()
+                    .rsplit("::")
+                    .next()
+                    .unwrap_or("value")
             ))),
         }
     }
@@ -177,7 +180,9 @@ impl Config {
                 .unwrap_or((1, 1));
             Error::parse(file, line, column, e.message().to_string())
         })?;
-        config.validate().map_err(|m| Error::invalid(format!("{file}: {m}")))?;
+        config
+            .validate()
+            .map_err(|m| Error::invalid(format!("{file}: {m}")))?;
         Ok(config)
     }
 
@@ -205,10 +210,15 @@ impl Config {
         }
         for (i, e) in self.exact.iter().enumerate() {
             let at = format!("exact[{i}]");
-            e.objective.parse::<crate::exact::Objective>().map_err(|err| format!("{at}.objective: {err}"))?;
-            crate::exact::Objective::parse(&e.objective, e.turn_cost).map_err(|err| format!("{at}.turn_cost: {err}"))?;
+            e.objective
+                .parse::<crate::exact::Objective>()
+                .map_err(|err| format!("{at}.objective: {err}"))?;
+            crate::exact::Objective::parse(&e.objective, e.turn_cost)
+                .map_err(|err| format!("{at}.turn_cost: {err}"))?;
             if e.time_limit.is_nan() || e.time_limit <= 0.0 {
-                return Err(format!("{at}.time_limit: expected a positive number of seconds"));
+                return Err(format!(
+                    "{at}.time_limit: expected a positive number of seconds"
+                ));
             }
         }
         Ok(())
@@ -220,7 +230,11 @@ impl Config {
         for f in &self.family {
             let family: Family = f.family.parse()?;
             for combo in expand(f) {
-                let params = combo.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(" ");
+                let params = combo
+                    .iter()
+                    .map(|(k, v)| format!("{k}={v}"))
+                    .collect::<Vec<_>>()
+                    .join(" ");
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
                     let mut g = GenParams::new(family, seed);
@@ -230,7 +244,13 @@ impl Config {
                     let slug: String = params
                         .chars()
                         .filter(|&c| c != '=')
-                        .map(|c| if c.is_ascii_alphanumeric() || c == '.' || c == '-' { c } else { '_' })
+                        .map(|c| {
+                            if c.is_ascii_alphanumeric() || c == '.' || c == '-' {
+                                c
+                            } else {
+                                '_'
+                            }
+                        })
                         .collect();
                     let name = if slug.is_empty() {
                         format!("{}_i{index:03}", f.family)
@@ -257,7 +277,10 @@ impl Config {
             files.sort();
             let family = f.family.clone().unwrap_or_else(|| "files".to_string());
             for p in files {
-                let stem = p.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+                let stem = p
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
                 out.push(InstanceSpec {
                     name: format!("{family}_{stem}"),
                     family: family.clone(),
@@ -271,7 +294,10 @@ impl Config {
         let mut names: Vec<&str> = out.iter().map(|s| s.name.as_str()).collect();
         names.sort_unstable();
         if let Some(w) = names.windows(2).find(|w| w[0] == w[1]) {
-            return Err(Error::invalid(format!("two instances are both named {}", w[0])));
+            return Err(Error::invalid(format!(
+                "two instances are both named {}",
+                w[0]
+            )));
         }
         Ok(out)
     }
@@ -326,7 +352,11 @@ fn expand(f: &FamilySpec) -> Vec<Vec<(&'static str, String)>> {
 }
 
 fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
-    let num = || value.parse::<usize>().map_err(|e| Error::invalid(format!("{key}={value}: {e}")));
+    let num = || {
+        value
+            .parse::<usize>()
+            .map_err(|e| Error::invalid(format!("{key}={value}: {e}")))
+    };
     match key {
         "n" => g.n = Some(num()?),
         "holes" => g.holes = Some(num()?),
@@ -337,7 +367,11 @@ fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
         "parts" => g.parts = Some(num()?),
         "style" => g.style = Some(value.parse()?),
         "compactness" => {
-            g.compactness = Some(value.parse().map_err(|e| Error::invalid(format!("{key}: {e}")))?)
+            g.compactness = Some(
+                value
+                    .parse()
+                    .map_err(|e| Error::invalid(format!("{key}: {e}")))?,
+            )
         }
         "no_cut" => g.no_cut = value == "true",
         _ => return Err(Error::invalid(format!("unknown parameter {key}"))),
@@ -375,17 +409,38 @@ mod tests {
     #[test]
     fn malformed_configs_name_the_key() {
         let bad = [
-            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidht = 3\n", "widht"),
-            ("name = \"t\"\n[[family]]\nfamily = \"blob\"\n", "family[0].family"),
-            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nn = \"x\"\n", "expected a usize or a list"),
-            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n", "family[0].algorithms"),
-            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n", "exact[0].objective"),
-            ("name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n", "max_n"),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidht = 3\n",
+                "widht",
+            ),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"blob\"\n",
+                "family[0].family",
+            ),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nn = \"x\"\n",
+                "expected a usize or a list",
+            ),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n",
+                "family[0].algorithms",
+            ),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n",
+                "exact[0].objective",
+            ),
+            (
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n",
+                "max_n",
+            ),
             ("name = \"t\"\n", "no instances"),
         ];
         for (text, needle) in bad {
             let e = Config::parse(text, "bad.toml").unwrap_err().to_string();
-            assert!(e.contains(needle) && e.contains("bad.toml"), "{needle}: {e}");
+            assert!(
+                e.contains(needle) && e.contains("bad.toml"),
+                "{needle}: {e}"
+            );
         }
     }
 }

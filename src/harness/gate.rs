@@ -46,7 +46,11 @@ impl GateReport {
         let mut s = String::new();
         let fmt = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.6}"));
         if !self.findings.is_empty() {
-            let _ = writeln!(s, "{:<9} {:>10} {:>10} {:>9}  what", "verdict", "baseline", "current", "change");
+            let _ = writeln!(
+                s,
+                "{:<9} {:>10} {:>10} {:>9}  what",
+                "verdict", "baseline", "current", "change"
+            );
             for f in &self.findings {
                 let change = match (f.baseline, f.current) {
                     (Some(b), Some(c)) if b != 0.0 => format!("{:+.2}%", (c - b) / b * 100.0),
@@ -56,10 +60,20 @@ impl GateReport {
                     Verdict::Fail => "FAIL",
                     Verdict::Improved => "improved",
                 };
-                let _ = writeln!(s, "{v:<9} {:>10} {:>10} {change:>9}  {}", fmt(f.baseline), fmt(f.current), f.what);
+                let _ = writeln!(
+                    s,
+                    "{v:<9} {:>10} {:>10} {change:>9}  {}",
+                    fmt(f.baseline),
+                    fmt(f.current),
+                    f.what
+                );
             }
         }
-        let fails = self.findings.iter().filter(|f| f.verdict == Verdict::Fail).count();
+        let fails = self
+            .findings
+            .iter()
+            .filter(|f| f.verdict == Verdict::Fail)
+            .count();
         let better = self.findings.len() - fails;
         let _ = writeln!(
             s,
@@ -73,7 +87,11 @@ impl GateReport {
 
 /// The baseline's statistics: a `stats.csv` file, or a run directory holding one.
 fn baseline_stats(path: &Path) -> Result<Vec<StatRow>> {
-    let file: PathBuf = if path.is_dir() { path.join("stats.csv") } else { path.to_path_buf() };
+    let file: PathBuf = if path.is_dir() {
+        path.join("stats.csv")
+    } else {
+        path.to_path_buf()
+    };
     stats::read(&file)
 }
 
@@ -83,28 +101,57 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
     let rows: Vec<Row> = read_rows(&current.join("results.csv"))?;
     let now = stats::compute(&rows);
     let mut report = GateReport::default();
-    let fail = |what: String, b: Option<f64>, c: Option<f64>| Finding { verdict: Verdict::Fail, what, baseline: b, current: c };
+    let fail = |what: String, b: Option<f64>, c: Option<f64>| Finding {
+        verdict: Verdict::Fail,
+        what,
+        baseline: b,
+        current: c,
+    };
     for r in rows.iter().filter(|r| r.valid == Some(false)) {
-        report.findings.push(fail(format!("invalid result: {} {} {}: {}", r.instance, r.algorithm, r.objective, r.error), None, None));
+        report.findings.push(fail(
+            format!(
+                "invalid result: {} {} {}: {}",
+                r.instance, r.algorithm, r.objective, r.error
+            ),
+            None,
+            None,
+        ));
     }
     for r in rows.iter().filter(|r| r.within_guarantee == Some(false)) {
         report.findings.push(fail(
-            format!("guarantee violated: {} {} {} value {} ({})", r.instance, r.algorithm, r.objective, r.value.unwrap_or(0), r.guarantee),
+            format!(
+                "guarantee violated: {} {} {} value {} ({})",
+                r.instance,
+                r.algorithm,
+                r.objective,
+                r.value.unwrap_or(0),
+                r.guarantee
+            ),
             None,
             None,
         ));
     }
     let key = |s: &StatRow| (s.family.clone(), s.algorithm.clone(), s.objective.clone());
-    let current: BTreeMap<_, &StatRow> = now.iter().filter(|s| s.size_bin == "all").map(|s| (key(s), s)).collect();
+    let current: BTreeMap<_, &StatRow> = now
+        .iter()
+        .filter(|s| s.size_bin == "all")
+        .map(|s| (key(s), s))
+        .collect();
     for b in base.iter().filter(|s| s.size_bin == "all") {
         let group = format!("{} / {} / {}", b.family, b.algorithm, b.objective);
         let Some(c) = current.get(&key(b)) else {
-            report.findings.push(fail(format!("missing in current run: {group}"), None, None));
+            report
+                .findings
+                .push(fail(format!("missing in current run: {group}"), None, None));
             continue;
         };
         report.groups_compared += 1;
         if c.errors > b.errors {
-            report.findings.push(fail(format!("{group}: error rows"), Some(b.errors as f64), Some(c.errors as f64)));
+            report.findings.push(fail(
+                format!("{group}: error rows"),
+                Some(b.errors as f64),
+                Some(c.errors as f64),
+            ));
         }
         for which in ["opt", "lb", "n"] {
             let (bs, cs) = (b.summary(which), c.summary(which));
@@ -114,13 +161,19 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
                     (Some(bv), Some(cv)) if cv > bv * (1.0 + tolerance) + 1e-12 => {
                         report.findings.push(fail(what, Some(bv), Some(cv)))
                     }
-                    (Some(bv), Some(cv)) if cv < bv * (1.0 - tolerance) - 1e-12 => report.findings.push(Finding {
-                        verdict: Verdict::Improved,
-                        what,
-                        baseline: Some(bv),
-                        current: Some(cv),
-                    }),
-                    (Some(bv), None) => report.findings.push(fail(format!("{what} missing"), Some(bv), None)),
+                    (Some(bv), Some(cv)) if cv < bv * (1.0 - tolerance) - 1e-12 => {
+                        report.findings.push(Finding {
+                            verdict: Verdict::Improved,
+                            what,
+                            baseline: Some(bv),
+                            current: Some(cv),
+                        })
+                    }
+                    (Some(bv), None) => {
+                        report
+                            .findings
+                            .push(fail(format!("{what} missing"), Some(bv), None))
+                    }
                     _ => {}
                 }
             }

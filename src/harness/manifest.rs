@@ -16,28 +16,43 @@ pub fn now() -> String {
 /// The HiGHS version linked into this binary.
 pub fn highs_version() -> String {
     // SAFETY: the HiGHS version getters take no arguments and only return constants.
-    let (major, minor, patch) =
-        unsafe { (highs_sys::Highs_versionMajor(), highs_sys::Highs_versionMinor(), highs_sys::Highs_versionPatch()) };
+    let (major, minor, patch) = unsafe {
+        (
+            highs_sys::Highs_versionMajor(),
+            highs_sys::Highs_versionMinor(),
+            highs_sys::Highs_versionPatch(),
+        )
+    };
     format!("{major}.{minor}.{patch}")
 }
 
 fn git(args: &[&str]) -> Option<String> {
     let out = Command::new("git").args(args).output().ok()?;
-    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
 fn os_name() -> String {
     std::fs::read_to_string("/etc/os-release")
         .ok()
         .and_then(|t| {
-            t.lines()
-                .find_map(|l| l.strip_prefix("PRETTY_NAME=").map(|v| v.trim_matches('"').to_string()))
+            t.lines().find_map(|l| {
+                l.strip_prefix("PRETTY_NAME=")
+                    .map(|v| v.trim_matches('"').to_string())
+            })
         })
         .unwrap_or_else(|| std::env::consts::OS.to_string())
 }
 
 /// Writes `out/manifest.json`; `end` is `None` while the run is going.
-pub fn write(out: &Path, config: &Config, opts: &RunOptions, start: &str, end: Option<&str>) -> Result<()> {
+pub fn write(
+    out: &Path,
+    config: &Config,
+    opts: &RunOptions,
+    start: &str,
+    end: Option<&str>,
+) -> Result<()> {
     let manifest = json!({
         "run_id": opts.run_id,
         "mowmill_version": env!("CARGO_PKG_VERSION"),
@@ -58,7 +73,8 @@ pub fn write(out: &Path, config: &Config, opts: &RunOptions, start: &str, end: O
         "command_line": opts.command_line,
     });
     let path = out.join("manifest.json");
-    let text = serde_json::to_string_pretty(&manifest).map_err(|e| Error::invalid(e.to_string()))?;
+    let text =
+        serde_json::to_string_pretty(&manifest).map_err(|e| Error::invalid(e.to_string()))?;
     std::fs::write(&path, text + "\n").map_err(|e| Error::io(&path, e))
 }
 

@@ -54,12 +54,19 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<usize> {
         "end": super::manifest::now(),
     });
     let path = out.join("manifest.json");
-    std::fs::write(&path, serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n")
-        .map_err(|e| Error::io(&path, e))?;
+    std::fs::write(
+        &path,
+        serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n",
+    )
+    .map_err(|e| Error::io(&path, e))?;
     Ok(n)
 }
 
 fn same_apart_from_timing(a: &Row, b: &Row) -> bool {
-    let strip = |r: &Row| Row { seconds: 0.0, run_id: String::new(), ..r.clone() };
+    let strip = |r: &Row| Row {
+        seconds: 0.0,
+        run_id: String::new(),
+        ..r.clone()
+    };
     strip(a) == strip(b)
 }

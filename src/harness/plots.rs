@@ -76,7 +76,15 @@ impl Kind {
 }
 
 fn file_safe(s: &str) -> String {
-    s.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect()
+    s.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
 }
 
 fn plot_err<E: std::fmt::Display>(e: E) -> Error {
@@ -90,27 +98,66 @@ pub fn draw_all(out: &Path, rows: &[Row]) -> Result<()> {
     std::fs::create_dir_all(&dir).map_err(|e| Error::io(&dir, e))?;
     let ok: Vec<&Row> = rows.iter().filter(|r| r.error.is_empty()).collect();
     let mut by_algo: BTreeMap<(&str, &str), Vec<&Row>> = BTreeMap::new();
-    for r in ok.iter().filter(|r| r.algorithm != EXACT && r.algorithm != "instance") {
-        by_algo.entry((r.algorithm.as_str(), r.objective.as_str())).or_default().push(r);
+    for r in ok
+        .iter()
+        .filter(|r| r.algorithm != EXACT && r.algorithm != "instance")
+    {
+        by_algo
+            .entry((r.algorithm.as_str(), r.objective.as_str()))
+            .or_default()
+            .push(r);
     }
     for ((algo, objective), group) in &by_algo {
-        let guarantee = algorithms::find(algo)
-            .and_then(|a| a.guarantees.iter().find(|g| g.objective.name() == *objective));
-        let stem = dir.join(format!("ratio-vs-n_{}_{}", file_safe(algo), file_safe(objective)));
-        render(&stem, (900, 600), &RatioVsN { algo, objective, rows: group, guarantee })?;
+        let guarantee = algorithms::find(algo).and_then(|a| {
+            a.guarantees
+                .iter()
+                .find(|g| g.objective.name() == *objective)
+        });
+        let stem = dir.join(format!(
+            "ratio-vs-n_{}_{}",
+            file_safe(algo),
+            file_safe(objective)
+        ));
+        render(
+            &stem,
+            (900, 600),
+            &RatioVsN {
+                algo,
+                objective,
+                rows: group,
+                guarantee,
+            },
+        )?;
     }
     let mut by_objective: BTreeMap<&str, Vec<&Row>> = BTreeMap::new();
-    for r in ok.iter().filter(|r| r.algorithm != EXACT && r.algorithm != "instance") {
-        by_objective.entry(r.objective.as_str()).or_default().push(r);
+    for r in ok
+        .iter()
+        .filter(|r| r.algorithm != EXACT && r.algorithm != "instance")
+    {
+        by_objective
+            .entry(r.objective.as_str())
+            .or_default()
+            .push(r);
     }
     for (objective, group) in &by_objective {
         let stem = dir.join(format!("ratio-dist_{}", file_safe(objective)));
         let groups = distribution_groups(group).1.len() as u32;
-        render(&stem, (1000, 140 + 30 * groups.max(3)), &RatioDist { objective, rows: group })?;
+        render(
+            &stem,
+            (1000, 140 + 30 * groups.max(3)),
+            &RatioDist {
+                objective,
+                rows: group,
+            },
+        )?;
     }
     let exact: Vec<&Row> = ok.into_iter().filter(|r| r.algorithm == EXACT).collect();
     if !exact.is_empty() {
-        render(&dir.join("exact-time"), (900, 600), &ExactTime { rows: &exact })?;
+        render(
+            &dir.join("exact-time"),
+            (900, 600),
+            &ExactTime { rows: &exact },
+        )?;
     }
     Ok(())
 }
@@ -170,21 +217,39 @@ impl Figure for ExactTime<'_> {
     }
 }
 
-fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, objective: &str, rows: &[&Row], g: Option<&Guarantee>) -> Result<()> {
+fn ratio_vs_n<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    algo: &str,
+    objective: &str,
+    rows: &[&Row],
+    g: Option<&Guarantee>,
+) -> Result<()> {
     let kind = Kind::choose(rows, g);
-    let pts: Vec<(&str, f64, f64)> =
-        rows.iter().filter_map(|r| kind.of(r).map(|y| (r.family.as_str(), r.n as f64, y))).collect();
+    let pts: Vec<(&str, f64, f64)> = rows
+        .iter()
+        .filter_map(|r| kind.of(r).map(|y| (r.family.as_str(), r.n as f64, y)))
+        .collect();
     let max_n = pts.iter().map(|p| p.1).fold(1.0, f64::max) * 1.05;
     let min_n = pts.iter().map(|p| p.1).fold(max_n, f64::min).min(max_n) * 0.95;
-    let g_at = |n: f64| g.map(|g| match g.against {
-        Against::Opt => g.factor(),
-        Against::N => (g.num as f64 * n + g.add as f64) / (g.den as f64 * n),
-    });
+    let g_at = |n: f64| {
+        g.map(|g| match g.against {
+            Against::Opt => g.factor(),
+            Against::N => (g.num as f64 * n + g.add as f64) / (g.den as f64 * n),
+        })
+    };
     // Head room above the guarantee line for the legend.
-    let y_hi = pts.iter().map(|p| p.2).chain(g_at(max_n)).fold(1.0, f64::max) * 1.25;
+    let y_hi = pts
+        .iter()
+        .map(|p| p.2)
+        .chain(g_at(max_n))
+        .fold(1.0, f64::max)
+        * 1.25;
     let y_lo = pts.iter().map(|p| p.2).fold(1.0, f64::min).min(1.0) * 0.97;
     let mut chart = ChartBuilder::on(area)
-        .caption(format!("{algo}: {}", kind.label(objective)), (FONT_FAMILY, 26))
+        .caption(
+            format!("{algo}: {}", kind.label(objective)),
+            (FONT_FAMILY, 26),
+        )
         .margin(16)
         .x_label_area_size(50)
         .y_label_area_size(70)
@@ -208,7 +273,11 @@ fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, obj
     for (k, fam) in families.iter().enumerate() {
         let c = colour(k);
         chart
-            .draw_series(pts.iter().filter(|p| p.0 == *fam).map(|p| Circle::new((p.1, p.2), 4, c.filled())))
+            .draw_series(
+                pts.iter()
+                    .filter(|p| p.0 == *fam)
+                    .map(|p| Circle::new((p.1, p.2), 4, c.filled())),
+            )
             .map_err(plot_err)?
             .label(*fam)
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
@@ -241,7 +310,10 @@ fn ratio_vs_n<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, algo: &str, obj
 fn distribution_groups(rows: &[&Row]) -> (Kind, Vec<(String, Vec<f64>)>) {
     let mut groups: BTreeMap<(String, String), Vec<&Row>> = BTreeMap::new();
     for r in rows {
-        groups.entry((r.algorithm.clone(), r.family.clone())).or_default().push(r);
+        groups
+            .entry((r.algorithm.clone(), r.family.clone()))
+            .or_default()
+            .push(r);
     }
     // One ratio kind for the whole figure so that boxes are comparable.
     let kind = if rows.iter().all(|r| r.ratio_opt.is_some()) {
@@ -264,13 +336,29 @@ fn distribution_groups(rows: &[&Row]) -> (Kind, Vec<(String, Vec<f64>)>) {
 }
 
 /// Horizontal box plots, one row per (algorithm, family), labelled on the left.
-fn ratio_distribution<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, objective: &str, rows: &[&Row]) -> Result<()> {
+fn ratio_distribution<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    objective: &str,
+    rows: &[&Row],
+) -> Result<()> {
     let (kind, boxes) = distribution_groups(rows);
-    let x_hi = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::max) * 1.05;
-    let x_lo = boxes.iter().flat_map(|b| b.1.iter().copied()).fold(1.0, f64::min).min(1.0) * 0.98;
+    let x_hi = boxes
+        .iter()
+        .flat_map(|b| b.1.iter().copied())
+        .fold(1.0, f64::max)
+        * 1.05;
+    let x_lo = boxes
+        .iter()
+        .flat_map(|b| b.1.iter().copied())
+        .fold(1.0, f64::min)
+        .min(1.0)
+        * 0.98;
     let count = boxes.len().max(1);
     let mut chart = ChartBuilder::on(area)
-        .caption(format!("Distribution of {}", kind.label(objective)), (FONT_FAMILY, 24))
+        .caption(
+            format!("Distribution of {}", kind.label(objective)),
+            (FONT_FAMILY, 24),
+        )
         .margin(16)
         .x_label_area_size(50)
         .y_label_area_size(300)
@@ -300,20 +388,45 @@ fn ratio_distribution<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, objecti
         // The first group is drawn at the top.
         let y = (count - 1 - k) as f64;
         let c = colour(k);
-        let (p5, q1, med, q3, p95, max) = (q(v, 0.05), q(v, 0.25), q(v, 0.5), q(v, 0.75), q(v, 0.95), v[v.len() - 1]);
+        let (p5, q1, med, q3, p95, max) = (
+            q(v, 0.05),
+            q(v, 0.25),
+            q(v, 0.5),
+            q(v, 0.75),
+            q(v, 0.95),
+            v[v.len() - 1],
+        );
         let h = 0.3;
-        chart.draw_series([Rectangle::new([(q1, y - h), (q3, y + h)], c.mix(0.35).filled())]).map_err(plot_err)?;
-        chart.draw_series([Rectangle::new([(q1, y - h), (q3, y + h)], c.stroke_width(2))]).map_err(plot_err)?;
+        chart
+            .draw_series([Rectangle::new(
+                [(q1, y - h), (q3, y + h)],
+                c.mix(0.35).filled(),
+            )])
+            .map_err(plot_err)?;
+        chart
+            .draw_series([Rectangle::new(
+                [(q1, y - h), (q3, y + h)],
+                c.stroke_width(2),
+            )])
+            .map_err(plot_err)?;
         chart
             .draw_series([
                 PathElement::new(vec![(med, y - h), (med, y + h)], BLACK.stroke_width(2)),
                 PathElement::new(vec![(q3, y), (p95, y)], c.stroke_width(1)),
                 PathElement::new(vec![(p5, y), (q1, y)], c.stroke_width(1)),
-                PathElement::new(vec![(p95, y - h / 2.0), (p95, y + h / 2.0)], c.stroke_width(1)),
-                PathElement::new(vec![(p5, y - h / 2.0), (p5, y + h / 2.0)], c.stroke_width(1)),
+                PathElement::new(
+                    vec![(p95, y - h / 2.0), (p95, y + h / 2.0)],
+                    c.stroke_width(1),
+                ),
+                PathElement::new(
+                    vec![(p5, y - h / 2.0), (p5, y + h / 2.0)],
+                    c.stroke_width(1),
+                ),
             ])
             .map_err(plot_err)?;
-        chart.draw_series([Cross::new((max, y), 5, BLACK.stroke_width(1))]).map_err(plot_err)?;
+        chart
+            .draw_series([Cross::new((max, y), 5, BLACK.stroke_width(1))])
+            .map_err(plot_err)?;
     }
     Ok(())
 }
@@ -321,7 +434,14 @@ fn ratio_distribution<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, objecti
 fn exact_time<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, rows: &[&Row]) -> Result<()> {
     let pts: Vec<(&str, f64, f64, bool)> = rows
         .iter()
-        .map(|r| (r.objective.as_str(), r.n as f64, r.seconds.max(1e-3), r.opt_status == "optimal"))
+        .map(|r| {
+            (
+                r.objective.as_str(),
+                r.n as f64,
+                r.seconds.max(1e-3),
+                r.opt_status == "optimal",
+            )
+        })
         .collect();
     let max_n = pts.iter().map(|p| p.1).fold(1.0, f64::max) * 1.05;
     let max_t = pts.iter().map(|p| p.2).fold(1.0, f64::max) * 2.0;

@@ -48,7 +48,11 @@ pub struct Row {
 impl Row {
     /// The key `--resume` and `merge` identify a row by.
     pub fn key(&self) -> (String, String, String) {
-        (self.instance.clone(), self.algorithm.clone(), self.objective.clone())
+        (
+            self.instance.clone(),
+            self.algorithm.clone(),
+            self.objective.clone(),
+        )
     }
 
     /// Fills the three ratios from the integer columns.
@@ -94,32 +98,51 @@ pub struct RowWriter {
 
 impl RowWriter {
     pub fn open(path: &Path) -> Result<RowWriter> {
-        let fresh = !path.exists() || std::fs::metadata(path).map(|m| m.len() == 0).unwrap_or(true);
+        let fresh = !path.exists()
+            || std::fs::metadata(path)
+                .map(|m| m.len() == 0)
+                .unwrap_or(true);
         if !fresh {
             truncate_partial_line(path)?;
         }
-        let mut file = OpenOptions::new().create(true).append(true).open(path).map_err(|e| Error::io(path, e))?;
+        let mut file = OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)
+            .map_err(|e| Error::io(path, e))?;
         if fresh {
-            let mut w = csv::WriterBuilder::new().has_headers(true).from_writer(Vec::new());
-            w.serialize(Row::default()).map_err(|e| Error::invalid(e.to_string()))?;
+            let mut w = csv::WriterBuilder::new()
+                .has_headers(true)
+                .from_writer(Vec::new());
+            w.serialize(Row::default())
+                .map_err(|e| Error::invalid(e.to_string()))?;
             let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
-            let header_end = bytes.iter().position(|&b| b == b'\n').map_or(bytes.len(), |p| p + 1);
-            file.write_all(&bytes[..header_end]).map_err(|e| Error::io(path, e))?;
+            let header_end = bytes
+                .iter()
+                .position(|&b| b == b'\n')
+                .map_or(bytes.len(), |p| p + 1);
+            file.write_all(&bytes[..header_end])
+                .map_err(|e| Error::io(path, e))?;
         }
         Ok(RowWriter { file })
     }
 
     /// Writes a batch of rows and flushes it to disk.
     pub fn append(&mut self, rows: &[Row]) -> Result<()> {
-        let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
+        let mut w = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
         for r in rows {
             w.serialize(r).map_err(|e| Error::invalid(e.to_string()))?;
         }
         let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
-        self.file.write_all(&bytes).and_then(|_| self.file.sync_data()).map_err(|e| Error::Io {
-            file: "results.csv".into(),
-            source: e,
-        })
+        self.file
+            .write_all(&bytes)
+            .and_then(|_| self.file.sync_data())
+            .map_err(|e| Error::Io {
+                file: "results.csv".into(),
+                source: e,
+            })
     }
 }
 
@@ -128,7 +151,10 @@ pub fn truncate_partial_line(path: &Path) -> Result<()> {
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
     if bytes.last().is_some_and(|&b| b != b'\n') {
         let keep = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
-        let f = OpenOptions::new().write(true).open(path).map_err(|e| Error::io(path, e))?;
+        let f = OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(|e| Error::io(path, e))?;
         f.set_len(keep as u64).map_err(|e| Error::io(path, e))?;
     }
     Ok(())
@@ -142,7 +168,12 @@ pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
     for (k, rec) in r.deserialize::<Row>().enumerate() {
         let row = rec.map_err(|e| {
             let line = e.position().map_or(k + 2, |p| p.line() as usize);
-            Error::parse(&path.display().to_string(), line, 1, format!("expected a results.csv row: {e}"))
+            Error::parse(
+                &path.display().to_string(),
+                line,
+                1,
+                format!("expected a results.csv row: {e}"),
+            )
         })?;
         rows.push(row);
     }
@@ -155,7 +186,8 @@ pub fn write_sorted(path: &Path, rows: &mut [Row]) -> Result<()> {
     rows.sort_by_key(Row::key);
     let tmp = path.with_extension("csv.tmp");
     {
-        let mut w = csv::Writer::from_path(&tmp).map_err(|e| Error::invalid(format!("{}: {e}", tmp.display())))?;
+        let mut w = csv::Writer::from_path(&tmp)
+            .map_err(|e| Error::invalid(format!("{}: {e}", tmp.display())))?;
         for r in rows.iter() {
             w.serialize(r).map_err(|e| Error::invalid(e.to_string()))?;
         }

@@ -49,7 +49,12 @@ pub struct RunSummary {
 pub fn shard_of(instances: Vec<InstanceSpec>, shard: Option<(usize, usize)>) -> Vec<InstanceSpec> {
     match shard {
         None => instances,
-        Some((i, n)) => instances.into_iter().enumerate().filter(|(k, _)| k % n == i).map(|(_, s)| s).collect(),
+        Some((i, n)) => instances
+            .into_iter()
+            .enumerate()
+            .filter(|(k, _)| k % n == i)
+            .map(|(_, s)| s)
+            .collect(),
     }
 }
 
@@ -72,7 +77,8 @@ pub fn run(config: &Config, opts: &RunOptions) -> Result<RunSummary> {
             results.display()
         )));
     }
-    let done: HashMap<(String, String, String), Row> = existing.into_iter().map(|r| (r.key(), r)).collect();
+    let done: HashMap<(String, String, String), Row> =
+        existing.into_iter().map(|r| (r.key(), r)).collect();
     let started = super::manifest::now();
     super::manifest::write(out, config, opts, &started, None)?;
 
@@ -107,7 +113,11 @@ pub fn run(config: &Config, opts: &RunOptions) -> Result<RunSummary> {
     let (rows_written, errors) = counts.into_inner().expect("count lock");
     finish(out)?;
     super::manifest::write(out, config, opts, &started, Some(&super::manifest::now()))?;
-    Ok(RunSummary { instances: instances.len(), rows_written, errors })
+    Ok(RunSummary {
+        instances: instances.len(),
+        rows_written,
+        errors,
+    })
 }
 
 /// Sorts `results.csv` into canonical order and derives `stats.csv` and the plots from it.
@@ -149,7 +159,12 @@ fn run_instance(
     if done.contains_key(&key) {
         return Vec::new();
     }
-    vec![Row { algorithm: "instance".into(), objective: "-".into(), error: region.to_string(), ..base }]
+    vec![Row {
+        algorithm: "instance".into(),
+        objective: "-".into(),
+        error: region.to_string(),
+        ..base
+    }]
 }
 
 /// Generates or reads the instance, saves it under `out/instances/` and returns it with the
@@ -164,7 +179,11 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Region, String)> {
         Source::File(path) => {
             let inst = Instance::read(path)?;
             let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-            let ext = if path.extension().is_some_and(|e| e == "wkt") { "wkt" } else { "grid" };
+            let ext = if path.extension().is_some_and(|e| e == "wkt") {
+                "wkt"
+            } else {
+                "grid"
+            };
             (bytes, ext, inst.region)
         }
     };
@@ -175,7 +194,10 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Region, String)> {
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
     use sha2::{Digest, Sha256};
-    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 /// The name of an exact objective in the `objective` column.
@@ -222,14 +244,23 @@ fn run_on_region(
     }
     let algos: Vec<&'static Algorithm> = match &spec.algorithms {
         Some(names) => names.iter().filter_map(|n| algorithms::find(n)).collect(),
-        None => algorithms::REGISTRY.iter().filter(|a| (a.precondition)(region).is_ok()).collect(),
+        None => algorithms::REGISTRY
+            .iter()
+            .filter(|a| (a.precondition)(region).is_ok())
+            .collect(),
     };
     for algo in algos {
         let pending: Vec<Objective> = algo
             .objectives
             .iter()
             .copied()
-            .filter(|o| !done.contains_key(&(spec.name.clone(), algo.name.to_string(), o.name().to_string())))
+            .filter(|o| {
+                !done.contains_key(&(
+                    spec.name.clone(),
+                    algo.name.to_string(),
+                    o.name().to_string(),
+                ))
+            })
             .collect();
         if pending.is_empty() {
             continue;
@@ -256,11 +287,20 @@ fn guarded<T>(f: impl FnOnce() -> Result<T>) -> std::result::Result<T, String> {
 }
 
 fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
-    let mut row = Row { algorithm: EXACT.into(), objective: name.to_string(), ..base.clone() };
+    let mut row = Row {
+        algorithm: EXACT.into(),
+        objective: name.to_string(),
+        ..base.clone()
+    };
     let start = Instant::now();
     let outcome = guarded(|| {
-        let objective = exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
-        let options = ExactOptions { time_limit: Some(e.time_limit), threads: 1, ..ExactOptions::default() };
+        let objective =
+            exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
+        let options = ExactOptions {
+            time_limit: Some(e.time_limit),
+            threads: 1,
+            ..ExactOptions::default()
+        };
         Ok(exact::solve(region, objective, &options))
     });
     row.seconds = start.elapsed().as_secs_f64();
@@ -279,7 +319,9 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
                 row.opt = res.value;
             }
             if let Some(cover) = &res.cover {
-                row.max_coverage = Some(u64::from(checker::check(region, cover, checker::Mode::Milling).max_coverage));
+                row.max_coverage = Some(u64::from(
+                    checker::check(region, cover, checker::Mode::Milling).max_coverage,
+                ));
             }
             if let Some(m) = res.message.filter(|_| res.status == exact::Status::Error) {
                 row.error = m;
@@ -291,7 +333,11 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
 }
 
 /// The best known lower bound for an algorithm objective, and its source.
-fn lower_bound(region: &Region, objective: Objective, exact_rows: &HashMap<String, Row>) -> (Option<u64>, String) {
+fn lower_bound(
+    region: &Region,
+    objective: Objective,
+    exact_rows: &HashMap<String, Row>,
+) -> (Option<u64>, String) {
     let mut candidates: Vec<(u64, String)> = Vec::new();
     match objective {
         Objective::Length => {
@@ -313,15 +359,21 @@ fn lower_bound(region: &Region, objective: Objective, exact_rows: &HashMap<Strin
     };
     for name in exact_names {
         if let Some(lb) = exact_rows.get(*name).and_then(|r| r.lower_bound) {
-            let src = if exact_rows[*name].opt.is_some() { format!("opt:{name}") } else { format!("exact-bound:{name}") };
+            let src = if exact_rows[*name].opt.is_some() {
+                format!("opt:{name}")
+            } else {
+                format!("exact-bound:{name}")
+            };
             candidates.push((lb, src));
         }
     }
     // The largest bound wins; ties keep the first (cheapest) source.
-    let best = candidates.into_iter().fold(None::<(u64, String)>, |acc, c| match acc {
-        Some(a) if a.0 >= c.0 => Some(a),
-        _ => Some(c),
-    });
+    let best = candidates
+        .into_iter()
+        .fold(None::<(u64, String)>, |acc, c| match acc {
+            Some(a) if a.0 >= c.0 => Some(a),
+            _ => Some(c),
+        });
     match best {
         Some((b, s)) => (Some(b), s),
         None => (None, String::new()),
@@ -344,14 +396,26 @@ fn algorithm_rows(
     let row_for = |objective: Objective| Row {
         algorithm: algo.name.into(),
         objective: objective.name().into(),
-        guarantee: algo.guarantees.iter().filter(|g| g.objective == objective).map(|g| g.to_string()).collect::<Vec<_>>().join("; "),
+        guarantee: algo
+            .guarantees
+            .iter()
+            .filter(|g| g.objective == objective && g.when.applies(region))
+            .map(|g| g.to_string())
+            .collect::<Vec<_>>()
+            .join("; "),
         seconds,
         ..base.clone()
     };
     let solution = match outcome {
         Ok(s) => s,
         Err(msg) => {
-            return objectives.iter().map(|&o| Row { error: msg.clone(), ..row_for(o) }).collect();
+            return objectives
+                .iter()
+                .map(|&o| Row {
+                    error: msg.clone(),
+                    ..row_for(o)
+                })
+                .collect();
         }
     };
     objectives
@@ -386,7 +450,7 @@ fn algorithm_rows(
             let (lb, src) = lower_bound(region, objective, exact_rows);
             row.lower_bound = lb;
             row.lb_source = src;
-            row.within_guarantee = within_guarantee(algo, objective, value, region.len() as u64, row.opt, lb);
+            row.within_guarantee = within_guarantee(algo, objective, value, region, row.opt, lb);
             row.compute_ratios();
             row
         })
@@ -400,12 +464,18 @@ pub fn within_guarantee(
     algo: &Algorithm,
     objective: Objective,
     value: u64,
-    n: u64,
+    region: &Region,
     opt: Option<u64>,
     lb: Option<u64>,
 ) -> Option<bool> {
+    let n = region.len() as u64;
     let mut all = Some(true);
-    for g in algo.guarantees.iter().filter(|g| g.objective == objective) {
+    let applicable: Vec<_> = algo
+        .guarantees
+        .iter()
+        .filter(|g| g.objective == objective && g.when.applies(region))
+        .collect();
+    for g in &applicable {
         let verdict = match g.against {
             Against::N => Some(g.holds(value, n)),
             Against::Opt => match (opt, lb) {
@@ -421,5 +491,5 @@ pub fn within_guarantee(
             Some(true) => {}
         }
     }
-    if algo.guarantees.iter().any(|g| g.objective == objective) { all } else { None }
+    if applicable.is_empty() { None } else { all }
 }

@@ -72,11 +72,35 @@ impl StatRow {
     /// The summary of ratio column `which` (`opt`, `lb` or `n`).
     pub fn summary(&self, which: &str) -> Summary {
         let (count, mean, median, p95, max) = match which {
-            "opt" => (self.ratio_opt_count, self.ratio_opt_mean, self.ratio_opt_median, self.ratio_opt_p95, self.ratio_opt_max),
-            "lb" => (self.ratio_lb_count, self.ratio_lb_mean, self.ratio_lb_median, self.ratio_lb_p95, self.ratio_lb_max),
-            _ => (self.ratio_n_count, self.ratio_n_mean, self.ratio_n_median, self.ratio_n_p95, self.ratio_n_max),
+            "opt" => (
+                self.ratio_opt_count,
+                self.ratio_opt_mean,
+                self.ratio_opt_median,
+                self.ratio_opt_p95,
+                self.ratio_opt_max,
+            ),
+            "lb" => (
+                self.ratio_lb_count,
+                self.ratio_lb_mean,
+                self.ratio_lb_median,
+                self.ratio_lb_p95,
+                self.ratio_lb_max,
+            ),
+            _ => (
+                self.ratio_n_count,
+                self.ratio_n_mean,
+                self.ratio_n_median,
+                self.ratio_n_p95,
+                self.ratio_n_max,
+            ),
         };
-        Summary { count, mean, median, p95, max }
+        Summary {
+            count,
+            mean,
+            median,
+            p95,
+            max,
+        }
     }
 }
 
@@ -96,7 +120,12 @@ pub fn compute(rows: &[Row]) -> Vec<StatRow> {
     for r in rows {
         for bin in [size_bin(r.n), "all".to_string()] {
             groups
-                .entry((r.family.clone(), bin, r.algorithm.clone(), r.objective.clone()))
+                .entry((
+                    r.family.clone(),
+                    bin,
+                    r.algorithm.clone(),
+                    r.objective.clone(),
+                ))
                 .or_default()
                 .push(r);
         }
@@ -105,7 +134,11 @@ pub fn compute(rows: &[Row]) -> Vec<StatRow> {
         .into_iter()
         .map(|((family, size_bin, algorithm, objective), rs)| {
             let col = |f: fn(&Row) -> Option<f64>| {
-                let mut v: Vec<f64> = rs.iter().filter(|r| r.error.is_empty()).filter_map(|r| f(r)).collect();
+                let mut v: Vec<f64> = rs
+                    .iter()
+                    .filter(|r| r.error.is_empty())
+                    .filter_map(|r| f(r))
+                    .collect();
                 Summary::of(&mut v)
             };
             let opt = col(|r| r.ratio_opt.map(|x| x.0));
@@ -132,8 +165,16 @@ pub fn compute(rows: &[Row]) -> Vec<StatRow> {
                 ratio_n_median: n.median,
                 ratio_n_p95: n.p95,
                 ratio_n_max: n.max,
-                guarantee: rs.iter().map(|r| r.guarantee.as_str()).find(|g| !g.is_empty()).unwrap_or("").to_string(),
-                violations: rs.iter().filter(|r| r.within_guarantee == Some(false)).count(),
+                guarantee: rs
+                    .iter()
+                    .map(|r| r.guarantee.as_str())
+                    .find(|g| !g.is_empty())
+                    .unwrap_or("")
+                    .to_string(),
+                violations: rs
+                    .iter()
+                    .filter(|r| r.within_guarantee == Some(false))
+                    .count(),
                 invalid: rs.iter().filter(|r| r.valid == Some(false)).count(),
                 errors: rs.iter().filter(|r| !r.error.is_empty()).count(),
             }
@@ -142,7 +183,8 @@ pub fn compute(rows: &[Row]) -> Vec<StatRow> {
 }
 
 pub fn write(path: &Path, stats: &[StatRow]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
+    let mut w = csv::Writer::from_path(path)
+        .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
     for s in stats {
         w.serialize(s).map_err(|e| Error::invalid(e.to_string()))?;
     }
@@ -150,11 +192,19 @@ pub fn write(path: &Path, stats: &[StatRow]) -> Result<()> {
 }
 
 pub fn read(path: &Path) -> Result<Vec<StatRow>> {
-    let mut r = csv::Reader::from_path(path).map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
+    let mut r = csv::Reader::from_path(path)
+        .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
     r.deserialize()
         .enumerate()
         .map(|(k, rec)| {
-            rec.map_err(|e| Error::parse(&path.display().to_string(), k + 2, 1, format!("expected a stats.csv row: {e}")))
+            rec.map_err(|e| {
+                Error::parse(
+                    &path.display().to_string(),
+                    k + 2,
+                    1,
+                    format!("expected a stats.csv row: {e}"),
+                )
+            })
         })
         .collect()
 }
