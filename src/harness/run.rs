@@ -314,7 +314,8 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
             row.opt_status = res.status.to_string();
             row.lower_bound = Some(res.lower_bound);
             row.lb_source = "exact".into();
-            row.valid = Some(res.valid);
+            // No cover (infeasible, or no incumbent by the time limit) is not an invalid cover.
+            row.valid = res.cover.as_ref().map(|_| res.valid);
             if res.status == exact::Status::Optimal {
                 row.opt = res.value;
             }
