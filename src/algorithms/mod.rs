@@ -159,7 +159,7 @@ impl fmt::Display for Guarantee {
         let num = if self.num == 1 {
             String::new()
         } else {
-            self.num.to_string()
+            format!("{} ", self.num)
         };
         let add = match self.add {
             0 => String::new(),
@@ -174,7 +174,11 @@ impl fmt::Display for Guarantee {
         if self.den == 1 {
             write!(f, "{} <= {num}{x}{add} ({source})", self.objective)
         } else if add.is_empty() {
-            write!(f, "{} <= {num}/{} {x} ({source})", self.objective, self.den)
+            write!(
+                f,
+                "{} <= {}/{} {x} ({source})",
+                self.objective, self.num, self.den
+            )
         } else {
             write!(
                 f,
@@ -303,7 +307,7 @@ mod tests {
         assert!(g.holds(10, 9));
         assert!(!g.holds(11, 9));
         assert_eq!(g.bound(9), 10);
-        assert_eq!(g.to_string(), "length <= (6N - 4)/5 (Theorem 5)");
+        assert_eq!(g.to_string(), "length <= (6 N - 4)/5 (Theorem 5)");
         let h = Guarantee {
             num: 5,
             den: 2,

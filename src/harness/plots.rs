@@ -444,9 +444,13 @@ fn exact_time<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, rows: &[&Row]) 
         })
         .collect();
     let max_n = pts.iter().map(|p| p.1).fold(1.0, f64::max) * 1.05;
-    let max_t = pts.iter().map(|p| p.2).fold(1.0, f64::max) * 2.0;
+    // Head room for the legend above the slowest solve.
+    let max_t = pts.iter().map(|p| p.2).fold(1.0, f64::max) * 30.0;
     let mut chart = ChartBuilder::on(area)
-        .caption("Exact solve time (one thread per solve)", (FONT_FAMILY, 26))
+        .caption(
+            "Exact solve time (one thread per solve; hollow: not proven optimal)",
+            (FONT_FAMILY, 22),
+        )
         .margin(16)
         .x_label_area_size(50)
         .y_label_area_size(80)
@@ -472,7 +476,7 @@ fn exact_time<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, rows: &[&Row]) 
                 Circle::new((p.1, p.2), 4, style)
             }))
             .map_err(plot_err)?
-            .label(format!("{o} (hollow: not proven optimal)"))
+            .label(o.to_string())
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
     }
     chart
@@ -480,7 +484,7 @@ fn exact_time<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, rows: &[&Row]) 
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font((FONT_FAMILY, 15))
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(SeriesLabelPosition::UpperRight)
         .draw()
         .map_err(plot_err)
 }
