@@ -230,14 +230,34 @@ impl<'a> PassageModel<'a> {
 
     /// Cuts between side components: S = the sides of a set Q of components plus every side of
     /// the pixels only Q touches; valid when some pixel is touched only by Q and some not at
-    /// all.
+    /// all. Components are taken of the support and, for fractional solutions, of the parts
+    /// heavier than a few thresholds; a candidate is kept when `x` violates it.
     fn crossing_cuts(&self, x: &[f64]) -> Vec<Row> {
+        let mut out = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        for threshold in [1e-6, 0.3, 0.6, 0.9] {
+            for s in self.component_side_sets(x, threshold) {
+                if seen.insert(s.clone()) {
+                    let row = self.side_cut(&s);
+                    if row.activity(x) < 2.0 - 1e-6 {
+                        out.push(row);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Candidate side sets from the components of the side graph restricted to weights above
+    /// `threshold` (see [`Self::crossing_cuts`]).
+    fn component_side_sets(&self, x: &[f64], threshold: f64) -> Vec<Vec<bool>> {
         let n = self.region.len();
-        let (label, count) = self.side_components(x, 1e-6);
+        let (label, count) = self.side_components(x, threshold);
         if count <= 1 {
             return Vec::new();
         }
-        // Components touching each pixel, as bit sets over at most 64 components.
+        // Components touching each pixel, as bit sets over the first 64 components (pixels
+        // touched only by later ones count as untouched, which keeps every set valid).
         let count = count.min(64);
         let touch: Vec<u64> = (0..n)
             .map(|v| {
@@ -262,22 +282,14 @@ impl<'a> PassageModel<'a> {
                     .collect()
             })
         };
-        let mut out: Vec<Row> = (0..count)
-            .filter_map(|c| try_q(1u64 << c))
-            .map(|s| self.side_cut(&s))
-            .collect();
+        let mut out: Vec<Vec<bool>> = (0..count).filter_map(|c| try_q(1u64 << c)).collect();
         if out.is_empty() {
             // Unions: the components touching one pixel (valid whenever two pixels are
             // touched by disjoint sets of components).
             let mut qs: Vec<u64> = touch.clone();
             qs.sort_unstable();
             qs.dedup();
-            out.extend(
-                qs.into_iter()
-                    .filter_map(try_q)
-                    .take(8)
-                    .map(|s| self.side_cut(&s)),
-            );
+            out.extend(qs.into_iter().filter_map(try_q).take(8));
         }
         out
     }
