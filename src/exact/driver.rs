@@ -223,17 +223,15 @@ impl<'m, M: CutModel> Loop<'m, M> {
         let budget = self.deadline.remaining().map_or(30.0, |r| r * 0.25);
         let cap = Deadline::new(Some(budget));
         let start = self.s.best.clone().filter(|x| g.is_feasible(x, &self.pool));
-        let gap: f64 = std::env::var("MOWMILL_HGAP")
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(1.99);
+        // Stop within three even steps of the capped model's bound: the proof MIP that follows
+        // improves the incumbent if it can, and proving the capped model is wasted work.
         let mip = solve_mip(
             &g,
             &self.pool,
             start.as_deref(),
             &cap,
             self.settings,
-            Some(gap),
+            Some(5.99),
         );
         self.s.rounds += 1;
         if let Some(x) = &mip.x {

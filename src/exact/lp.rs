@@ -208,21 +208,6 @@ fn configure(model: &mut Model, s: &Settings) {
     // in the bipartite grid), so an absolute gap below 2 proves optimality; no relative slack.
     model.set_option("mip_rel_gap", 0.0);
     model.set_option("mip_abs_gap", 1.99);
-    if let Ok(opts) = std::env::var("MOWMILL_HIGHS") {
-        for kv in opts.split(',').filter(|s| !s.is_empty()) {
-            let (k, v) = kv.split_once('=').expect("k=v");
-            let ok = if let Ok(i) = v.parse::<i32>() {
-                model.try_set_option(k, i).is_ok()
-            } else if let Ok(f) = v.parse::<f64>() {
-                model.try_set_option(k, f).is_ok()
-            } else if v == "true" || v == "false" {
-                model.try_set_option(k, v == "true").is_ok()
-            } else {
-                model.try_set_option(k, v.as_bytes()).is_ok()
-            };
-            assert!(ok, "option {k}={v}");
-        }
-    }
 }
 
 /// How a HiGHS call ended.

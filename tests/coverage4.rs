@@ -1,0 +1,197 @@
+//! `--coverage4` (Theorem 5.6 of *Optimal covering tours with turn costs*): on random small
+//! regions and random covering tours with heavy overlap, the rewritten tour passes the
+//! checker, has no more turns than the input and, unless `coverage4` reports stuck pixels,
+//! covers every pixel at most 4 times.
+
+use mowmill::algorithms::coverage4::coverage4;
+use mowmill::algorithms::{self, Merge, Objective, Options};
+use mowmill::checker::{Mode, check};
+use mowmill::region::{Dir, Pixel, Region};
+use mowmill::tour::CycleCover;
+use proptest::prelude::*;
+use std::collections::VecDeque;
+
+/// A connected region grown from (0, 0) by the steps `grow` (pixel choice, direction).
+fn grown_region(grow: &[(usize, u8)]) -> Region {
+    let mut pixels = vec![Pixel::new(0, 0)];
+    for &(k, d) in grow {
+        let q = pixels[k % pixels.len()].step(Dir::from_index(usize::from(d)));
+        if !pixels.contains(&q) {
+            pixels.push(q);
+        }
+    }
+    Region::from_pixels(pixels).expect("small region")
+}
+
+/// A shortest path from `a` to `b` in the region, both included.
+fn path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+    let mut prev = vec![usize::MAX; region.len()];
+    prev[a] = a;
+    let mut queue = VecDeque::from([a]);
+    while let Some(u) = queue.pop_front() {
+        for v in region.neighbors(u) {
+            if prev[v] == usize::MAX {
+                prev[v] = u;
+                queue.push_back(v);
+            }
+        }
+    }
+    let mut out = vec![b];
+    while *out.last().unwrap() != a {
+        out.push(prev[*out.last().unwrap()]);
+    }
+    out.reverse();
+    out
+}
+
+/// A covering tour made of closed sub-walks through one hub pixel: random walks of the given
+/// lengths, each closed by a shortest path back, then a detour to every pixel not yet visited.
+/// With `straight`, a step goes on in the heading of the previous one where it can unless its
+/// value is 0, so that the tour has long links and few turns.
+fn overlapping_tour(region: &Region, hub: usize, loops: &[Vec<u8>], straight: bool) -> Vec<Pixel> {
+    let mut walk = vec![hub];
+    let close = |walk: &mut Vec<usize>, at: usize| {
+        walk.extend(&path(region, at, hub)[1..]);
+    };
+    for steps in loops {
+        let mut at = hub;
+        let mut heading: Option<Dir> = None;
+        for &s in steps {
+            let ahead = heading.and_then(|d| region.neighbor(at, d));
+            let next = match ahead {
+                Some(q) if straight && s != 0 => q,
+                _ => {
+                    let nb: Vec<usize> = region.neighbors(at).collect();
+                    nb[usize::from(s) % nb.len()]
+                }
+            };
+            heading = region.pixel(at).dir_to(region.pixel(next));
+            at = next;
+            walk.push(at);
+        }
+        close(&mut walk, at);
+    }
+    for q in 0..region.len() {
+        if !walk.contains(&q) {
+            walk.extend(&path(region, hub, q)[1..]);
+            close(&mut walk, q);
+        }
+    }
+    walk.pop(); // the walk is closed: its last pixel is the hub again
+    walk.into_iter().map(|q| region.pixel(q)).collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+    #[test]
+    fn heavy_overlap_is_reduced_to_four(
+        grow in prop::collection::vec((0usize..100, 0u8..4), 1..24),
+        hub in 0usize..100,
+        loops in prop::collection::vec(prop::collection::vec(0u8..4, 1..12), 2..9),
+        straight in any::<bool>(),
+    ) {
+        let region = grown_region(&grow);
+        prop_assume!(region.len() >= 2);
+        let walk = overlapping_tour(&region, hub % region.len(), &loops, straight);
+        let before = check(&region, &CycleCover::tour(walk.clone()), Mode::Milling);
+        prop_assert!(before.valid, "{:?}", before.error);
+        let (after, stuck) = coverage4(&region, &CycleCover::tour(walk.clone()));
+        let rep = check(&region, &after, Mode::Milling);
+        prop_assert!(rep.valid && after.is_tour(), "{:?}", rep.error);
+        prop_assert!(rep.turns <= before.turns, "{} > {}", rep.turns, before.turns);
+        prop_assert_eq!(stuck > 0, rep.max_coverage > 4);
+        prop_assert!(
+            rep.max_coverage <= 4,
+            "max coverage {} after (was {})\n{}\n{}",
+            rep.max_coverage,
+            before.max_coverage,
+            region.to_ascii(),
+            CycleCover::tour(walk).to_json()
+        );
+    }
+}
+
+/// Tours from `strips-matching` / `star-cover` on random regions (`tests/turns.rs`) where a
+/// pixel stays covered 5 times by straight passes until a transplant or a reversal is used.
+#[test]
+fn straight_passes_are_reduced_to_four() {
+    let tours = [
+        // (2, 2): passes E>E W>W N>N S>S W>W.
+        r#"{"cycles":[[[-2,2],[-1,2],[0,2],[1,2],[2,2],[3,2],[4,2],[3,2],[2,2],[1,2],[0,2],[-1,2],[-1,3],[-1,4],[-1,5],[-1,6],[-1,7],[-1,6],[-1,5],[-1,4],[-1,3],[-1,2],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0],[1,1],[1,2],[1,3],[1,4],[1,5],[1,6],[1,7],[0,7],[0,6],[0,5],[0,4],[0,3],[0,2],[0,1],[0,0],[0,-1],[1,-1],[2,-1],[2,0],[2,1],[2,2],[2,3],[2,4],[2,5],[2,6],[1,6],[0,6],[-1,6],[-2,6],[-2,5],[-2,4],[-1,4],[0,4],[1,4],[2,4],[3,4],[3,5],[2,5],[2,4],[2,3],[2,2],[2,1],[2,0],[3,0],[3,1],[3,2],[2,2],[1,2],[0,2],[-1,2]]]}"#,
+        // (0, 4): passes N>N S>S N>N S>W E>E; a spike at (-1, 7) must move.
+        r#"{"cycles":[[[2,-2],[2,-1],[2,0],[2,1],[3,1],[3,2],[3,3],[3,2],[4,2],[5,2],[5,1],[5,0],[4,0],[3,0],[2,0],[1,0],[0,0],[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[0,7],[0,8],[0,9],[0,8],[0,7],[0,6],[0,5],[0,4],[0,3],[0,2],[0,1],[0,0],[0,-1],[0,-2],[0,-1],[0,0],[-1,0],[-2,0],[-2,-1],[-2,0],[-2,1],[-1,1],[0,1],[1,1],[2,1],[3,1],[4,1],[5,1],[6,1],[5,1],[4,1],[4,0],[4,-1],[4,-2],[5,-2],[4,-2],[4,-1],[3,-1],[2,-1],[1,-1],[0,-1],[0,0],[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[0,7],[-1,7],[0,7],[0,6],[0,5],[0,4],[-1,4],[0,4],[1,4],[1,5],[1,4],[1,3],[1,2],[1,1],[1,0],[1,-1],[2,-1]]]}"#,
+    ];
+    for text in tours {
+        let tour = CycleCover::from_json(text, "tour").unwrap();
+        let region = Region::from_pixels(tour.cycles[0].clone()).unwrap();
+        let before = check(&region, &tour, Mode::Milling);
+        assert!(before.valid && before.max_coverage == 5);
+        let (after, stuck) = coverage4(&region, &tour);
+        let rep = check(&region, &after, Mode::Milling);
+        assert!(rep.valid && after.is_tour(), "{:?}", rep.error);
+        assert_eq!((stuck, rep.max_coverage <= 4), (0, true));
+        assert!(
+            rep.turns <= before.turns,
+            "{} > {}",
+            rep.turns,
+            before.turns
+        );
+    }
+}
+
+/// The merged tours of the cycle-cover algorithms on random regions (other seeds than
+/// `tests/turns.rs`): the over-covered ones are all brought down to coverage 4.
+#[test]
+fn algorithm_tours_are_reduced_to_four() {
+    let (mut tours, mut over_before, mut over_after) = (0, 0, 0);
+    for seed in 0..300usize {
+        let grow: Vec<(usize, u8)> = (0..10 + seed % 60)
+            .map(|k| {
+                (
+                    (seed * 7919 + k * 104_729) % 1000,
+                    ((seed + k * k) % 4) as u8,
+                )
+            })
+            .collect();
+        let region = grown_region(&grow);
+        for name in ["strips-matching", "strips-double", "star-cover"] {
+            let algo = algorithms::find(name).unwrap();
+            if (algo.precondition)(&region).is_err() {
+                continue;
+            }
+            for merge in [Merge::Naive, Merge::Smart] {
+                let opts = Options {
+                    merge,
+                    ..Options::default()
+                };
+                let solution = (algo.run)(&region, &opts).unwrap();
+                let Some(out) = solution
+                    .outputs
+                    .iter()
+                    .find(|o| o.objective == Objective::Turns)
+                else {
+                    continue;
+                };
+                let before = check(&region, &out.cover, Mode::Milling);
+                let (after, stuck) = coverage4(&region, &out.cover);
+                let rep = check(&region, &after, Mode::Milling);
+                assert!(rep.valid && after.is_tour(), "{name}: {:?}", rep.error);
+                assert!(
+                    rep.turns <= before.turns,
+                    "{name}: {} > {}",
+                    rep.turns,
+                    before.turns
+                );
+                assert_eq!(stuck > 0, rep.max_coverage > 4);
+                tours += 1;
+                over_before += usize::from(before.max_coverage > 4);
+                over_after += usize::from(rep.max_coverage > 4);
+            }
+        }
+    }
+    eprintln!(
+        "coverage4: {tours} tours, {over_before} covered a pixel > 4 times, {over_after} still do"
+    );
+    assert!(over_before > 0, "the test must see over-covered tours");
+    assert_eq!(over_after, 0);
+}
