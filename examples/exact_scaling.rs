@@ -259,10 +259,12 @@ fn main() {
     }
 }
 
-/// Minimum strip cover on about 10⁶ pixels (a disk with a sieve of holes).
+/// Minimum strip cover on about 10⁶ pixels: a disk with a sieve of holes (long strips) and a
+/// random 60 % fill of a square (short strips, many augmenting paths).
 fn strip_cover_timing() {
+    use rand::{RngExt, SeedableRng};
     let side = 1130i32;
-    let r = Region::from_pixels(
+    let disk = Region::from_pixels(
         (0..side)
             .flat_map(|y| (0..side).map(move |x| Pixel::new(x, y)))
             .filter(|p| {
@@ -271,13 +273,24 @@ fn strip_cover_timing() {
             }),
     )
     .expect("fits");
-    let t = Instant::now();
-    let c = mowmill::strip_cover::strip_cover(&r);
-    println!(
-        "strip cover: N = {}, {} strips = {} rooks, {:.3} s",
-        r.len(),
-        c.strips.len(),
-        c.rooks.len(),
-        t.elapsed().as_secs_f64()
-    );
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let side = 1290i32;
+    let fill = Region::from_pixels(
+        (0..side)
+            .flat_map(|y| (0..side).map(move |x| Pixel::new(x, y)))
+            .filter(|_| rng.random_range(0..10u32) < 6)
+            .collect::<Vec<_>>(),
+    )
+    .expect("fits");
+    for (name, r) in [("disk with sieve", disk), ("random 60% fill", fill)] {
+        let t = Instant::now();
+        let c = mowmill::strip_cover::strip_cover(&r);
+        println!(
+            "strip cover, {name}: N = {}, {} strips = {} rooks, {:.3} s",
+            r.len(),
+            c.strips.len(),
+            c.rooks.len(),
+            t.elapsed().as_secs_f64()
+        );
+    }
 }

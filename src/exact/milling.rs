@@ -222,8 +222,8 @@ impl CutModel for MillingModel<'_> {
     }
 }
 
-/// A quick feasible tour: a depth-first spanning tree walked around (every tree edge twice),
-/// then improved by [`MillingModel::connect`]'s clean-up. Length at most 2(N − 1).
+/// A quick feasible tour for the first incumbent: a spanning tree walked around (every tree
+/// edge twice), length 2(N − 1). The LP and MIP rounds replace it within a round or two.
 pub(crate) fn tree_tour(model: &MillingModel) -> Vec<u32> {
     let n = model.region.len();
     let mut mult = vec![0u32; model.num_edges()];

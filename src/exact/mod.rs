@@ -1,37 +1,50 @@
 //! Exact baselines: proven optima (or proven bounds) of the five objectives, the ground truth
 //! the harness divides by.
 //!
-//! Every objective is solved with embedded HiGHS (see [`lp`] for why through the `highs` crate)
-//! by the same loop ([`driver`]): an LP cutting-plane phase with exact minimum-cut separation
-//! on fractional solutions, reduced-cost fixing against the incumbent, and MIP rounds that keep
-//! the whole cut pool, cut off infeasible integer solutions and repair them into incumbents.
-//! Cheap bounds ([`crate::bounds`]) and a warm start (an approximation's tour, or a
-//! constructive heuristic) stop the loop early when the incumbent meets a bound.
+//! Every objective is solved with embedded HiGHS (through the `highs` crate; module `lp` says
+//! why not through good_lp) by the same loop (module `driver`): an LP cutting-plane phase with
+//! exact minimum-cut separation on fractional solutions, reduced-cost fixing against the
+//! incumbent, a quick capped MIP for a good incumbent, and MIP rounds that keep the whole cut
+//! pool, cut off infeasible integer solutions and repair them into incumbents. Cheap bounds
+//! ([`crate::bounds`]) and a warm start (an approximation's tour, or a constructive
+//! heuristic) stop the loop early when the incumbent meets a bound: then no MIP is solved.
 //!
 //! # Formulations
 //!
-//! * **`length`** ([`milling`]): integer edge multiplicities `x_e ∈ {0, 1, 2}` on the grid
-//!   graph and `z_v >= 1` with `Σ_{e ∋ v} x_e = 2 z_v`; `x(δ(S)) >= 2` for all proper pixel
-//!   sets `S`; minimize `Σ x_e`. The walk is an Euler tour of `x`. (Milling paper, Section 6.)
-//! * **`cc-turns`** ([`turns`]): integer passage counts `p_{v,ab}` for every pixel `v` and pair
-//!   of its sides `{a, b}` (`a = b` a U-turn); coverage `Σ_ab p_{v,ab} >= 1`; on each grid edge
-//!   the passage ends at both sides agree; minimize `Σ turn(ab) p` with turn 0 straight, 1
-//!   perpendicular, 2 U-turn; an isolated pixel is a one-pixel walk of 4 turns. (Turn-cost
-//!   paper, Sections 2 and 4.)
+//! * **`length`** (module `milling`): integer edge multiplicities `x_e ∈ {0, 1, 2}` on the
+//!   grid graph and `z_v >= 1` with `Σ_{e ∋ v} x_e = 2 z_v` (even degree, every pixel
+//!   visited); `x(δ(S)) >= 2` for all proper pixel sets `S` (connectivity); minimize
+//!   `Σ x_e`. The walk is an Euler tour of `x`. (Milling paper, Section 6: TSP on the grid
+//!   graph with revisits.)
+//! * **`cc-turns`** (module `turns`): integer passage counts `p_{v,ab}` for every pixel `v`
+//!   and pair of its sides `{a, b}` (`a = b` a U-turn); coverage `Σ_ab p_{v,ab} >= 1`; on each
+//!   grid edge the passage ends at both sides agree (the edge's multiplicity); minimize
+//!   `Σ turn(ab) p` with turn 0 straight, 1 perpendicular, 2 U-turn; an isolated pixel is a
+//!   one-pixel walk of 4 turns. U-turns are only offered at the end of their strip (pushing a
+//!   U-turn along its strip keeps the turns). (Turn-cost paper, Sections 2 and 4.)
 //! * **`tour-turns`**: the passage model plus connectivity cuts on the graph of pixel sides
 //!   (passages join sides of a pixel, edges join facing sides): `Σ_{edges across S} x_e +
 //!   Σ_{passages across S} p >= 2` for side sets `S` holding all sides of one pixel and none of
-//!   another. This forbids walks that only cross each other, which no free splice can join.
+//!   another. Plain edge connectivity would allow walks that only cross each other, which no
+//!   free splice can join (a plus of five pixels: 8 turns as two crossing strips, 10 as a tour).
 //! * **`weighted`** with turn cost `C`: the tour model minimizing `Σ (1 + C turn(ab)) p`, i.e.
 //!   length + C · turns (turn-cost paper, Section 5.6); the length of a walk is its number of
-//!   passages.
-//! * **`lawn-tsp`** ([`lawn`]): binary `y_ij` on all pairs of grass pixels with L1 costs,
-//!   degree 2, subtour elimination on the smaller side of each violated cut. (Milling paper,
-//!   Section 4, the αTSP = 1 reference.)
+//!   passages. Every U-turn is offered (pushing one costs length).
+//! * **`lawn-tsp`** (module `lawn`): binary `y_ij` on all pairs of grass pixels with L1 costs,
+//!   degree 2, subtour elimination `Σ_{i,j ∈ S} y_ij <= |S| - 1` on the smaller side of each
+//!   violated cut. (Milling paper, Section 4, the αTSP = 1 reference.)
 //!
-//! Every objective is even on every integer solution (closed walks in the bipartite grid),
-//! so real bounds are rounded up to the next even integer. The returned tour or cycle cover
-//! always goes through [`crate::checker::check`], and its recounted cost is `value`.
+//! # Proofs
+//!
+//! Every objective is even on every integer solution: a closed walk in the bipartite grid has
+//! even length, and it returns to its heading, so it makes an even number of quarter turns (a
+//! U-turn counts 2). Real bounds (LP values, HiGHS's dual bounds) are therefore rounded up to
+//! the next even integer after subtracting 10⁻⁶ for round-off, and a MIP gap below 2 is a
+//! proof. Models restricted by bounds that only hold for solutions better than the incumbent
+//! `U` (reduced-cost fixing; the turn budget bounding passage counts) yield `min(opt, U)` as
+//! the bound. The returned tour or cycle cover always goes through [`crate::checker::check`],
+//! its recounted cost is `value`, and `status` is `optimal` only when `value` equals the
+//! proven `lower_bound`.
 
 mod cuts;
 mod driver;
