@@ -18,6 +18,8 @@
 //! | `random-simple` | `n`, `no_cut` (false), `style` (mixed), `compactness` (from the seed) | exactly N pixels, 4-connected, no holes (a simple grid graph); with `no_cut`, no cut vertex either (the precondition of Theorem 5 of the milling paper), which exists for N = 1, 2, 4, 6 and every N ≥ 8. |
 //! | `random-holed` | `n`, `holes` H (1), `no_cut` (false), `style`, `compactness` | exactly N pixels, 4-connected, exactly H holes of varied sizes and shapes; with `no_cut`, no local cut vertex (Definition 6; the precondition of Theorem 7 of the milling paper). |
 //! | `thin` | `n`, `holes` H (0), `compactness` | a thin pocket (no 2 × 2 block of pixels, turn-cost paper, Section 5.5): width-1 corridors, 4-connected, exactly N pixels and exactly H holes (independent cycles of corridors). |
+//! | `band` | `k` | the diagonal band B_k, the tight class of the 6/5 bound of Theorem 5 of the milling paper: pixels (x, y) with 0 ≤ x, y ≤ k + 1 and \|x − y\| ≤ 2 (k = 1 is the 3 × 3 square); N = 5k + 4, no holes, no cut vertices. |
+//! | `thin43` | `s` | the 4/3 thin example of the turn-cost paper (Fig. 6, Theorem 5.9), as reconstructed in issue 7: width-1 corridors on rings and paths with even vertices (gadgets X1–X4, and Y_j, R_j for j = 1..s); N = 222 + 77s, thin. |
 //! | `lawn-scattered` | `n`, `parts` P (3), `style`, `compactness` | grass in exactly P components, N pixels in all; each component is a random hole-free shape, and components are at least one empty cell apart in all 8 directions; no holes. |
 //!
 //! # Shape styles
@@ -122,6 +124,8 @@ pub enum Family {
     Thin,
     LawnScattered,
     Donut,
+    Band,
+    Thin43,
 }
 
 /// A generator parameter (the field of [`GenParams`] of the same name).
@@ -137,10 +141,11 @@ pub enum Param {
     NoCut,
     Style,
     Compactness,
+    S,
 }
 
 impl Param {
-    pub const ALL: [Param; 10] = [
+    pub const ALL: [Param; 11] = [
         Param::N,
         Param::Holes,
         Param::Width,
@@ -151,6 +156,7 @@ impl Param {
         Param::NoCut,
         Param::Style,
         Param::Compactness,
+        Param::S,
     ];
 
     /// The key used in the `; params:` line and in messages.
@@ -166,6 +172,7 @@ impl Param {
             Param::NoCut => "no_cut",
             Param::Style => "style",
             Param::Compactness => "compactness",
+            Param::S => "s",
         }
     }
 }
@@ -185,7 +192,7 @@ pub struct FamilyInfo {
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
 /// arm in `build`.
-const FAMILY_TABLE: [FamilyInfo; 6] = [
+const FAMILY_TABLE: [FamilyInfo; 8] = [
     FamilyInfo {
         family: Family::Rect,
         name: "rect",
@@ -234,16 +241,32 @@ const FAMILY_TABLE: [FamilyInfo; 6] = [
         params: &[Param::Side, Param::K],
         required: &[Param::Side, Param::K],
     },
+    FamilyInfo {
+        family: Family::Band,
+        name: "band",
+        summary: "diagonal band B_k: 0 <= x, y <= k + 1, |x - y| <= 2 (tight for 6/5, milling paper)",
+        params: &[Param::K],
+        required: &[Param::K],
+    },
+    FamilyInfo {
+        family: Family::Thin43,
+        name: "thin43",
+        summary: "the 4/3 thin example (turn-cost paper, Fig. 6) with parameter s >= 0",
+        params: &[Param::S],
+        required: &[Param::S],
+    },
 ];
 
 impl Family {
-    pub const ALL: [Family; 6] = [
+    pub const ALL: [Family; 8] = [
         Family::Rect,
         Family::RandomSimple,
         Family::RandomHoled,
         Family::Thin,
         Family::LawnScattered,
         Family::Donut,
+        Family::Band,
+        Family::Thin43,
     ];
 
     /// The family's registry row.
@@ -351,6 +374,8 @@ pub struct GenParams {
     pub no_cut: bool,
     pub style: Option<Style>,
     pub compactness: Option<f64>,
+    /// The parameter s of `thin43`.
+    pub s: Option<usize>,
     pub seed: u64,
 }
 
@@ -369,6 +394,7 @@ impl GenParams {
             no_cut: false,
             style: None,
             compactness: None,
+            s: None,
             seed,
         }
     }
@@ -385,6 +411,7 @@ impl GenParams {
             Param::NoCut => self.no_cut,
             Param::Style => self.style.is_some(),
             Param::Compactness => self.compactness.is_some(),
+            Param::S => self.s.is_some(),
         }
     }
 }
@@ -451,6 +478,7 @@ struct Spec {
     no_cut: bool,
     style: Style,
     compactness: f64,
+    s: usize,
     seed: u64,
 }
 
@@ -514,6 +542,7 @@ impl Spec {
             no_cut: p.no_cut,
             style,
             compactness: p.compactness.unwrap_or(drawn_compactness),
+            s: p.s.unwrap_or(0),
             seed: p.seed,
         })
     }
@@ -530,6 +559,7 @@ impl Spec {
             Param::NoCut => self.no_cut.to_string(),
             Param::Style => self.style.to_string(),
             Param::Compactness => self.compactness.to_string(),
+            Param::S => self.s.to_string(),
         }
     }
 
@@ -561,6 +591,8 @@ impl Spec {
                     .saturating_mul(self.side)
                     .saturating_sub(inner * inner)
             }
+            Family::Band => self.k.saturating_mul(5).saturating_add(4),
+            Family::Thin43 => self.s.saturating_mul(77).saturating_add(222),
             _ => self.n,
         }
     }
@@ -576,6 +608,9 @@ impl Spec {
                     "donut needs k ≥ 1 and side ≥ 2k + 1 (got side {} and k {})",
                     self.side, self.k
                 )));
+            }
+            Family::Band if self.k == 0 => {
+                return Err(Error::invalid("band needs k ≥ 1 (k = 1 is the 3x3 square)"));
             }
             _ => {}
         }
@@ -643,12 +678,14 @@ impl Spec {
     fn promise(&self) -> Promise {
         let (components, holes) = match self.family {
             Family::Donut => (1, 1),
+            Family::Thin43 => (1, thin43_holes(self.s)),
             Family::RandomHoled | Family::Thin => (1, self.holes),
             Family::LawnScattered => (self.parts, 0),
             _ => (1, 0),
         };
         let cut = match self.family {
             Family::RandomSimple if self.no_cut => CutRule::NoCut,
+            Family::Band => CutRule::NoCut,
             Family::RandomHoled if self.no_cut => CutRule::NoLocalCut,
             _ => CutRule::Any,
         };
@@ -657,7 +694,7 @@ impl Spec {
             components,
             holes,
             cut,
-            thin: self.family == Family::Thin,
+            thin: matches!(self.family, Family::Thin | Family::Thin43),
             separated: self.family == Family::LawnScattered,
         }
     }
@@ -669,6 +706,8 @@ impl Spec {
         let (pixels, provenance) = match self.family {
             Family::Rect => (rect_pixels(self.width, self.height), Provenance::Direct),
             Family::Donut => (donut_pixels(self.side, self.k), Provenance::Direct),
+            Family::Band => (band_pixels(self.k), Provenance::Direct),
+            Family::Thin43 => (thin43_pixels(self.s), Provenance::Direct),
             Family::LawnScattered => {
                 let mut rng = rng_for(self.seed, 0);
                 (lawn_pixels(n, self.parts, &o, &mut rng), Provenance::Direct)
@@ -2169,6 +2208,61 @@ fn donut_pixels(side: usize, k: usize) -> Vec<Pixel> {
         .collect()
 }
 
+/// The diagonal band B_k: (x, y) with 0 ≤ x, y ≤ k + 1 and |x − y| ≤ 2.
+fn band_pixels(k: usize) -> Vec<Pixel> {
+    let m = k as i32 + 1;
+    (0..=m)
+        .flat_map(|y| (0..=m).map(move |x| Pixel::new(x, y)))
+        .filter(|p| (p.x - p.y).abs() <= 2)
+        .collect()
+}
+
+/// The pixels of `thin43` with parameter s: every lattice point on the polylines of issue 7
+/// (rings are closed rectangles given by two corners; all vertices have even coordinates).
+fn thin43_pixels(s: usize) -> Vec<Pixel> {
+    let u = 8 * s as i32;
+    let mut lines: Vec<Vec<(i32, i32)>> = Vec::new();
+    let ring = |a: i32, b: i32, c: i32, d: i32| vec![(a, b), (c, b), (c, d), (a, d), (a, b)];
+    lines.push(ring(4, 2, 14, 10));
+    lines.push(vec![(4, 4), (6, 4), (6, 2)]);
+    for j in 1..=s as i32 {
+        lines.push(ring(8 * j + 4, 0, 8 * j + 10, 14));
+        lines.push(vec![(8 * j + 4, 12), (8 * j + 10, 12)]);
+        lines.push(ring(8 * j + 8, 4, 8 * j + 14, 8));
+    }
+    lines.push(ring(u + 12, 0, u + 20, 20));
+    lines.push(vec![(u + 12, 18), (u + 16, 18), (u + 16, 20)]);
+    lines.push(ring(8, 16, u + 18, 24));
+    lines.push(vec![(u + 18, 22), (u + 16, 22), (u + 16, 24)]);
+    lines.push(ring(0, 6, 10, 28));
+    lines.push(vec![(10, 26), (2, 26), (2, 6)]);
+    let mut pixels: Vec<Pixel> = Vec::new();
+    for line in &lines {
+        for w in line.windows(2) {
+            let ((x0, y0), (x1, y1)) = (w[0], w[1]);
+            let steps = (x1 - x0).abs().max((y1 - y0).abs());
+            for t in 0..=steps {
+                pixels.push(Pixel::new(
+                    x0 + (x1 - x0).signum() * t,
+                    y0 + (y1 - y0).signum() * t,
+                ));
+            }
+        }
+    }
+    pixels.sort_unstable_by_key(|p| (p.y, p.x));
+    pixels.dedup();
+    pixels
+}
+
+/// Holes of `thin43` at s = 0, and per step of s (counted once, checked by every generation).
+const THIN43_HOLES_BASE: usize = 13;
+const THIN43_HOLES_STEP: usize = 5;
+
+/// The number of holes of `thin43` with parameter s (bounded faces of its corridor network).
+fn thin43_holes(s: usize) -> usize {
+    THIN43_HOLES_BASE + THIN43_HOLES_STEP * s
+}
+
 // ---------------------------------------------------------------------------------------------
 // Thin pockets
 // ---------------------------------------------------------------------------------------------
@@ -2583,7 +2677,7 @@ mod tests {
                     }
                 }
             }
-            Family::Rect | Family::Donut => {}
+            Family::Rect | Family::Donut | Family::Band | Family::Thin43 => {}
         }
     }
 
@@ -2624,7 +2718,9 @@ mod tests {
                 "random-holed",
                 "thin",
                 "lawn-scattered",
-                "donut"
+                "donut",
+                "band",
+                "thin43"
             ]
         );
         let e = "disc".parse::<Family>().unwrap_err().to_string();

@@ -219,7 +219,7 @@ fn parse_cutter(s: &str) -> Result<Cutter, String> {
 
 #[derive(Args)]
 struct GenArgs {
-    /// Family: rect, random-simple, random-holed, thin, lawn-scattered, donut.
+    /// Family: rect, random-simple, random-holed, thin, lawn-scattered, donut, band, thin43.
     family: Family,
     /// Number of pixels.
     #[arg(long)]
@@ -233,12 +233,15 @@ struct GenArgs {
     /// Height (rect).
     #[arg(long)]
     height: Option<usize>,
-    /// Width of the annulus (donut).
+    /// Width of the annulus (donut), or the index of the band B_k (band).
     #[arg(long)]
     k: Option<usize>,
     /// Outer side (donut).
     #[arg(long)]
     side: Option<usize>,
+    /// Parameter s of the 4/3 thin example (thin43).
+    #[arg(long)]
+    s: Option<usize>,
     /// Number of grass components (lawn-scattered).
     #[arg(long)]
     parts: Option<usize>,
@@ -623,6 +626,7 @@ fn gen_command(a: GenArgs) -> Result<ExitCode> {
         no_cut: a.no_cut,
         style: a.style,
         compactness: a.compactness,
+        s: a.s,
         seed: a.seed,
     };
     let file = generate::generate(&params)?;

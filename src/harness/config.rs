@@ -78,6 +78,8 @@ pub struct FamilySpec {
     #[serde(default)]
     pub compactness: OneOrMany<f64>,
     #[serde(default)]
+    pub s: OneOrMany<usize>,
+    #[serde(default)]
     pub no_cut: OneOrMany<bool>,
     #[serde(default = "default_count")]
     pub count: usize,
@@ -330,6 +332,7 @@ fn expand(f: &FamilySpec) -> Vec<Vec<(&'static str, String)>> {
         ("parts", strings(&f.parts)),
         ("style", strings(&f.style)),
         ("compactness", strings(&f.compactness)),
+        ("s", strings(&f.s)),
         ("no_cut", strings(&f.no_cut)),
     ]
     .into_iter()
@@ -365,6 +368,7 @@ fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
         "k" => g.k = Some(num()?),
         "side" => g.side = Some(num()?),
         "parts" => g.parts = Some(num()?),
+        "s" => g.s = Some(num()?),
         "style" => g.style = Some(value.parse()?),
         "compactness" => {
             g.compactness = Some(
