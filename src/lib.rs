@@ -18,6 +18,7 @@ pub mod instance;
 pub mod lawn_check;
 pub mod region;
 pub mod strip_cover;
+pub mod tight;
 pub mod topology;
 pub mod tour;
 pub mod wkt;

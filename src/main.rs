@@ -6,13 +6,14 @@ use clap::{Args, Parser, Subcommand};
 use mowmill::algorithms::{self, Cutter, Merge, Options};
 use mowmill::checker::{self, Mode};
 use mowmill::draw::{self, DrawOptions};
+use mowmill::error::Error;
 use mowmill::exact;
 use mowmill::generate::{self, Family, GenParams, Style};
 use mowmill::harness::{self, config::Config, run::RunOptions};
 use mowmill::instance::Instance;
 use mowmill::topology;
 use mowmill::tour::CycleCover;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -102,6 +103,42 @@ enum Command {
         #[arg(long)]
         title: Option<String>,
     },
+    /// The papers' tight families (donut, band, thin43): claimed against measured values,
+    /// tight.csv/tight.md, the claims table and the figures (exit 1 if an established claim is
+    /// contradicted).
+    Tight(TightArgs),
+    /// The claims table: one row per theorem, over a results directory (exit 1 if a claim is
+    /// contradicted).
+    Claims {
+        /// Results directory holding results.csv (a `mowmill bench` run).
+        #[arg(long, default_value = "results/default")]
+        from: PathBuf,
+        /// tight.csv of a `mowmill tight` run, for the tight-family column.
+        #[arg(long, default_value = "results/tight/tight.csv")]
+        tight: PathBuf,
+        /// Also write claims.csv and claims.md into this directory.
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+#[derive(Args)]
+struct TightArgs {
+    /// Output directory: tight.csv, tight.md, claims.csv, claims.md, figures/.
+    #[arg(long, default_value = "results/tight")]
+    out: PathBuf,
+    /// Results directory for the claims table (skipped with a note if it has no results.csv).
+    #[arg(long, default_value = "results/default")]
+    from: PathBuf,
+    /// Small ranges (donut k = 2..4, band k = 1..6, thin43 s = 0..2) for a quick look.
+    #[arg(long)]
+    quick: bool,
+    /// Time limit of each exact solve, in seconds.
+    #[arg(long, default_value_t = 120.0)]
+    time_limit: f64,
+    /// Skip the figures.
+    #[arg(long)]
+    no_figures: bool,
 }
 
 #[derive(Args)]
@@ -263,6 +300,12 @@ struct GenArgs {
 }
 
 fn main() -> ExitCode {
+    // Die quietly on a closed pipe (`mowmill ... | head`) instead of panicking in println!.
+    // SAFETY: restoring the default disposition of SIGPIPE before any thread starts.
+    #[cfg(unix)]
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = Cli::parse();
     match run(cli) {
         Ok(code) => code,
@@ -316,6 +359,8 @@ fn run(cli: Cli) -> Result<ExitCode> {
             })
         }
         Command::Solve(args) => solve_command(args),
+        Command::Tight(args) => tight_command(args),
+        Command::Claims { from, tight, out } => claims_command(&from, &tight, out.as_deref()),
         Command::Bench(args) => bench_command(args),
         Command::Exact(args) => exact_command(args),
         Command::Plot { dir } => {
@@ -607,6 +652,106 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         .iter()
         .any(|g| g["holds"] == serde_json::Value::Bool(false));
     Ok(if valid && !violated {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+fn tight_command(a: TightArgs) -> Result<ExitCode> {
+    use mowmill::tight;
+    let mut opts = tight::TightOptions {
+        time_limit: a.time_limit,
+        ..tight::TightOptions::default()
+    };
+    if a.quick {
+        opts.donut_k = (2..=4).collect();
+        opts.band_k = (1..=6).collect();
+        opts.thin43_s = (0..=2).collect();
+    }
+    std::fs::create_dir_all(&a.out).map_err(|e| Error::io(&a.out, e))?;
+    let started = std::time::Instant::now();
+    let run = tight::run(&opts)?;
+    let csv = a.out.join("tight.csv");
+    tight::write_csv(&run, &csv)?;
+    let md = tight::markdown(&run);
+    let md_path = a.out.join("tight.md");
+    std::fs::write(&md_path, &md).map_err(|e| Error::io(&md_path, e))?;
+    println!("{md}");
+    if !a.no_figures {
+        tight::figures::draw_all(&run, &a.out)?;
+    }
+    let tight_rows: Vec<tight::TightRow> = run.rows().cloned().collect();
+    let results = a.from.join("results.csv");
+    if results.exists() {
+        let rows = harness::rows::read_rows(&results)?;
+        let table = tight::claims::table(&rows, &tight_rows);
+        write_claims(&table, &a.from, &a.out)?;
+    } else {
+        eprintln!(
+            "no {}: the claims table is skipped (run `mowmill bench --out {}` first)",
+            results.display(),
+            a.from.display()
+        );
+    }
+    let bad = run.contradictions();
+    eprintln!(
+        "tight: {} rows in {:.1} s; wrote {} and {}",
+        run.rows().count(),
+        started.elapsed().as_secs_f64(),
+        csv.display(),
+        md_path.display()
+    );
+    for r in &bad {
+        eprintln!(
+            "CONTRADICTED: {} {} {}: claimed {}, measured {:?} ({})",
+            r.family, r.member, r.quantity, r.claim, r.measured, r.how
+        );
+    }
+    Ok(if bad.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// Writes claims.csv and claims.md into `out`, prints the table; returns the contradictions.
+fn write_claims(
+    table: &[mowmill::tight::claims::ClaimRow],
+    from: &Path,
+    out: &Path,
+) -> Result<usize> {
+    use mowmill::tight::claims;
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    claims::write_csv(table, &out.join("claims.csv"))?;
+    let md = claims::markdown(table, &from.display().to_string());
+    let path = out.join("claims.md");
+    std::fs::write(&path, &md).map_err(|e| Error::io(&path, e))?;
+    println!("{md}");
+    Ok(table.iter().filter(|c| c.verdict == "contradicted").count())
+}
+
+fn claims_command(from: &Path, tight: &Path, out: Option<&Path>) -> Result<ExitCode> {
+    use mowmill::tight::claims;
+    let rows = harness::rows::read_rows(&from.join("results.csv"))?;
+    let tight_rows = if tight.exists() {
+        claims::read_tight(tight)?
+    } else {
+        eprintln!(
+            "no {}: the tight-family column stays empty",
+            tight.display()
+        );
+        Vec::new()
+    };
+    let table = claims::table(&rows, &tight_rows);
+    let bad = match out {
+        Some(out) => write_claims(&table, from, out)?,
+        None => {
+            println!("{}", claims::markdown(&table, &from.display().to_string()));
+            table.iter().filter(|c| c.verdict == "contradicted").count()
+        }
+    };
+    Ok(if bad == 0 {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

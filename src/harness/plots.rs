@@ -32,7 +32,7 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(240, 228, 66),
 ];
 
-fn colour(k: usize) -> RGBColor {
+pub(crate) fn colour(k: usize) -> RGBColor {
     PALETTE[k % PALETTE.len()]
 }
 
@@ -87,7 +87,7 @@ fn file_safe(s: &str) -> String {
         .collect()
 }
 
-fn plot_err<E: std::fmt::Display>(e: E) -> Error {
+pub(crate) fn plot_err<E: std::fmt::Display>(e: E) -> Error {
     Error::invalid(format!("plot: {e}"))
 }
 
@@ -163,12 +163,12 @@ pub fn draw_all(out: &Path, rows: &[Row]) -> Result<()> {
 }
 
 /// A plot that can be drawn on any plotters backend (SVG and PNG share one routine).
-trait Figure {
+pub(crate) trait Figure {
     fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<()>;
 }
 
 /// Draws a figure to `stem.png` and `stem.svg`.
-fn render(stem: &Path, size: (u32, u32), figure: &impl Figure) -> Result<()> {
+pub(crate) fn render(stem: &Path, size: (u32, u32), figure: &impl Figure) -> Result<()> {
     let svg = stem.with_extension("svg");
     {
         let area = SVGBackend::new(&svg, size).into_drawing_area();
