@@ -132,9 +132,18 @@ impl Figure for RatioPlot<'_> {
             .y_label_area_size(60)
             .build_cartesian_2d(x_lo - 0.5..x_hi + 0.5, y_lo..y_hi)
             .map_err(plot_err)?;
+        let ticks = (x_hi - x_lo) as usize + 1;
         chart
             .configure_mesh()
             .light_line_style(WHITE)
+            .x_labels(ticks.min(16))
+            .x_label_formatter(&|x| {
+                if (x - x.round()).abs() < 1e-9 {
+                    format!("{}", x.round() as i64)
+                } else {
+                    String::new()
+                }
+            })
             .x_desc(x_name)
             .y_desc("ratio")
             .label_style((FONT_FAMILY, 15))
