@@ -75,6 +75,8 @@ struct Walks<'a> {
     /// Union-find over initial cycles, with the number of nodes per root.
     root: Vec<u32>,
     size: Vec<usize>,
+    /// Visits per region pixel, kept up to date by detours (exchanges keep visits).
+    coverage: Vec<u32>,
     stats: MergeStats,
 }
 
@@ -98,6 +100,7 @@ impl<'a> Walks<'a> {
             cycle: Vec::new(),
             root: Vec::new(),
             size: Vec::new(),
+            coverage: vec![0; region.len()],
             stats: MergeStats::default(),
         };
         for (c, walk) in cover.cycles.iter().enumerate() {
@@ -124,6 +127,9 @@ impl<'a> Walks<'a> {
                 w.next.push(first + (k + 1) % m);
                 w.prev.push(first + (k + m - 1) % m);
                 w.cycle.push(c as u32);
+            }
+            for &p in &walk {
+                w.coverage[p as usize] += 1;
             }
             w.root.push(c as u32);
             w.size.push(walk.len());
@@ -261,15 +267,27 @@ impl<'a> Walks<'a> {
         }
     }
 
+    /// Whether `op` would bring a pixel above 4 visits (only detours add visits).
+    fn exceeds_four(&self, op: Op) -> bool {
+        match op {
+            Op::Exchange { .. } => false,
+            Op::Detour { x, z, .. } => [x, z]
+                .iter()
+                .any(|&n| self.coverage[self.pix[n as usize] as usize] >= 4),
+        }
+    }
+
+    /// The cheapest operation joining the cycles of `x` and `z`; among equally cheap ones, one
+    /// that keeps every pixel within 4 visits (Corollary 5.2's coverage) where there is one.
     fn best_op(&self, x: u32, z: u32) -> Option<(i32, Op)> {
-        let mut best: Option<(i32, Op)> = None;
+        let mut best: Option<(i32, bool, Op)> = None;
         self.for_each_op(x, z, |op| {
-            let d = self.delta(op);
-            if best.is_none_or(|(b, _)| d < b) {
-                best = Some((d, op));
+            let key = (self.delta(op), self.exceeds_four(op));
+            if best.is_none_or(|(b, e, _)| key < (b, e)) {
+                best = Some((key.0, key.1, op));
             }
         });
-        best
+        best.map(|(d, _, op)| (d, op))
     }
 
     fn reverse(&mut self, start: u32) {
@@ -377,6 +395,8 @@ impl<'a> Walks<'a> {
                 self.next[x2 as usize] = xn;
                 self.prev[xn as usize] = x2;
                 self.size[ra as usize] += 2;
+                self.coverage[self.pix[x as usize] as usize] += 1;
+                self.coverage[self.pix[z as usize] as usize] += 1;
                 for n in [x, z, z2, x2] {
                     self.recount_turn(n);
                 }
@@ -512,6 +532,7 @@ pub fn merge_cycles(
                 if w.root_of(x) != w.root_of(z)
                     && let Some((d, op)) = w.best_op(x, z)
                     && d <= 0
+                    && !w.exceeds_four(op)
                 {
                     w.apply(op, d);
                 }
@@ -523,10 +544,23 @@ pub fn merge_cycles(
                     buckets[slot(d)].push((x, z));
                 }
             }
+            // Within a bucket (one cost), pairs whose merge would bring a pixel above 4
+            // visits wait until the bucket's other pairs are done: same turns, less coverage.
             let mut b = 0;
+            let mut deferred: Vec<(u32, u32)> = Vec::new();
+            let mut last_chance = false;
             while b < buckets.len() {
                 let Some((x, z)) = buckets[b].pop() else {
-                    b += 1;
+                    if !deferred.is_empty() && !last_chance {
+                        buckets[b].append(&mut deferred);
+                        last_chance = true;
+                        continue;
+                    }
+                    buckets[b].append(&mut deferred);
+                    if buckets[b].is_empty() {
+                        b += 1;
+                        last_chance = false;
+                    }
                     continue;
                 };
                 if w.root_of(x) == w.root_of(z) {
@@ -537,6 +571,8 @@ pub fn merge_cycles(
                 };
                 if slot(now) > b {
                     buckets[slot(now)].push((x, z));
+                } else if !last_chance && w.exceeds_four(op) {
+                    deferred.push((x, z));
                 } else {
                     w.apply(op, now);
                 }
