@@ -949,12 +949,17 @@ pub fn run(opts: &TightOptions) -> Result<TightRun> {
     Ok(TightRun { members: members? })
 }
 
-fn cell(v: Option<f64>) -> String {
+/// A value for the Markdown table (4 decimals) or the CSV (6, like `results.csv`).
+fn cell_with(v: Option<f64>, decimals: usize) -> String {
     match v {
         None => String::new(),
         Some(x) if x.fract() == 0.0 && x.abs() < 1e15 => format!("{}", x as i64),
-        Some(x) => format!("{x:.4}"),
+        Some(x) => format!("{x:.decimals$}"),
     }
+}
+
+fn cell(v: Option<f64>) -> String {
+    cell_with(v, 4)
 }
 
 /// Writes `tight.csv` (columns [`TIGHT_COLUMNS`]).
@@ -976,8 +981,8 @@ pub fn write_csv(run: &TightRun, path: &Path) -> Result<()> {
             &r.n.to_string(),
             &r.quantity,
             &r.claim,
-            &cell(r.claimed),
-            &cell(r.measured),
+            &cell_with(r.claimed, 6),
+            &cell_with(r.measured, 6),
             standing,
             &r.verdict,
             &r.how,
@@ -1031,4 +1036,115 @@ pub fn markdown(run: &TightRun) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rows() -> Rows<'static> {
+        Rows {
+            family: "donut",
+            member: "k=2 L=6",
+            param: 2,
+            n: 32,
+            rows: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn verdicts_follow_the_standing() {
+        let mut r = rows();
+        r.claim(
+            "a",
+            "4k = 8".into(),
+            8.0,
+            Some(8.0),
+            Standing::Established,
+            "",
+            "",
+        );
+        r.claim(
+            "b",
+            "4k = 8".into(),
+            8.0,
+            Some(9.0),
+            Standing::Established,
+            "",
+            "",
+        );
+        r.claim(
+            "c",
+            "8k + 2 = 18".into(),
+            18.0,
+            Some(16.0),
+            Standing::Example,
+            "",
+            "",
+        );
+        r.claim(
+            "d",
+            "4k = 8".into(),
+            8.0,
+            None,
+            Standing::Established,
+            "",
+            "",
+        );
+        r.claim_at_most("e", "at most 4".into(), 4.0, Some(3.0), "", "");
+        r.claim_at_most("f", "at most 4".into(), 4.0, Some(5.0), "", "");
+        r.report("g", "ratio".into(), Some(2.0), "", "");
+        let verdicts: Vec<&str> = r.rows.iter().map(|x| x.verdict.as_str()).collect();
+        assert_eq!(
+            verdicts,
+            [
+                "reproduced",
+                "contradicted",
+                "differs",
+                "not measured",
+                "holds",
+                "contradicted",
+                "reported"
+            ]
+        );
+        let run = TightRun {
+            members: vec![Member {
+                family: "donut",
+                member: "k=2 L=6".into(),
+                param: 2,
+                region: Region::rectangle(1, 1),
+                rows: r.rows,
+                drawings: Vec::new(),
+            }],
+        };
+        let bad: Vec<&str> = run
+            .contradictions()
+            .iter()
+            .map(|x| x.quantity.as_str())
+            .collect();
+        assert_eq!(bad, ["b", "f"]);
+    }
+
+    #[test]
+    fn csv_round_trips_through_read_tight() {
+        let m = band(2, &TightOptions::default()).unwrap();
+        let run = TightRun { members: vec![m] };
+        let path = std::env::temp_dir().join(format!("mowmill-tight-{}.csv", std::process::id()));
+        write_csv(&run, &path).unwrap();
+        let back = claims::read_tight(&path).unwrap();
+        let _ = std::fs::remove_file(&path);
+        assert_eq!(back.len(), run.rows().count());
+        for (a, b) in back.iter().zip(run.rows()) {
+            assert_eq!((&a.quantity, &a.verdict), (&b.quantity, &b.verdict));
+            let close = match (a.measured, b.measured) {
+                (Some(x), Some(y)) => (x - y).abs() < 1e-6,
+                (x, y) => x == y,
+            };
+            assert!(
+                close,
+                "{}: {:?} vs {:?}",
+                a.quantity, a.measured, b.measured
+            );
+        }
+    }
 }
