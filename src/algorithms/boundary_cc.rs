@@ -112,11 +112,14 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
         })
         .collect();
     let matching = match_ports(region, &ports, &partner, &floor)?;
-    if !matching.complete {
+    if !matching.optimal {
         return Err(Error::invalid(format!(
-            "boundary-cc is exact only with a complete candidate graph: {} ports exceed {}",
+            "boundary-cc is exact only with a matching proven minimum: {} ports exceed {} and \
+             the LP bound {} stays below its weight {}",
             ports.len(),
-            COMPLETE_LIMIT
+            COMPLETE_LIMIT,
+            matching.lower_bound,
+            matching.total
         )));
     }
     let pairs: Vec<(usize, usize)> = links.iter().map(|l| (l.first, l.last)).collect();

@@ -17,10 +17,12 @@
 //! # Guarantee
 //! Cycle cover: 2s + w(M) ≤ 2.5·OPT_cc, since s ≤ OPT (Lemma 4.2) and w(M) ≤ OPT/2 (every
 //! tour crosses each strip end orthogonally; Theorem 5.5). Tour: ≤ 3/2 of that, 3.75·OPT
-//! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching, which our matching is
-//! when it is computed on the complete graph (certificate `matching_complete = 1`, up to
-//! [`COMPLETE_LIMIT`](super::endpoint_matching::COMPLETE_LIMIT) ports); see
-//! [`endpoint_matching`](super::endpoint_matching) for the restriction on larger instances.
+//! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching over all pairs: it is
+//! proven so when `matching_optimal = 1` (always up to
+//! [`COMPLETE_LIMIT`](super::endpoint_matching::COMPLETE_LIMIT) ports, where the candidate
+//! graph is complete; beyond, when the matching reaches the LP bound). Otherwise
+//! `matching_lower_bound` is a proven lower bound on the minimum, and the guarantee holds
+//! with w(M) − `matching_lower_bound` added; see [`endpoint_matching`](super::endpoint_matching).
 
 use crate::algorithms::endpoint_matching::{PortMatching, match_ports};
 use crate::algorithms::merge::cover_and_tour;
@@ -132,16 +134,18 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
 }
 
 /// Runs `strips-matching`: the cycle cover and its merged tour, with certificates s, w(M)
-/// (`w_m`) and whether the matching was computed on the complete graph.
+/// (`w_m`), `matching_complete` (complete candidate graph), `matching_optimal` (w(M) proven
+/// minimum over all pairs), `matching_lower_bound` (proven) and `matching_candidates`.
 pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let smc = strips_matching_cover(region)?;
     let mut certificates = BTreeMap::new();
     certificates.insert("s".to_string(), smc.s as i64);
     certificates.insert("w_m".to_string(), smc.matching.total as i64);
-    certificates.insert(
-        "matching_complete".to_string(),
-        i64::from(smc.matching.complete),
-    );
+    let m = &smc.matching;
+    certificates.insert("matching_complete".to_string(), i64::from(m.complete));
+    certificates.insert("matching_optimal".to_string(), i64::from(m.optimal));
+    certificates.insert("matching_lower_bound".to_string(), m.lower_bound as i64);
+    certificates.insert("matching_candidates".to_string(), m.candidates as i64);
     cover_and_tour(region, smc.cover, opts, certificates)
 }
 

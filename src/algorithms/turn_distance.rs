@@ -180,6 +180,128 @@ pub fn turn_distance(region: &Region, u: Port, v: Port) -> Option<u32> {
     search.distance_to(v)
 }
 
+/// A least source of [`cheapest_sources`]: `key = w(u, v) − offset[u]`, `turns = w(u, v)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Source {
+    pub key: f64,
+    pub turns: u32,
+    pub port: usize,
+}
+
+/// A heap entry of [`cheapest_sources`], ordered by key (least first), then state and port.
+#[derive(Clone, Copy, PartialEq)]
+struct Entry(f64, u32, u32, u32);
+
+impl Eq for Entry {}
+
+impl Ord for Entry {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        other
+            .0
+            .total_cmp(&self.0)
+            .then(other.2.cmp(&self.2))
+            .then(other.3.cmp(&self.3))
+            .then(other.1.cmp(&self.1))
+    }
+}
+
+impl PartialOrd for Entry {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+/// For every port v, the `k` least values of `w(u, v) − offset[u]` over the ports `u ≠ v`
+/// (distinct ports, least first), keeping only values below `cutoff`.
+///
+/// One Dijkstra over (pixel, heading) states from all ports at once, each port starting at
+/// `−offset[u]`; a state keeps its k + 1 least distinct sources (one may be v itself). This is
+/// the k-nearest-distinct-sources search: if u is among the k + 1 least sources of a state,
+/// it is among those of the state before it on its cheapest path, so nothing is lost.
+///
+/// # Complexity
+/// O(k · N log N) time, O(k · N) space.
+pub fn cheapest_sources(
+    region: &Region,
+    ports: &[Port],
+    offset: &[f64],
+    k: usize,
+    cutoff: f64,
+) -> Vec<Vec<Source>> {
+    let slots = k + 1;
+    let mut count = vec![0u8; 4 * region.len()];
+    let mut kept: Vec<Source> = vec![
+        Source {
+            key: 0.0,
+            turns: 0,
+            port: 0,
+        };
+        4 * region.len() * slots
+    ];
+    let mut heap = std::collections::BinaryHeap::new();
+    for (u, port) in ports.iter().enumerate() {
+        for d in Dir::ALL {
+            if port.leave & bit(d) != 0 && -offset[u] < cutoff {
+                heap.push(Entry(
+                    -offset[u],
+                    0,
+                    (4 * port.pixel + d.index()) as u32,
+                    u as u32,
+                ));
+            }
+        }
+    }
+    while let Some(Entry(key, turns, s, u)) = heap.pop() {
+        let at = s as usize * slots;
+        let n = count[s as usize] as usize;
+        if n == slots || kept[at..at + n].iter().any(|e| e.port == u as usize) {
+            continue;
+        }
+        kept[at + n] = Source {
+            key,
+            turns,
+            port: u as usize,
+        };
+        count[s as usize] += 1;
+        let (pixel, heading) = ((s / 4) as usize, Dir::from_index((s % 4) as usize));
+        if let Some(next) = region.neighbor(pixel, heading) {
+            heap.push(Entry(key, turns, (4 * next + heading.index()) as u32, u));
+        }
+        if key + 1.0 < cutoff {
+            for turned in [heading.left(), heading.right()] {
+                let t = (4 * pixel + turned.index()) as u32;
+                if (count[t as usize] as usize) < slots {
+                    heap.push(Entry(key + 1.0, turns + 1, t, u));
+                }
+            }
+        }
+    }
+    ports
+        .iter()
+        .enumerate()
+        .map(|(v, port)| {
+            let mut best: Vec<Source> = Vec::new();
+            let arrive = port.arrive();
+            for d in Dir::ALL.iter().filter(|d| arrive & bit(**d) != 0) {
+                let s = 4 * port.pixel + d.index();
+                for e in &kept[s * slots..s * slots + count[s] as usize] {
+                    if e.port == v {
+                        continue;
+                    }
+                    match best.iter_mut().find(|b| b.port == e.port) {
+                        Some(b) if b.key <= e.key => {}
+                        Some(b) => *b = *e,
+                        None => best.push(*e),
+                    }
+                }
+            }
+            best.sort_by(|a, b| a.key.total_cmp(&b.key).then(a.port.cmp(&b.port)));
+            best.truncate(k);
+            best
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -238,6 +360,43 @@ mod tests {
                     path.windows(2)
                         .all(|w| r.pixel(w[0]).dir_to(r.pixel(w[1])).is_some())
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn cheapest_sources_agree_with_single_searches() {
+        let r = Region::from_ascii(
+            "#####.\n\
+             #..###\n\
+             ##..##\n\
+             .#####\n",
+        );
+        let ports: Vec<Port> = (0..r.len())
+            .step_by(2)
+            .flat_map(|i| [Port::strip_end(i, true), Port::strip_end(i, false)])
+            .collect();
+        let offset: Vec<f64> = (0..ports.len()).map(|i| (i % 5) as f64 * 0.5).collect();
+        for k in [1, 3] {
+            let found = cheapest_sources(&r, &ports, &offset, k, 2.5);
+            for (v, list) in found.iter().enumerate() {
+                let mut all: Vec<(f64, usize)> = (0..ports.len())
+                    .filter(|&u| u != v)
+                    .map(|u| {
+                        let w = turn_distance(&r, ports[u], ports[v]).unwrap();
+                        (f64::from(w) - offset[u], u)
+                    })
+                    .filter(|&(key, _)| key < 2.5)
+                    .collect();
+                all.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+                let keys: Vec<f64> = list.iter().map(|e| e.key).collect();
+                let want: Vec<f64> = all.iter().take(k).map(|e| e.0).collect();
+                assert_eq!(keys, want, "port {v}, k {k}");
+                for e in list {
+                    let w = turn_distance(&r, ports[e.port], ports[v]).unwrap();
+                    assert_eq!(e.turns, w);
+                    assert_eq!(e.key, f64::from(w) - offset[e.port]);
+                }
             }
         }
     }
