@@ -1,7 +1,10 @@
 //! Speed of the min-turn algorithms of *Optimal covering tours with turn costs* (issue 5),
 //! single thread: the strip cover and `star-cover` on 10^6 pixels, `strips-matching` on 10^4
 //! and 10^5 pixels. Run with `cargo bench --bench turns` (add `-- quick` to skip 10^6 and
-//! 10^5, `-- star` for star-cover on 10^6 pixels only, e.g. under a profiler).
+//! 10^5, `-- star` for star-cover on 10^6 pixels only, e.g. under a profiler). Each line
+//! ends with the solution's certificates; for `strips-matching` these say whether w(M) is
+//! proven minimum over all endpoint pairs (`matching_optimal`) and the proven
+//! `matching_lower_bound` (set `MOWMILL_MATCHING_LOG=1` for the LP rounds on stderr).
 
 use mowmill::algorithms::{self, Options};
 use mowmill::checker::{self, Mode};

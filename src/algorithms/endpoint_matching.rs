@@ -51,7 +51,7 @@ const PRICE_K: usize = 8;
 const CUT_ROUNDS: usize = 60;
 
 /// See [`CUT_ROUNDS`].
-const CUT_BUDGET: usize = 90_000;
+const CUT_BUDGET: usize = 45_000;
 
 /// See [`CUT_ROUNDS`].
 const CUT_ROUNDS_LARGE: usize = 3;
