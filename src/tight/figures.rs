@@ -7,7 +7,7 @@
 use super::{Member, TightRun};
 use crate::draw::{DrawOptions, FONT_FAMILY, draw, ensure_fonts};
 use crate::error::{Error, Result};
-use crate::harness::plots::{Figure, colour, plot_err, render};
+use crate::harness::plots::{Figure, colour, file_safe, plot_err, render};
 use crate::region::{Pixel, Region};
 use crate::tour::CycleCover;
 use plotters::coord::Shift;
@@ -72,12 +72,6 @@ pub fn side_by_side(
         ..DrawOptions::default()
     };
     draw(&both, Some(&CycleCover::new(cycles)), out, &opts)
-}
-
-fn file_safe(s: &str) -> String {
-    s.chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect()
 }
 
 /// Draws one member's pair of walks (if it has two) as `figures/<family>_<member>.{svg,png}`.
