@@ -137,49 +137,15 @@ fn tiled_matching(
     partner: &[usize],
     floor: &[u32],
 ) -> Result<(Vec<usize>, Vec<Pair>)> {
-    let mut at_pixel: HashMap<usize, Vec<usize>> = HashMap::new();
-    for (i, port) in ports.iter().enumerate() {
-        at_pixel.entry(port.pixel).or_default().push(i);
-    }
     let tile = tiles(region, ports, partner);
-    let mut edges: HashMap<(usize, usize), u32> = HashMap::new();
-    let mut search = TurnSearch::new(region);
-    for (i, &port) in ports.iter().enumerate() {
-        let mut found = 0usize;
-        let add = |j: usize, d: u32, edges: &mut HashMap<(usize, usize), u32>| {
-            let e = edges.entry((i.min(j), i.max(j))).or_insert(d);
-            *e = (*e).min(d);
-        };
-        search.run(region, port, TILE_TURNS, |pixel, heading, d| {
-            if let Some(here) = at_pixel.get(&pixel) {
-                for &j in here {
-                    if j != i && tile[j] == tile[i] && ports[j].arrive() & bit(heading) != 0 {
-                        add(j, d, &mut edges);
-                        found += 1;
-                    }
-                }
-            }
-            found >= TILE_NEAR
-        });
-        let j = partner[i];
-        let target = ports[j];
-        if search.distance_to(target).is_none() {
-            search.run(region, port, u32::MAX, |p, h, _| {
-                p == target.pixel && target.arrive() & bit(h) != 0
-            });
-        }
-        let d = search.distance_to(target).ok_or_else(|| {
-            Error::invalid(format!(
-                "endpoint {i} cannot reach its partner {j}: the region is not connected there"
-            ))
-        })?;
-        add(j, d, &mut edges);
-        let e = edges.get_mut(&(i.min(j), i.max(j))).expect("just added");
-        *e = (*e).max(floor[i]);
-    }
-    let mut edges: Vec<(usize, usize, u32)> =
-        edges.into_iter().map(|((a, b), w)| (a, b, w)).collect();
-    edges.sort_unstable();
+    let edges = candidate_edges(
+        region,
+        ports,
+        partner,
+        floor,
+        Some((TILE_NEAR, TILE_TURNS)),
+        Some(&tile),
+    )?;
     let mate = min_weight_perfect_matching(ports.len(), &edges)
         .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
     Ok((mate, edges))
@@ -255,9 +221,9 @@ pub fn match_ports_with(
 ) -> Result<PortMatching> {
     let complete = how == Candidates::Complete;
     let edges = if complete {
-        candidate_edges(region, ports, partner, floor, None)?
+        candidate_edges(region, ports, partner, floor, None, None)?
     } else {
-        candidate_edges(region, ports, partner, floor, Some((NEAR, MAX_TURNS)))?
+        candidate_edges(region, ports, partner, floor, Some((NEAR, MAX_TURNS)), None)?
     };
     if complete {
         let mate = min_weight_perfect_matching(ports.len(), &edges)
@@ -273,13 +239,15 @@ pub fn match_ports_with(
 
 /// Candidate pairs (sorted, each once, weight at least the floor for partners): every
 /// reachable pair, or per endpoint the endpoints its 0-1 BFS meets up to the end of the first
-/// turn level with `near.0` of them (at most `near.1` turns), plus its partner.
+/// turn level with `near.0` of them (at most `near.1` turns), plus its partner. With `tile`,
+/// only endpoints of the same tile count (partners share a tile).
 fn candidate_edges(
     region: &Region,
     ports: &[Port],
     partner: &[usize],
     floor: &[u32],
     near: Option<(usize, u32)>,
+    tile: Option<&[u32]>,
 ) -> Result<Vec<(usize, usize, u32)>> {
     let mut at_pixel: HashMap<usize, Vec<usize>> = HashMap::new();
     for (i, port) in ports.iter().enumerate() {
@@ -298,7 +266,8 @@ fn candidate_edges(
         search.run(region, port, max_turns, |pixel, heading, d| {
             if let Some(here) = at_pixel.get(&pixel) {
                 for &j in here {
-                    if j != i && ports[j].arrive() & bit(heading) != 0 {
+                    let same_tile = tile.is_none_or(|t| t[j] == t[i]);
+                    if j != i && same_tile && ports[j].arrive() & bit(heading) != 0 {
                         add(j, d, &mut edges);
                         found += 1;
                     }
