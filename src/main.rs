@@ -165,6 +165,10 @@ struct ExactArgs {
     /// Show the solver's log.
     #[arg(long)]
     verbose: bool,
+    /// Turn objectives: visit every pixel at most this many times (the optimum under this
+    /// cap; Theorem 5.6 of the turn-cost paper says a cap of 4 costs no turns).
+    #[arg(long)]
+    max_coverage: Option<u32>,
 }
 
 #[derive(Args)]
@@ -455,6 +459,7 @@ fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         threads: a.threads,
         verbose: a.verbose,
         warm_start: None,
+        max_coverage: a.max_coverage,
     };
     let result = exact::solve(&inst.region, objective, &opts);
     if let (Some(path), Some(cover)) = (&a.tour_out, &result.cover) {

@@ -123,7 +123,13 @@ fn reroute_at(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64
         for a in 1..=window {
             let i = (k + m - a) % m;
             let h_in = heading(walk, i + m - 1);
-            let (dist, prev) = min_turn_paths(region, idx(i), h_in, p);
+            // No replacement may cost more turns than the longest stretch from i plus the
+            // slack, nor take more than twice the moves of the longest window: a bounded search.
+            let longest: u64 = (0..=a + window.min(m - 1 - a))
+                .map(|s| u64::from(heading(walk, i + s + m - 1).turn_to(heading(walk, i + s))))
+                .sum();
+            let limit = (longest + budget.saturating_sub(turns), 4 * window as u64);
+            let (dist, prev) = min_turn_paths(region, idx(i), h_in, p, limit);
             // Turns of the old stretch: at walk[i], ..., walk[j]; grown one step at a time.
             let mut old_turns: u64 = (0..a)
                 .map(|s| u64::from(heading(walk, i + s + m - 1).turn_to(heading(walk, i + s))))
@@ -298,14 +304,145 @@ fn reverse_then_reroute(
     None
 }
 
+/// The maximal straight runs of the walk through position `k`, as (first position, moves):
+/// one for a straight pass, the incoming and the outgoing one at a turn.
+fn runs_at(walk: &Walk, k: usize) -> Vec<(usize, usize)> {
+    let m = walk.len();
+    let (h_in, h_out) = (heading(walk, k + m - 1), heading(walk, k));
+    let run = |mut s: usize, h: Dir| {
+        // Back to the run's first position, then forward over its moves.
+        let mut steps = 0;
+        while heading(walk, s + m - 1) == h && steps < m {
+            s = (s + m - 1) % m;
+            steps += 1;
+        }
+        let mut len = 0;
+        while heading(walk, s + len) == h && len < m {
+            len += 1;
+        }
+        (s, len)
+    };
+    let mut out = vec![run(k, h_out)];
+    if h_in != h_out {
+        out.push(run((k + m - 1) % m, h_in));
+    }
+    out
+}
+
+/// The walk with the straight run `walk[s..=s + len]` slid one pixel sideways (`v`
+/// perpendicular to it): the links before and after it grow or shrink by one (a link shrunk
+/// to nothing disappears), so its corners move with it. With perpendicular links on both
+/// sides no turn is added; the caller recounts anyway. Returns the new walk (starting at the
+/// slid run) and the pixels whose visits it removed and added.
+fn slide(region: &Region, walk: &Walk, s: usize, len: usize, v: Dir) -> Option<SlideResult> {
+    let m = walk.len();
+    if len == 0 || m < len + 3 {
+        return None;
+    }
+    let old: Vec<Pixel> = (0..=len).map(|t| walk[(s + t) % m]).collect();
+    let moved: Vec<Pixel> = old.iter().map(|q| q.step(v)).collect();
+    if !moved.iter().all(|&q| region.contains(q)) {
+        return None;
+    }
+    let (before, after) = (walk[(s + m - 1) % m], walk[(s + len + 1) % m]);
+    let (a, b) = (old[0], old[len]);
+    let mut added = Vec::with_capacity(len + 3);
+    if before != moved[0] {
+        added.push(a);
+        added.push(moved[0]);
+    }
+    added.extend_from_slice(&moved[1..len]);
+    if after != moved[len] {
+        added.push(moved[len]);
+        added.push(b);
+    }
+    let mut out = added.clone();
+    out.extend((0..m - len - 1).map(|t| walk[(s + len + 1 + t) % m]));
+    Some((out, old, added))
+}
+
+/// A slid walk with the pixels it stopped and started visiting (see [`slide`]).
+type SlideResult = (Walk, Vec<Pixel>, Vec<Pixel>);
+
+/// How many slides one chain of [`slide_chain`] may take.
+const SLIDE_DEPTH: usize = 8;
+
+/// How many chains [`slide_chain`] extends before it gives up at one pixel.
+const SLIDE_EXPANSIONS: usize = 300;
+
+/// A chain of at most [`SLIDE_DEPTH`] slides ([`slide`]): the first of a run through pixel
+/// `p`, each later one of a run through a pixel the previous slide left above 4, ending with
+/// the excess coverage Σ max(0, c − 4) lower than before, every pixel covered and the turns
+/// within `budget`. A slide moves a whole link, so one slide often just passes the excess to
+/// the next row or column; the chain pushes it on to where there is room. Chains are
+/// extended best first (least excess, then fewest slides), at most [`SLIDE_EXPANSIONS`].
+fn slide_chain(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64) -> Option<Walk> {
+    use std::cmp::Reverse;
+    let excess = |c: u32| u64::from(c.saturating_sub(4));
+    let goal: u64 = count.iter().map(|&c| excess(c)).sum();
+    let idx = |q: Pixel| region.index_of(q).expect("slides stay in the region");
+    // Chains by (excess, slides, order of discovery): walk, coverage, pixels to slide from.
+    let mut chains = vec![(walk.clone(), count.to_vec(), vec![p])];
+    let mut heap = std::collections::BinaryHeap::from([Reverse((goal, 0usize, 0usize))]);
+    let mut expansions = 0;
+    while let Some(Reverse((now, depth, id))) = heap.pop() {
+        if depth == SLIDE_DEPTH || expansions == SLIDE_EXPANSIONS {
+            continue;
+        }
+        expansions += 1;
+        let (walk, count, from) = chains[id].clone();
+        for &q in &from {
+            let target = region.pixel(q);
+            let mut tried = std::collections::HashSet::new();
+            let visits: Vec<usize> = (0..walk.len()).filter(|&k| walk[k] == target).collect();
+            for k in visits {
+                for (s, len) in runs_at(&walk, k) {
+                    let h = heading(&walk, s);
+                    for v in [h.left(), h.right()] {
+                        if !tried.insert((s, v)) {
+                            continue;
+                        }
+                        let Some((out, removed, added)) = slide(region, &walk, s, len, v) else {
+                            continue;
+                        };
+                        let mut next = count.clone();
+                        removed.iter().for_each(|&r| next[idx(r)] -= 1);
+                        added.iter().for_each(|&r| next[idx(r)] += 1);
+                        if removed.iter().any(|&r| next[idx(r)] == 0) {
+                            continue;
+                        }
+                        let changed: std::collections::BTreeSet<usize> =
+                            removed.iter().chain(&added).map(|&r| idx(r)).collect();
+                        let after = now + changed.iter().map(|&r| excess(next[r])).sum::<u64>()
+                            - changed.iter().map(|&r| excess(count[r])).sum::<u64>();
+                        if !walk_cost(&out).is_ok_and(|(_, t)| t <= budget) {
+                            continue;
+                        }
+                        if after < goal {
+                            return Some(out);
+                        }
+                        let over: Vec<usize> =
+                            changed.into_iter().filter(|&r| next[r] > 4).collect();
+                        heap.push(Reverse((after, depth + 1, chains.len())));
+                        chains.push((out, next, over));
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
 /// Min-turn paths (ties: fewer moves) from `start`, entered with heading `h_in`, over states
-/// (pixel, heading); pixel `avoid` may end a path but is never passed through.
+/// (pixel, heading), of at most `limit` (turns, moves); pixel `avoid` may end a path but is
+/// never passed through.
 #[allow(clippy::type_complexity)]
 fn min_turn_paths(
     region: &Region,
     start: usize,
     h_in: Dir,
     avoid: usize,
+    limit: (u64, u64),
 ) -> (Vec<Option<(u64, u64)>>, Vec<usize>) {
     let n = region.len();
     let mut dist: Vec<Option<(u64, u64)>> = vec![None; 4 * n];
@@ -319,7 +456,7 @@ fn min_turn_paths(
                 s: usize,
                 c: (u64, u64),
                 from: usize| {
-        if dist[s].is_none_or(|d| c < d) {
+        if c.0 <= limit.0 && c.1 <= limit.1 && dist[s].is_none_or(|d| c < d) {
             dist[s] = Some(c);
             prev[s] = from;
             heap.push(std::cmp::Reverse((c, s)));
@@ -403,6 +540,7 @@ pub fn coverage4(region: &Region, tour: &CycleCover) -> (CycleCover, usize) {
                 .or_else(|| reroute_at(region, walk, &count, p, budget))
                 .or_else(|| excise_and_graft(region, walk, &count, p, budget))
                 .or_else(|| reverse_then_reroute(region, walk, &count, p, budget))
+                .or_else(|| slide_chain(region, walk, &count, p, budget))
             {
                 *walk = shorter;
                 done = true;

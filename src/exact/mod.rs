@@ -109,6 +109,14 @@ impl Objective {
         }
     }
 
+    /// Whether the objective counts turns (the passage model).
+    pub fn counts_turns(self) -> bool {
+        matches!(
+            self,
+            Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. }
+        )
+    }
+
     /// Whether the answer must be a single closed walk.
     pub fn is_tour(self) -> bool {
         self != Objective::CcTurns
@@ -169,6 +177,9 @@ pub struct ExactOptions {
     /// A known cover to start from (e.g. an approximation's tour); used when the checker
     /// accepts it for the objective.
     pub warm_start: Option<CycleCover>,
+    /// Turn objectives only: visit every pixel at most this many times (Theorem 5.6 of the
+    /// turn-cost paper says 4 costs no turns). The optimum is then the optimum under the cap.
+    pub max_coverage: Option<u32>,
 }
 
 impl Default for ExactOptions {
@@ -178,6 +189,7 @@ impl Default for ExactOptions {
             threads: 1,
             verbose: false,
             warm_start: None,
+            max_coverage: None,
         }
     }
 }
@@ -234,6 +246,10 @@ pub struct ExactResult {
     pub turn_cost: Option<u32>,
     /// Number of pixels.
     pub n: usize,
+    /// The cap on visits per pixel the optimum is taken under (`--max-coverage`), if any.
+    pub coverage_cap: Option<u32>,
+    /// The checker's largest number of visits of one pixel in `cover`.
+    pub max_coverage: Option<u32>,
     #[serde(skip)]
     pub cover: Option<CycleCover>,
 }
@@ -310,6 +326,14 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
                 source: "empty region",
             },
         )
+    } else if opts.max_coverage.is_some() && !objective.counts_turns() {
+        Answer::stopped(
+            Stop::Error("a coverage cap applies to cc-turns, tour-turns and weighted only".into()),
+            Bound {
+                value: 0,
+                source: "none",
+            },
+        )
     } else {
         match objective {
             Objective::Length => solve_length(region, opts, &deadline, &settings),
@@ -319,12 +343,24 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
             Objective::LawnTsp => solve_lawn(region, opts, &deadline, &settings),
         }
     };
-    assemble(region, objective, answer, deadline.elapsed())
+    assemble(
+        region,
+        objective,
+        answer,
+        deadline.elapsed(),
+        opts.max_coverage,
+    )
 }
 
 /// The checked result: the cover is recounted, and the status is `optimal` only when the
 /// recount equals the proven bound.
-fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> ExactResult {
+fn assemble(
+    region: &Region,
+    objective: Objective,
+    a: Answer,
+    seconds: f64,
+    cap: Option<u32>,
+) -> ExactResult {
     let mut r = ExactResult {
         objective: objective.to_string(),
         value: None,
@@ -344,6 +380,8 @@ fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> E
             _ => None,
         },
         n: region.len(),
+        coverage_cap: cap,
+        max_coverage: None,
         cover: None,
     };
     let mut message = match &a.stop {
@@ -368,6 +406,11 @@ fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> E
                 "internal: a tour with {} closed walks",
                 report.cycles
             ));
+        } else if cap.is_some_and(|c| report.max_coverage > c) {
+            message = Some(format!(
+                "internal: a pixel visited {} times, above the cap",
+                report.max_coverage
+            ));
         } else if value < a.lower.value {
             message = Some(format!(
                 "internal: value {value} below the proven bound {}",
@@ -378,6 +421,7 @@ fn assemble(region: &Region, objective: Objective, a: Answer, seconds: f64) -> E
             r.length = Some(report.length);
             r.turns = Some(report.turns);
             r.cycles = Some(report.cycles);
+            r.max_coverage = Some(report.max_coverage);
             r.valid = true;
             r.cover = Some(cover);
         }
@@ -488,7 +532,7 @@ fn solve_turns(
             return Answer::trivial(CycleCover::tour(region.pixels().to_vec()), lower);
         }
     }
-    let model = turns::PassageModel::new(region, goal);
+    let model = turns::PassageModel::new(region, goal, opts.max_coverage);
     // Isolated pixels are one-pixel walks outside the model: 4 turns each.
     let constant = 4 * model.isolated as u64;
     let value = |counts: &Vec<u32>| model.formulation().objective(&as_columns(counts));
@@ -601,7 +645,7 @@ pub fn lp_relaxation_bound(
                 Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
                 _ => unreachable!("turn objectives only"),
             };
-            let model = turns::PassageModel::new(region, goal);
+            let model = turns::PassageModel::new(region, goal, None);
             let constant = 4 * model.isolated as u64;
             if model.formulation().num_cols() == 0 {
                 return None;

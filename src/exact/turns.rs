@@ -88,7 +88,8 @@ pub(crate) struct PassageModel<'a> {
 }
 
 impl<'a> PassageModel<'a> {
-    pub fn new(region: &'a Region, goal: TurnGoal) -> PassageModel<'a> {
+    /// The model for `goal`; with `cap`, every pixel is visited at most `cap` times.
+    pub fn new(region: &'a Region, goal: TurnGoal, cap: Option<u32>) -> PassageModel<'a> {
         let n = region.len();
         let nb: Vec<[u32; 4]> = (0..n)
             .map(|v| Dir::ALL.map(|d| region.neighbor(v, d).map_or(NONE, |w| w as u32)))
@@ -103,7 +104,8 @@ impl<'a> PassageModel<'a> {
                     // With turn costs only, a U-turn can move on to the end of its strip
                     // (see `add_passage`): no U-turn columns where the strip goes on.
                     let inner_uturn = a == b && around[(a as usize + 2) % 4] != NONE;
-                    if inner_uturn && !matches!(goal, TurnGoal::Weighted(_)) {
+                    // Under a coverage cap that move adds visits, so every U-turn stays.
+                    if inner_uturn && !matches!(goal, TurnGoal::Weighted(_)) && cap.is_none() {
                         continue;
                     }
                     if around[a as usize] != NONE && around[b as usize] != NONE {
@@ -148,9 +150,11 @@ impl<'a> PassageModel<'a> {
             if m.first[v] == m.first[v + 1] {
                 m.isolated += 1;
             } else {
-                f.rows.push(Row::at_least(
+                let hi = cap.map_or(f64::INFINITY, f64::from);
+                f.rows.push(Row::range(
                     (m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)),
                     1.0,
+                    hi,
                 ));
             }
         }
