@@ -9,7 +9,8 @@
 //! Every rewritten tour goes through the checker: it must be a valid tour with no more turns
 //! than its input (a violation panics). Prints one line per family and size: tours, how many
 //! covered some pixel more than 4 times before, how many still do after (`stuck`, with the
-//! instances named so that they can be kept as fixtures), and the total rewrite time.
+//! instances named so that they can be kept as fixtures), and the total rewrite time. An
+//! algorithm that refuses an instance is reported on stderr and skipped.
 
 use mowmill::algorithms::coverage4::coverage4;
 use mowmill::algorithms::{self, Merge, Objective, Options};
@@ -67,7 +68,13 @@ fn main() {
                             merge,
                             ..Options::default()
                         };
-                        let solution = (algo.run)(&region, &opts).expect("algorithm runs");
+                        let solution = match (algo.run)(&region, &opts) {
+                            Ok(s) => s,
+                            Err(e) => {
+                                eprintln!("refused: {family} n={n} seed={seed} {name}: {e}");
+                                continue;
+                            }
+                        };
                         let Some(out) = solution
                             .outputs
                             .iter()

@@ -179,44 +179,33 @@ fn pair_drop_at(
     candidates.sort_by_key(|&(_, _, k, _)| k);
     let now: u64 = count.iter().map(|&c| excess(c)).sum();
     for (s1, s2, k, same) in candidates {
-        let r: Walk = (0..m).map(|t| walk[(s1 + t) % m]).collect();
         let d = (s2 + m - s1) % m;
-        let (u, w) = (r[0], r[k]);
-        let removed: Vec<Pixel>;
-        let out = if same {
-            // P1 = r[0..=k], A = r[k+1..d], P2 = r[d..=d+k], B = r[d+k+1..].
-            if d < k + 1 || m < d + k + 1 {
-                continue;
-            }
-            removed = r[..=k].iter().chain(&r[d..=d + k]).copied().collect();
-            let mut out = vec![w];
-            out.extend_from_slice(&r[k + 1..d]);
-            out.push(u);
-            out.extend(r[d + k + 1..].iter().rev());
-            out
+        // Positions relative to s1: P1 = 0..=k; P2 = d..=d+k (same) or d-k..=d (opposite,
+        // where A = k+1..d-k and B = d+1..m are the closed walks left at w and at u).
+        let p2 = if same { d } else { d.wrapping_sub(k) };
+        let fits = if same {
+            d > k && m > d + k
         } else {
-            // P1 = r[0..=k], A = r[k+1..d-k], P2 = r[d-k..=d] (reversed P1), B = r[d+1..].
-            if d < 2 * k + 1 || d + 1 > m {
-                continue;
-            }
-            removed = r[..=k].iter().chain(&r[d - k..=d]).copied().collect();
-            let first: Walk = std::iter::once(w)
-                .chain(r[k + 1..d - k].iter().copied())
-                .collect();
-            let second: Walk = std::iter::once(u)
-                .chain(r[d + 1..].iter().copied())
-                .collect();
-            match splice(&first, &second) {
-                Some(out) => out,
-                None => continue,
-            }
+            d > 2 * k && d < m
         };
+        if !fits {
+            continue;
+        }
+        let (u, w) = (at(s1), at(s1 + k));
+        // A one-pixel walk left over is dropped by the splice: its pixel loses that visit.
+        let (a_len, b_len) = (d - 2 * k - 1, m - d - 1);
+        if !same && a_len == 0 && b_len == 0 {
+            continue;
+        }
         let mut delta: std::collections::BTreeMap<usize, i64> = Default::default();
-        removed
-            .iter()
-            .for_each(|&q| *delta.entry(idx(q)).or_default() -= 1);
-        for q in [u, w] {
-            *delta.entry(idx(q)).or_default() += 1;
+        for t in (0..=k).chain(p2..=p2 + k) {
+            *delta.entry(idx(at(s1 + t))).or_default() -= 1;
+        }
+        if same || a_len > 0 {
+            *delta.entry(idx(w)).or_default() += 1;
+        }
+        if same || b_len > 0 {
+            *delta.entry(idx(u)).or_default() += 1;
         }
         let mut after = now;
         let mut ok = true;
@@ -228,14 +217,62 @@ fn pair_drop_at(
             }
             after = after + excess(c as u32) - excess(count[q]);
         }
-        if !ok || after >= now || out.len() < 2 {
+        if !ok || after >= now {
             continue;
         }
-        if walk_cost(&out).is_ok_and(|(_, t)| t <= budget) {
+        let r: Walk = (0..m).map(|t| at(s1 + t)).collect();
+        let out = if same {
+            // u P w A u P w B becomes w A u B⁻¹.
+            let mut out = vec![w];
+            out.extend_from_slice(&r[k + 1..d]);
+            out.push(u);
+            out.extend(r[d + k + 1..].iter().rev());
+            out
+        } else {
+            let first: Walk = std::iter::once(w)
+                .chain(r[k + 1..d - k].iter().copied())
+                .collect();
+            let second: Walk = std::iter::once(u)
+                .chain(r[d + 1..].iter().copied())
+                .collect();
+            match splice(&first, &second) {
+                Some(out) => out,
+                None => continue,
+            }
+        };
+        if out.len() >= 2 && walk_cost(&out).is_ok_and(|(_, t)| t <= budget) {
             return Some(out);
         }
     }
     None
+}
+
+/// A cheap multiplicative hash for pixel keys (the standard SipHash dominated [`splice`]).
+#[derive(Clone, Copy, Default)]
+struct PixelHash(u64);
+
+impl std::hash::Hasher for PixelHash {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+    fn write_i32(&mut self, i: i32) {
+        self.write_u64(u64::from(i as u32));
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+}
+
+impl std::hash::BuildHasher for PixelHash {
+    type Hasher = PixelHash;
+    fn build_hasher(&self) -> PixelHash {
+        PixelHash(0)
+    }
 }
 
 /// Two closed walks joined into one at a pixel both visit, where and in the orientation of
@@ -246,7 +283,7 @@ fn splice(a: &Walk, b: &Walk) -> Option<Walk> {
     if a.len() == 1 {
         return b.contains(&a[0]).then(|| b.clone());
     }
-    let mut where_a: std::collections::HashMap<Pixel, Vec<usize>> = Default::default();
+    let mut where_a: std::collections::HashMap<Pixel, Vec<usize>, PixelHash> = Default::default();
     for (x, &q) in a.iter().enumerate() {
         where_a.entry(q).or_default().push(x);
     }
