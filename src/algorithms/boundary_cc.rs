@@ -10,7 +10,9 @@
 //! is the links joined end to end by connecting paths. A link's ports leave it straight on,
 //! outwards (two collinear disjoint links are at turn distance 0); a minimum-weight perfect
 //! matching of the ports under the turn distance joins the links into a cycle cover whose turns
-//! are exactly the matching's weight (all turns are on connecting paths).
+//! are exactly the matching's weight (all turns are on connecting paths). Beyond a few hundred
+//! ports the matching is still exact over all pairs: the ports' turn distance plus 2 is a
+//! graph metric ([`link_graph_matching`](super::endpoint_matching) has the argument).
 //!
 //! One-pixel links at one pixel may be matched into a cycle that never moves; see
 //! [`drop_still_duplicates`] for how we count and remove those.
@@ -78,14 +80,12 @@ pub fn boundary_links(region: &Region) -> Vec<BoundaryLink> {
     links
 }
 
-/// The minimum-turn cycle cover of the boundary links, with its matching.
-///
-/// # Complexity
-/// The matching dominates: see [`match_ports`].
-pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching)> {
-    let links = boundary_links(region);
+/// The ports of the boundary links (two per link, in link order: first pixel leaving
+/// backwards, last pixel leaving forwards), each one's partner (the other end of its link),
+/// and the floor of every port's pair with its partner.
+pub fn boundary_ports(links: &[BoundaryLink]) -> (Vec<Port>, Vec<usize>, Vec<u32>) {
     let mut ports = Vec::with_capacity(2 * links.len());
-    for l in &links {
+    for l in links {
         let (back, fwd) = if l.horizontal {
             (Dir::W, Dir::E)
         } else {
@@ -111,11 +111,23 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
             }
         })
         .collect();
+    (ports, partner, floor)
+}
+
+/// The minimum-turn cycle cover of the boundary links, with its matching.
+///
+/// # Complexity
+/// The matching dominates: see [`match_ports`]. Beyond [`COMPLETE_LIMIT`] ends it is exact
+/// over all pairs through the ray graph (measured for all of `thin-merge`: 0.06 s for 682
+/// ends, 0.74 s for 8,274, 5.7 s for 24,672).
+pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching)> {
+    let links = boundary_links(region);
+    let (ports, partner, floor) = boundary_ports(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     if !matching.optimal {
         return Err(Error::invalid(format!(
-            "boundary-cc is exact only with a matching proven minimum: {} ports exceed {} and \
-             the LP bound {} stays below its weight {}",
+            "boundary-cc is exact only with a matching proven minimum: {} ports exceed {}, the \
+             ray graph did not apply, and the LP bound {} stays below its weight {}",
             ports.len(),
             COMPLETE_LIMIT,
             matching.lower_bound,
@@ -161,7 +173,9 @@ pub fn precondition(region: &Region) -> Result<()> {
     }
 }
 
-/// Runs `boundary-cc`: the boundary cycle cover (objective `cc-turns`), certificate `w_m`.
+/// Runs `boundary-cc`: the boundary cycle cover (objective `cc-turns`), certificates `w_m`,
+/// `links` and the matching's (`matching_complete`, `matching_optimal`, always 1 here,
+/// `matching_lower_bound`, `matching_candidates`).
 pub fn run(
     region: &Region,
     _opts: &crate::algorithms::Options,
@@ -176,6 +190,14 @@ pub fn run(
         .insert("w_m".to_string(), matching.total as i64);
     sol.certificates
         .insert("links".to_string(), (matching.mate.len() / 2) as i64);
+    for (name, value) in [
+        ("matching_complete", i64::from(matching.complete)),
+        ("matching_optimal", i64::from(matching.optimal)),
+        ("matching_lower_bound", matching.lower_bound as i64),
+        ("matching_candidates", matching.candidates as i64),
+    ] {
+        sol.certificates.insert(name.to_string(), value);
+    }
     Ok(sol)
 }
 

@@ -18,8 +18,16 @@
 //!   (every pair is priced by the graph), `matching_candidates` = P(P − 1)/2. Measured: the
 //!   bound is reached on every instance tried (random-simple and random-holed, 10⁴ and 10⁵
 //!   pixels); the integration tests compare it with blossom on the complete graph.
-//! - Endpoints that are not strip ends (`boundary-cc`'s one-heading link ends), or a run
-//!   graph whose solver fails, use the LP route ([`priced_matching`]):
+//! - Beyond that, for boundary link ends (`boundary-cc`, one heading each), likewise over ALL
+//!   pairs ([`link_graph_matching`]): their turn distance w is no metric (two ends facing a
+//!   third may be two turns apart), but 2w + 4 is, and it is the shortest-path metric of the
+//!   "ray graph": the runs, each end hung from the runs crossing its ray (the part of its run
+//!   ahead of it) at weight 4, and a direct edge for each pair of rays sharing a pixel
+//!   (facing: 4, crossing: 6); one-pixel links (floor 4) get a clone of their crossing run.
+//!   Certificates as for strip ends. Measured on thin pockets and boundary-only regions of
+//!   600–2,600 ends: equal to blossom on the complete graph, bound reached every time.
+//! - Other endpoints, a graph too large ([`RAY_GRAPH_EDGES`]), or a solver that fails, use
+//!   the LP route ([`priced_matching`]):
 //!   - candidates: per endpoint the endpoints its 0-1 BFS meets up to the end of the first
 //!     turn level with [`NEAR`] of them (at most [`MAX_TURNS`] turns), plus its partner;
 //!   - HiGHS solves the matching LP over them, with odd-set cuts found exactly (Padberg–Rao,
@@ -188,8 +196,10 @@ pub enum Candidates {
     Complete,
     /// Near pairs, grown by LP pricing until the LP bound holds over all pairs.
     Priced,
-    /// Every pair through the run graph ([`run_graph_matching`]); where that model does
-    /// not apply (ports other than strip ends) or its solver fails, [`Candidates::Priced`].
+    /// Every pair through a graph metric: the run graph for strip ends
+    /// ([`run_graph_matching`]), the ray graph for one-heading link ends
+    /// ([`link_graph_matching`]); where neither applies or the solver fails,
+    /// [`Candidates::Priced`].
     RunGraph,
 }
 
@@ -209,7 +219,9 @@ pub enum Candidates {
 /// for strip ends: O(N) for the run graph, fusion-blossom on it (roughly quadratic in P
 /// serially, hence a partition above [`SERIAL_LIMIT`] endpoints: measured 0.3 s for 4,458
 /// ends, 3 s for 18,420 and 16 s for 30,828), and one bounded 0-1 search per matched pair
-/// for the recount. Other endpoints: O(P · A) for the initial candidates (A the area a BFS
+/// for the recount. For link ends: the ray graph has O(N + Σ ray lengths + pairs of rays
+/// sharing a pixel) edges, solved serially up to [`RAY_SERIAL_LIMIT`] ends (measured 0.5 s
+/// for 6,566 ends and 5 s for 24,672 on thin pockets). Other endpoints: O(P · A) for the initial candidates (A the area a BFS
 /// explores before meeting [`NEAR`] endpoints), then per round one HiGHS dual simplex
 /// re-solve and one O(N log N) pricing search; blossom only where the LP is fractional.
 pub fn match_ports(
@@ -234,10 +246,13 @@ pub fn match_ports_with(
     floor: &[u32],
     how: Candidates,
 ) -> Result<PortMatching> {
-    if how == Candidates::RunGraph
-        && let Some(m) = run_graph_matching(region, ports, partner, floor)
-    {
-        return m;
+    if how == Candidates::RunGraph {
+        if let Some(m) = run_graph_matching(region, ports, partner, floor) {
+            return m;
+        }
+        if let Some(m) = link_graph_matching(region, ports, partner, floor) {
+            return m;
+        }
     }
     let complete = how == Candidates::Complete;
     let edges = if complete {
@@ -1151,6 +1166,26 @@ const LEAF: usize = 4000;
 /// Extents (x0, x1, y0, y1) of run-graph vertices, for the partition.
 type Extent = (i32, i32, i32, i32);
 
+/// The empty extent.
+const NO_EXTENT: Extent = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
+
+/// Widens `e` to cover `o`.
+fn widen(e: &mut Extent, o: Extent) {
+    *e = (e.0.min(o.0), e.1.max(o.1), e.2.min(o.2), e.3.max(o.3));
+}
+
+/// `vertices` extents, the first ones those of the runs of `graph`, the rest empty.
+fn run_extents(region: &Region, graph: &RunGraph, vertices: usize) -> Vec<Extent> {
+    let mut extent = vec![NO_EXTENT; vertices];
+    for (r, px) in graph.pixels.iter().enumerate() {
+        for &q in px {
+            let at = region.pixel(q);
+            widen(&mut extent[r], (at.x, at.x, at.y, at.y));
+        }
+    }
+    extent
+}
+
 /// The run graph of a region: its maximal horizontal and vertical runs of pixels, joined by
 /// an edge where they cross (one turn). For two strip ends, the turn distance is the
 /// distance between their runs in this graph (see [`run_graph_matching`]).
@@ -1311,7 +1346,17 @@ fn run_graph_matching(
     }
     let vertices = runs + kept.len();
     let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        solve_graph_matching(region, &graph, vertices, edges, &kept, &vertex_of)
+        solve_graph_matching(SERIAL_LIMIT, vertices, edges, &kept, &vertex_of, |edges| {
+            // A run spans its pixels; an endpoint the runs it hangs from.
+            let mut extent = run_extents(region, &graph, vertices);
+            for &(a, b, _) in edges {
+                if a < runs && b >= runs {
+                    let o = extent[a];
+                    widen(&mut extent[b], o);
+                }
+            }
+            extent
+        })
     }));
     let (pairs, dual) = match solved {
         Ok(Some(found)) => found,
@@ -1366,54 +1411,298 @@ fn run_graph_matching(
             }
         }
     }
-    Some(recount(region, ports, partner, floor, mate).map(|mut m| {
-        // Every pair of the graph costs 4 + 2w: Σ duals ≤ 2P' + 2·w(M) for every M.
-        let lower = (dual - 2 * kept.len() as i64 + 1).div_euclid(2).max(0) as u64;
-        m.complete = true;
-        m.optimal = m.total <= lower;
-        m.lower_bound = lower.min(m.total);
-        m.candidates = p * (p - 1) / 2;
-        m
-    }))
+    // Every pair of the graph costs 4 + 2w, over the P' endpoints kept.
+    Some(recount(region, ports, partner, floor, mate).map(|m| certified(m, dual, kept.len())))
+}
+
+/// Above this many edges in the ray graph of [`link_graph_matching`] (its pairs of rays
+/// sharing a pixel grow quadratically where many rays cross), the LP route is taken instead.
+const RAY_GRAPH_EDGES: usize = 4_000_000;
+
+/// Above this many link ends, fusion-blossom runs on a partition of the ray graph (its
+/// partitioned solver panicked on a ray graph of 8,274 ends; serially that takes 1 s).
+const RAY_SERIAL_LIMIT: usize = 40_000;
+
+/// An exact minimum-weight perfect matching of boundary link ends (one heading each) over ALL
+/// pairs, as a minimum-weight perfect matching of vertices in a graph metric, solved by
+/// fusion-blossom (see [`run_graph_matching`] for strip ends).
+///
+/// # The turn distance of one-heading ends
+/// The ray F_u of an end u is the part of its run (the maximal run through its pixel along
+/// its heading) from its pixel on in its heading: the pixels a path leaving u reaches before
+/// its first turn; symmetrically a path arriving at v ends with a piece of F_v. Let A_u be
+/// the runs crossing F_u. Then
+///
+/// - if F_u and F_v share a pixel q, w(u, v) = the quarter turns from u's heading to the
+///   reverse of v's (turn in place at q; no path does better): 0 for facing rays on one run,
+///   1 for crossing rays, 2 for rays of one heading;
+/// - otherwise w(u, v) = 2 + min over C ∈ A_u, D ∈ A_v of dist(C, D), the distance in the
+///   run graph ([`RunGraph`], one edge per turn). A path with k ≥ 2 turns runs along F_u,
+///   turns onto C ∈ A_u, then along whole runs, and turns from D ∈ A_v onto F_v; after its
+///   first turn it may walk its run either way (it could have turned the other way at the
+///   same cost), so its middle runs form a walk C … D with k − 2 edges. Conversely every such
+///   walk is a path. With k ≤ 1 turns the rays share a pixel.
+///
+/// Unlike strip ends, w is no metric: two ends facing a third (w = 0) may be 2 apart.
+/// But w(u, v) ≤ w(u, x) + w(x, v) + 2 (join the paths with a U-turn at x), so
+/// W = 2w + 4 is one, and every perfect matching costs 2P + 2·w(M), the same order.
+///
+/// # The graph
+/// Its vertices are the runs, the endpoints, and clones of some runs (below); crossing runs
+/// are joined at weight 2 (a turn), an end hangs from every run of A_u at weight 4 (a turn
+/// plus its offset), so the path u – C … D – v costs exactly W for the second case. Pairs
+/// whose rays share a pixel get an edge of their own, W = 4 (facing) or 6 (crossing); rays of
+/// one heading sharing a pixel meet at the run crossing there (W = 8). Any path of the graph
+/// splits at the ends it passes into such pieces, each a path of the region of its weight,
+/// and by the inequality above it costs at least W: distances are exactly W. (The facing and
+/// crossing pairs cannot share gadgets: the midpoints of their shortest paths are distinct for
+/// distinct pairs, so their count is inherent.)
+///
+/// # One-pixel links
+/// The two ends a (heading W or S) and b (E or N) of a one-pixel link at pixel p cost
+/// `floor` = 4 when matched together, not their w = 0. W stays a metric with W(a, b) = 12:
+/// for every other end x, w(a, x) + w(b, x) ≥ 2 (x facing a has b's heading, and x one turn
+/// from a is an odd number of turns from b). In the graph, the facing edge a – b is left out,
+/// a hangs from the run C crossing at p and b from a clone C' of C (joined to every copy of
+/// C's crossing runs, and hung from by every other end that hangs from C); crossing runs are
+/// copied both ways. Then a – b costs 12 (C and C' are at least two edges apart, other runs
+/// of A_a and A_b too, being parallel to C), and the ends a', b' of other one-pixel links
+/// crossing C, 2 turns from b, a, get direct edges a – b', a' – b of weight 8.
+///
+/// The matching's weights are recounted by 0-1 searches, and the lower bound is the
+/// solver's dual objective, as in [`run_graph_matching`]. `None` when an end has other than
+/// one heading, a floor is not of a one-pixel link as above, the graph exceeds
+/// [`RAY_GRAPH_EDGES`] edges, or the solver fails (the caller falls back to
+/// [`priced_matching`]).
+fn link_graph_matching(
+    region: &Region,
+    ports: &[Port],
+    partner: &[usize],
+    floor: &[u32],
+) -> Option<Result<PortMatching>> {
+    let p = ports.len();
+    let heading: Vec<Dir> = ports
+        .iter()
+        .map(|port| Dir::ALL.into_iter().find(|&d| port.leave == bit(d)))
+        .collect::<Option<_>>()?;
+    for i in 0..p {
+        let j = partner[i];
+        let one_pixel = ports[j].pixel == ports[i].pixel
+            && heading[j] == heading[i].opposite()
+            && floor[j] == 4;
+        if floor[i] != 0 && !(floor[i] == 4 && one_pixel) {
+            return None;
+        }
+    }
+    let one_pixel = |i: usize| floor[i] != 0;
+    let forward = |i: usize| matches!(heading[i], Dir::E | Dir::N);
+    let graph = RunGraph::new(region);
+    let runs = graph.pixels.len();
+    // The position of every pixel in its horizontal (even slots) and vertical run.
+    let mut pos = vec![0usize; 2 * region.len()];
+    for (r, px) in graph.pixels.iter().enumerate() {
+        for (k, &q) in px.iter().enumerate() {
+            pos[2 * q + usize::from(graph.vertical[r])] = k;
+        }
+    }
+    let along: Vec<usize> = (0..p)
+        .map(|i| match heading[i] {
+            Dir::E | Dir::W => graph.hrun[ports[i].pixel],
+            Dir::N | Dir::S => graph.vrun[ports[i].pixel],
+        })
+        .collect();
+    let at = |i: usize| pos[2 * ports[i].pixel + usize::from(graph.vertical[along[i]])];
+    let ray = |i: usize| {
+        let px = &graph.pixels[along[i]];
+        if forward(i) {
+            &px[at(i)..]
+        } else {
+            &px[..=at(i)]
+        }
+    };
+    // Clones (vertices runs..) of the runs crossing one-pixel links.
+    let mut clone: HashMap<usize, usize> = HashMap::new();
+    let mut origin: Vec<usize> = Vec::new();
+    for i in (0..p).filter(|&i| one_pixel(i)) {
+        let c = graph.crossing(along[i], ports[i].pixel);
+        clone.entry(c).or_insert_with(|| {
+            origin.push(c);
+            runs + origin.len() - 1
+        });
+    }
+    let copies = |r: usize| std::iter::once(r).chain(clone.get(&r).copied());
+    let first_end = runs + origin.len();
+    let vertex_of: Vec<usize> = (0..p).map(|i| first_end + i).collect();
+    let full = |edges: &Vec<(usize, usize, isize)>| edges.len() > RAY_GRAPH_EDGES;
+    let mut edges: Vec<(usize, usize, isize)> = Vec::new();
+    for px in 0..region.len() {
+        for a in copies(graph.hrun[px]) {
+            for b in copies(graph.vrun[px]) {
+                edges.push((a, b, 2));
+            }
+        }
+    }
+    // Ends hang from the runs crossing their rays; (pixel, vertical, end) along every ray.
+    let mut through: Vec<(usize, bool, usize)> = Vec::new();
+    for i in 0..p {
+        for &q in ray(i) {
+            let c = graph.crossing(along[i], q);
+            if one_pixel(i) && q == ports[i].pixel {
+                let v = if forward(i) { clone[&c] } else { c };
+                edges.push((v, vertex_of[i], 4));
+            } else {
+                for v in copies(c) {
+                    edges.push((v, vertex_of[i], 4));
+                }
+            }
+            through.push((q, graph.vertical[along[i]], i));
+        }
+        if full(&edges) {
+            return None;
+        }
+    }
+    // Rays crossing at a pixel: one turn.
+    through.sort_unstable();
+    for group in through.chunk_by(|a, b| a.0 == b.0) {
+        let split = group.partition_point(|e| !e.1);
+        for a in &group[..split] {
+            for b in &group[split..] {
+                edges.push((vertex_of[a.2], vertex_of[b.2], 6));
+            }
+        }
+        if full(&edges) {
+            return None;
+        }
+    }
+    // Rays facing each other on one run: no turn (not the two ends of a one-pixel link).
+    let mut on_run: Vec<(usize, bool, usize, usize)> =
+        (0..p).map(|i| (along[i], !forward(i), at(i), i)).collect();
+    on_run.sort_unstable();
+    for group in on_run.chunk_by(|a, b| a.0 == b.0) {
+        let split = group.partition_point(|e| !e.1);
+        for &(_, _, x, u) in &group[..split] {
+            for &(_, _, y, v) in &group[split..] {
+                if x <= y && !(one_pixel(u) && partner[u] == v) {
+                    edges.push((vertex_of[u], vertex_of[v], 4));
+                }
+            }
+        }
+        if full(&edges) {
+            return None;
+        }
+    }
+    // Ends of different one-pixel links crossing one run, hung from C and C': two turns.
+    let mut lone: Vec<(usize, bool, usize)> = (0..p)
+        .filter(|&i| one_pixel(i))
+        .map(|i| (graph.crossing(along[i], ports[i].pixel), forward(i), i))
+        .collect();
+    lone.sort_unstable();
+    for group in lone.chunk_by(|a, b| a.0 == b.0) {
+        let split = group.partition_point(|e| !e.1);
+        for &(_, _, a) in &group[..split] {
+            for &(_, _, b) in &group[split..] {
+                if partner[a] != b {
+                    edges.push((vertex_of[a], vertex_of[b], 8));
+                }
+            }
+        }
+        if full(&edges) {
+            return None;
+        }
+    }
+    if std::env::var_os("MOWMILL_MATCHING_LOG").is_some() {
+        eprintln!(
+            "ray graph: {p} ends, {runs} runs, {} clones, {} edges",
+            origin.len(),
+            edges.len()
+        );
+    }
+    let kept: Vec<usize> = (0..p).collect();
+    let vertices = first_end + p;
+    let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        solve_graph_matching(
+            RAY_SERIAL_LIMIT,
+            vertices,
+            edges,
+            &kept,
+            &vertex_of,
+            |edges| {
+                // A run spans its pixels, a clone its run's, an end its own run and those it
+                // hangs from (so that every edge joins vertices whose extents meet).
+                let mut extent = run_extents(region, &graph, vertices);
+                for (k, &c) in origin.iter().enumerate() {
+                    extent[runs + k] = extent[c];
+                }
+                for i in 0..p {
+                    let o = extent[along[i]];
+                    widen(&mut extent[vertex_of[i]], o);
+                }
+                for &(a, b, _) in edges {
+                    if a < first_end && b >= first_end {
+                        let o = extent[a];
+                        widen(&mut extent[b], o);
+                    }
+                }
+                extent
+            },
+        )
+    }));
+    let (pairs, dual) = match solved {
+        Ok(Some(found)) => found,
+        _ => return None,
+    };
+    let mut mate = vec![usize::MAX; p];
+    for (a, b) in pairs {
+        mate[a] = b;
+        mate[b] = a;
+    }
+    if mate.contains(&usize::MAX) {
+        return None;
+    }
+    let m = recount(region, ports, partner, floor, mate).map(|m| certified(m, dual, p));
+    if let Ok(m) = &m
+        && std::env::var_os("MOWMILL_MATCHING_LOG").is_some()
+    {
+        eprintln!("ray graph: w(M) {}, bound {}", m.total, m.lower_bound);
+    }
+    Some(m)
+}
+
+/// The certificates of a graph-metric matching `m` of `p` endpoints whose every pair cost
+/// 4 + 2w in the graph, the solver's dual objective `dual`: Σ duals ≤ 2P + 2·w(M) for every
+/// perfect matching M, so ⌈(dual − 2P)/2⌉ is a lower bound on w(M).
+fn certified(mut m: PortMatching, dual: i64, p: usize) -> PortMatching {
+    let lower = (dual - 2 * p as i64 + 1).div_euclid(2).max(0) as u64;
+    m.complete = true;
+    m.optimal = m.total <= lower;
+    m.lower_bound = lower.min(m.total);
+    m.candidates = m.mate.len() * (m.mate.len() - 1) / 2;
+    m
 }
 
 /// Solves the run-graph matching with fusion-blossom: the matched endpoint pairs and the sum
 /// of the dual variables. One thread; above [`SERIAL_LIMIT`] endpoints on a recursive
 /// bisection of the graph (fusion-blossom's partitioned solver, still exact).
+///
+/// `extent` gives every vertex's extent (only called above [`SERIAL_LIMIT`] endpoints): the
+/// extents of two vertices joined by an edge must meet.
 fn solve_graph_matching(
-    region: &Region,
-    graph: &RunGraph,
+    serial_limit: usize,
     vertices: usize,
     edges: Vec<(usize, usize, isize)>,
     kept: &[usize],
     vertex_of: &[usize],
+    extent: impl FnOnce(&[(usize, usize, isize)]) -> Vec<Extent>,
 ) -> Option<(Vec<(usize, usize)>, i64)> {
-    let runs = graph.pixels.len();
     let defect_port: HashMap<usize, usize> = kept.iter().map(|&i| (vertex_of[i], i)).collect();
-    let (perm, partitions, fusions) = if kept.len() <= SERIAL_LIMIT {
+    let (perm, partitions, fusions) = if kept.len() <= serial_limit {
         (
             (0..vertices).collect::<Vec<usize>>(),
             Vec::new(),
             Vec::new(),
         )
     } else {
-        let mut extent: Vec<Extent> = vec![(i32::MAX, i32::MIN, i32::MAX, i32::MIN); vertices];
-        let widen = |e: &mut Extent, o: Extent| {
-            *e = (e.0.min(o.0), e.1.max(o.1), e.2.min(o.2), e.3.max(o.3));
-        };
-        for (r, px) in graph.pixels.iter().enumerate() {
-            for &q in px {
-                let at = region.pixel(q);
-                widen(&mut extent[r], (at.x, at.x, at.y, at.y));
-            }
-        }
-        for &(a, b, _) in &edges {
-            if a < runs && b >= runs {
-                let o = extent[a];
-                widen(&mut extent[b], o);
-            }
-        }
-        bisection(&extent)
+        bisection(&extent(&edges))
     };
     let mut position = vec![0usize; vertices];
     for (k, &v) in perm.iter().enumerate() {
