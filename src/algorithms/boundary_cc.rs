@@ -190,15 +190,20 @@ pub fn run(
         .insert("w_m".to_string(), matching.total as i64);
     sol.certificates
         .insert("links".to_string(), (matching.mate.len() / 2) as i64);
-    for (name, value) in [
+    sol.certificates.extend(matching_certificates(&matching));
+    Ok(sol)
+}
+
+/// The matching's certificates, as every algorithm built on the boundary cover reports them.
+pub fn matching_certificates(matching: &PortMatching) -> impl Iterator<Item = (String, i64)> {
+    [
         ("matching_complete", i64::from(matching.complete)),
         ("matching_optimal", i64::from(matching.optimal)),
         ("matching_lower_bound", matching.lower_bound as i64),
         ("matching_candidates", matching.candidates as i64),
-    ] {
-        sol.certificates.insert(name.to_string(), value);
-    }
-    Ok(sol)
+    ]
+    .into_iter()
+    .map(|(name, value)| (name.to_string(), value))
 }
 
 /// The registry entry.

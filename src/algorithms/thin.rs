@@ -21,7 +21,8 @@
 //! thin-cc: the cycle cover is optimal (Corollary 5.3), its merged tour at most 3/2·OPT
 //! (Corollary 4.1). thin-merge: at most 4/3·OPT turns (Theorem 5.9, tight by Fig. 6).
 
-use crate::algorithms::boundary_cc::boundary_cycle_cover;
+use crate::algorithms::boundary_cc::{boundary_cycle_cover, matching_certificates};
+use crate::algorithms::endpoint_matching::PortMatching;
 use crate::algorithms::merge::{connected, cover_and_tour};
 use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
@@ -91,19 +92,20 @@ fn cover_plus_centres(region: &Region, cover: &mut CycleCover) -> usize {
     fallbacks
 }
 
-/// The optimal cycle cover of a thin region (Corollary 5.3), and how many pixels needed the
-/// fallback detour (0 whenever the construction of the module docs applies).
-pub fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, u64, usize)> {
+/// The optimal cycle cover of a thin region (Corollary 5.3), the boundary matching it rests
+/// on, and how many pixels needed the fallback detour (0 whenever the construction of the
+/// module docs applies).
+pub fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching, usize)> {
     let (mut cover, matching) = boundary_cycle_cover(region)?;
     let fallbacks = cover_plus_centres(region, &mut cover);
-    Ok((cover, matching.total, fallbacks))
+    Ok((cover, matching, fallbacks))
 }
 
 fn run_with(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
-    let (cover, w, fallbacks) = thin_cycle_cover(region)?;
-    let mut certificates = BTreeMap::new();
-    certificates.insert("w_m".to_string(), w as i64);
+    let (cover, matching, fallbacks) = thin_cycle_cover(region)?;
+    let mut certificates: BTreeMap<String, i64> = matching_certificates(&matching).collect();
+    certificates.insert("w_m".to_string(), matching.total as i64);
     certificates.insert("centre_fallbacks".to_string(), fallbacks as i64);
     cover_and_tour(region, cover, opts, certificates)
 }
