@@ -4,7 +4,7 @@
 //! pockets of 10^3 and 10^4 pixels, `thin-euler` on a thin Eulerian pocket, and the
 //! `--coverage4` rewrite of the `strips-matching` tour. Run with `cargo bench --bench turns`
 //! (add `-- quick` to skip 10^6 and 10^5, `-- star` for star-cover on 10^6 pixels only, e.g.
-//! under a profiler). Each line
+//! under a profiler, `-- thin` for the boundary and thin algorithms only). Each line
 //! ends with the solution's certificates; for `strips-matching` these say whether w(M) is
 //! proven minimum over all endpoint pairs (`matching_optimal`) and the proven
 //! `matching_lower_bound` (set `MOWMILL_MATCHING_LOG=1` for the LP rounds on stderr).
@@ -63,19 +63,7 @@ fn eulerian_thin(seed: u64, w: i32, rects: usize) -> Region {
         let (dx, dy) = if horizontal { (1, 0) } else { (0, 1) };
         (0..3).map(move |t| Pixel::new(2 * x + t * dx, 2 * y + t * dy))
     });
-    let region = Region::from_pixels(pixels).expect("fits");
-    let labels = mowmill::topology::components(&region);
-    let mut size = vec![0usize; labels.count];
-    labels.label.iter().for_each(|&l| size[l as usize] += 1);
-    let big = (0..labels.count)
-        .max_by_key(|&l| size[l])
-        .expect("a component");
-    Region::from_pixels(
-        (0..region.len())
-            .filter(|&i| labels.label[i] as usize == big)
-            .map(|i| region.pixel(i)),
-    )
-    .expect("fits")
+    largest_component(&Region::from_pixels(pixels).expect("fits"))
 }
 
 fn bench_algorithm(name: &str, r: &Region) {
@@ -101,7 +89,7 @@ fn bench_algorithm(name: &str, r: &Region) {
     println!(
         "{name:16} N={:8} {secs:8.3} s  valid={} turns={} {}",
         r.len(),
-        rep.valid && tour.cover.is_tour(),
+        rep.valid && (tour.objective != Objective::Turns || tour.cover.is_tour()),
         rep.turns,
         certs.join(" ")
     );
@@ -109,6 +97,10 @@ fn bench_algorithm(name: &str, r: &Region) {
 
 fn main() {
     let quick = std::env::args().any(|a| a == "quick");
+    if std::env::args().any(|a| a == "thin") {
+        thin_section();
+        return;
+    }
     if std::env::args().any(|a| a == "star") {
         bench_algorithm("star-cover", &region(Family::RandomSimple, 1_000_000, 1));
         return;
@@ -138,13 +130,50 @@ fn main() {
             bench_coverage4(&r);
         }
     }
+    thin_section();
+}
+
+/// `boundary-cc` on regions of boundary pixels only, `thin-cc` and `thin-merge` on thin
+/// pockets, `thin-euler` on a thin Eulerian pocket.
+fn thin_section() {
     for n in [1_000, 10_000] {
+        bench_algorithm("boundary-cc", &boundary_only(n, 1));
         let r = region(Family::Thin, n, 1);
-        for name in ["boundary-cc", "thin-cc", "thin-merge"] {
+        for name in ["thin-cc", "thin-merge"] {
             bench_algorithm(name, &r);
         }
     }
     bench_algorithm("thin-euler", &eulerian_thin(1, 150, 400));
+}
+
+/// A region whose pixels are all boundary pixels: a random simple region of about `n / 0.8`
+/// pixels without those with x + 2y ≡ 0 (mod 5) (every pixel then misses a neighbour), its
+/// largest component.
+fn boundary_only(n: usize, seed: u64) -> Region {
+    let r = region(Family::RandomSimple, n * 5 / 4, seed);
+    let kept = Region::from_pixels(
+        r.pixels()
+            .iter()
+            .copied()
+            .filter(|p| (p.x + 2 * p.y).rem_euclid(5) != 0),
+    )
+    .expect("fits");
+    largest_component(&kept)
+}
+
+fn largest_component(region: &Region) -> Region {
+    let labels = mowmill::topology::components(region);
+    let mut size = vec![0usize; labels.count];
+    labels.label.iter().for_each(|&l| size[l as usize] += 1);
+    let big = (0..labels.count)
+        .max_by_key(|&l| size[l])
+        .expect("a component");
+    Region::from_pixels(
+        (0..region.len())
+            .filter(|&i| labels.label[i] as usize == big)
+            .map(|i| region.pixel(i)),
+    )
+    .expect("fits")
 }
 
 /// `--coverage4` on the naive `strips-matching` tour (the one with most overlap).

@@ -282,9 +282,15 @@ impl<'a> Walks<'a> {
     fn best_op(&self, x: u32, z: u32) -> Option<(i32, Op)> {
         let mut best: Option<(i32, bool, Op)> = None;
         self.for_each_op(x, z, |op| {
-            let key = (self.delta(op), self.exceeds_four(op));
-            if best.is_none_or(|(b, e, _)| key < (b, e)) {
-                best = Some((key.0, key.1, op));
+            let d = self.delta(op);
+            // The coverage test only where it can decide: cheaper, or as cheap as a best
+            // that exceeds 4.
+            if best.is_some_and(|(b, e, _)| d > b || (d == b && !e)) {
+                return;
+            }
+            let e = self.exceeds_four(op);
+            if best.is_none_or(|(b, be, _)| (d, e) < (b, be)) {
+                best = Some((d, e, op));
             }
         });
         best.map(|(d, _, op)| (d, op))
