@@ -1345,7 +1345,7 @@ fn run_graph_matching(
         }
     }
     let vertices = runs + kept.len();
-    let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+    let (mut mate, dual) = mates_of(p, || {
         solve_graph_matching(SERIAL_LIMIT, vertices, edges, &kept, &vertex_of, |edges| {
             // A run spans its pixels; an endpoint the runs it hangs from.
             let mut extent = run_extents(region, &graph, vertices);
@@ -1357,16 +1357,7 @@ fn run_graph_matching(
             }
             extent
         })
-    }));
-    let (pairs, dual) = match solved {
-        Ok(Some(found)) => found,
-        _ => return None,
-    };
-    let mut mate = vec![usize::MAX; p];
-    for (a, b) in pairs {
-        mate[a] = b;
-        mate[b] = a;
-    }
+    })?;
     if kept.iter().any(|&i| mate[i] == usize::MAX) {
         return None;
     }
@@ -1619,7 +1610,7 @@ fn link_graph_matching(
     }
     let kept: Vec<usize> = (0..p).collect();
     let vertices = first_end + p;
-    let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+    let (mate, dual) = mates_of(p, || {
         solve_graph_matching(
             RAY_SERIAL_LIMIT,
             vertices,
@@ -1646,16 +1637,7 @@ fn link_graph_matching(
                 extent
             },
         )
-    }));
-    let (pairs, dual) = match solved {
-        Ok(Some(found)) => found,
-        _ => return None,
-    };
-    let mut mate = vec![usize::MAX; p];
-    for (a, b) in pairs {
-        mate[a] = b;
-        mate[b] = a;
-    }
+    })?;
     if mate.contains(&usize::MAX) {
         return None;
     }
@@ -1678,6 +1660,21 @@ fn certified(mut m: PortMatching, dual: i64, p: usize) -> PortMatching {
     m.lower_bound = lower.min(m.total);
     m.candidates = m.mate.len() * (m.mate.len() - 1) / 2;
     m
+}
+
+/// Runs a fusion-blossom solve (a panic of the library counts as a failure) and turns its
+/// pairs into partners over `p` ports (`usize::MAX` where unmatched), with the dual sum.
+fn mates_of(
+    p: usize,
+    solve: impl FnOnce() -> Option<(Vec<(usize, usize)>, i64)>,
+) -> Option<(Vec<usize>, i64)> {
+    let (pairs, dual) = std::panic::catch_unwind(std::panic::AssertUnwindSafe(solve)).ok()??;
+    let mut mate = vec![usize::MAX; p];
+    for (a, b) in pairs {
+        mate[a] = b;
+        mate[b] = a;
+    }
+    Some((mate, dual))
 }
 
 /// Solves the run-graph matching with fusion-blossom: the matched endpoint pairs and the sum
