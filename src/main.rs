@@ -119,6 +119,10 @@ enum Command {
         /// Also write claims.csv and claims.md into this directory.
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Save each violated claim's instances, tours and figures here (default: OUT/findings
+        /// when --out is given).
+        #[arg(long)]
+        findings: Option<PathBuf>,
     },
 }
 
@@ -364,7 +368,15 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
         Command::Solve(args) => solve_command(args),
         Command::Tight(args) => tight_command(args),
-        Command::Claims { from, tight, out } => claims_command(&from, &tight, out.as_deref()),
+        Command::Claims {
+            from,
+            tight,
+            out,
+            findings,
+        } => {
+            let findings = findings.or_else(|| out.as_ref().map(|o| o.join("findings")));
+            claims_command(&from, &tight, out.as_deref(), findings.as_deref())
+        }
         Command::Bench(args) => bench_command(args),
         Command::Exact(args) => exact_command(args),
         Command::Plot { dir } => {
@@ -454,6 +466,20 @@ fn exact_command(a: ExactArgs) -> Result<ExitCode> {
     let objective =
         exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
     let inst = Instance::read(&a.file)?;
+    // A milling tour of a disconnected region does not exist: that is bad input for this
+    // objective (exit 2, like `solve`), not a solver failure.
+    if objective.is_tour() && objective != exact::Objective::LawnTsp {
+        let parts = topology::components(&inst.region).count;
+        if parts != 1 {
+            return Err(mowmill::Error::Invalid(format!(
+                "{}: the region has {parts} connected components; objective {} is a tour, \
+                 which needs one (cc-turns and lawn-tsp accept several)",
+                a.file.display(),
+                objective
+            ))
+            .into());
+        }
+    }
     let opts = exact::ExactOptions {
         time_limit: a.time_limit,
         threads: a.threads,
@@ -605,10 +631,12 @@ fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         .iter()
         .filter(|g| g.objective == output.objective && g.when.applies(&inst.region))
         .map(|g| {
-            let holds = match g.against {
-                algorithms::Against::N => Some(g.holds(value, n)),
-                algorithms::Against::Opt => None,
+            let measured = algorithms::Measured {
+                value,
+                length: report.length,
+                max_coverage: u64::from(report.max_coverage),
             };
+            let holds = g.decide(&measured, n, None, None);
             serde_json::json!({ "bound": g.to_string(), "factor": g.factor(), "holds": holds })
         })
         .collect();
@@ -733,10 +761,17 @@ fn write_claims(
     let path = out.join("claims.md");
     std::fs::write(&path, &md).map_err(|e| Error::io(&path, e))?;
     println!("{md}");
-    Ok(table.iter().filter(|c| c.verdict == "contradicted").count())
+    Ok(table.iter().filter(|c| c.verdict == "violated").count())
 }
 
-fn claims_command(from: &Path, tight: &Path, out: Option<&Path>) -> Result<ExitCode> {
+/// Exits 1 when any claim is violated (the table says whether by the paper's algorithm or by
+/// our reading of it).
+fn claims_command(
+    from: &Path,
+    tight: &Path,
+    out: Option<&Path>,
+    findings: Option<&Path>,
+) -> Result<ExitCode> {
     use mowmill::tight::claims;
     let rows = harness::rows::read_rows(&from.join("results.csv"))?;
     let tight_rows = if tight.exists() {
@@ -753,9 +788,15 @@ fn claims_command(from: &Path, tight: &Path, out: Option<&Path>) -> Result<ExitC
         Some(out) => write_claims(&table, from, out)?,
         None => {
             println!("{}", claims::markdown(&table, &from.display().to_string()));
-            table.iter().filter(|c| c.verdict == "contradicted").count()
+            table.iter().filter(|c| c.verdict == "violated").count()
         }
     };
+    if let Some(dir) = findings {
+        let files = claims::save_findings(&table, from, dir)?;
+        if !files.is_empty() {
+            eprintln!("saved {} finding file(s) in {}", files.len(), dir.display());
+        }
+    }
     Ok(if bad == 0 {
         ExitCode::SUCCESS
     } else {

@@ -213,6 +213,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     objectives: &[Objective::CcTurns],
     guarantees: &[Guarantee {
         objective: Objective::CcTurns,
+        quantity: crate::algorithms::Quantity::Value,
         num: 1,
         den: 1,
         add: 0,

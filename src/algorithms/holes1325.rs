@@ -191,6 +191,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     objectives: &[Objective::Length],
     guarantees: &[Guarantee {
         objective: Objective::Length,
+        quantity: crate::algorithms::Quantity::Value,
         num: 53,
         den: 40,
         add: 0,

@@ -14,10 +14,10 @@
 //!   of the two tours above (from the MST tour alone above [`CHRISTOFIDES_LIMIT`] points);
 //! - `lawn-box`: the concentric rectangles of Fig. 9 over the bounding box, joined by edge
 //!   swaps, and the shorter of that and the Christofides tour, which removes the additive term
-//!   of Theorem 2 (the paper's θ = 3/10).
+//!   of Theorem 2 (the paper's θ; see [`lawn_box`]).
 //!
 //! Theorem 2/3: a TSP tour with factor αTSP is at most αTSP (3ℓ* + 6) for the square with
-//! rectilinear motion, times β = √2/√(2 + √2) ≈ 1.08 under free motion and γ = 2/√3 ≈ 1.15
+//! rectilinear motion, times β = 2/√(2 + √2) ≈ 1.08 under free motion and γ = 2/√3 ≈ 1.15
 //! for the disk. The registry states the rectilinear bounds (the default cutter); the others
 //! are irrational factors and are in the docs of each function.
 //!
@@ -819,9 +819,16 @@ pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
 }
 
 /// `lawn-box`: the shorter of the Fig. 9 bounding-box tour and the Christofides tour (the
-/// paper's way to remove the additive term: factor 3αTSP + θ, θ = 3/10, for the square with
-/// rectilinear motion). Square cutters only: the disk variant (concentric circles in the
-/// smallest enclosing disk) is not implemented.
+/// paper's way to remove the additive term, square cutter, rectilinear motion). Square cutters
+/// only: the disk variant (concentric circles in the smallest enclosing disk) is not
+/// implemented.
+///
+/// # Guarantee
+/// The paper: when the box's short side a exceeds 6, ℓ* ≥ 2(a + b − 2) > 20, so the additive
+/// term 6·αTSP of Theorem 2 is below (6/20)·αTSP·ℓ*; otherwise the box tour is within 3αTSP.
+/// The factor is therefore 3αTSP + (3/10)·αTSP: θ = 3/10 is the paper's value for αTSP = 1,
+/// and for Christofides (αTSP = 3/2) it is 9/20, giving 9/2 + 9/20 = 99/20 (not 3α + 3/10 =
+/// 24/5, which this registry stated before).
 pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     if opts.cutter == Cutter::Disk {
@@ -849,6 +856,7 @@ pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
 const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guarantee {
     Guarantee {
         objective: Objective::LawnLength,
+        quantity: crate::algorithms::Quantity::Value,
         num,
         den,
         add,
@@ -906,10 +914,10 @@ pub const LAWN_BOX: Algorithm = Algorithm {
     summary: "lawn mowing: shorter of the bounding-box rings (Fig. 9) and Christofides",
     objectives: &[Objective::LawnLength],
     guarantees: &[rectilinear(
-        24,
-        5,
+        99,
+        20,
         0,
-        "Section 4 of Lawn mowing and milling (3 alpha + 3/10), square, rectilinear",
+        "Section 4 of Lawn mowing and milling (3 alpha + alpha 3/10, alpha = 3/2), square, rectilinear",
     )],
     precondition,
     run: lawn_box,

@@ -316,6 +316,7 @@ pub const ALGORITHM: super::Algorithm = super::Algorithm {
     objectives: &[super::Objective::Length],
     guarantees: &[super::Guarantee {
         objective: super::Objective::Length,
+        quantity: crate::algorithms::Quantity::Value,
         num: 5,
         den: 2,
         add: 0,

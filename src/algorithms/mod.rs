@@ -93,6 +93,32 @@ pub enum Against {
     Opt,
     /// The number of pixels N.
     N,
+    /// The constant 1 (a bound such as "max coverage <= 4").
+    One,
+}
+
+/// What a guarantee bounds on an output of its objective.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Quantity {
+    /// The objective's value (length or turns, as the objective says).
+    Value,
+    /// The walk's length, whatever the objective (e.g. "a 4-approximation on length" of a
+    /// min-turn tour).
+    Length,
+    /// The largest number of visits of one pixel.
+    MaxCoverage,
+}
+
+impl Quantity {
+    /// The name used in messages and tables: the objective's name for `Value`.
+    pub fn label(self, objective: Objective) -> &'static str {
+        match self {
+            Quantity::Value => objective.name(),
+            Quantity::Length => "length",
+            Quantity::MaxCoverage => "max-coverage",
+        }
+    }
 }
 
 /// The instances a guarantee is proven for, beyond the algorithm's preconditions.
@@ -117,11 +143,14 @@ impl When {
     }
 }
 
-/// A proven upper bound `value ≤ (num · X + add) / den`, X being OPT or N, on the instances
-/// `when` names.
+/// A proven upper bound `q ≤ (num · X + add) / den` on the quantity `q` of an output of
+/// `objective`, X being OPT (of that objective), N or 1, on the instances `when` names.
+/// Quantities other than the value are bounded against N or 1 only (no optimum of theirs is
+/// computed per row).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Guarantee {
     pub objective: Objective,
+    pub quantity: Quantity,
     pub num: i64,
     pub den: i64,
     pub add: i64,
@@ -143,6 +172,26 @@ impl Guarantee {
             <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
     }
 
+    /// The verdict on one checked output: `Some(true)` when shown to hold, `Some(false)` when
+    /// violated, `None` when undecided (a bound against OPT, OPT unknown, and the lower bound
+    /// `lb` on OPT too weak to show it: value ≤ f·LB ≤ f·OPT).
+    pub fn decide(&self, m: &Measured, n: u64, opt: Option<u64>, lb: Option<u64>) -> Option<bool> {
+        let q = match self.quantity {
+            Quantity::Value => m.value,
+            Quantity::Length => m.length,
+            Quantity::MaxCoverage => m.max_coverage,
+        };
+        match self.against {
+            Against::N => Some(self.holds(q, n)),
+            Against::One => Some(self.holds(q, 1)),
+            Against::Opt => match (opt, lb) {
+                (Some(o), _) => Some(self.holds(q, o)),
+                (None, Some(b)) if self.holds(q, b) => Some(true),
+                _ => None,
+            },
+        }
+    }
+
     /// The bound's value for a given X, rounded down (values are integers).
     pub fn bound(&self, x: u64) -> i64 {
         ((i128::from(self.num) * i128::from(x) + i128::from(self.add))
@@ -150,11 +199,21 @@ impl Guarantee {
     }
 }
 
+/// What the checker recounted on one output, as guarantees read it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Measured {
+    /// The objective's value (length or turns).
+    pub value: u64,
+    pub length: u64,
+    pub max_coverage: u64,
+}
+
 impl fmt::Display for Guarantee {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let x = match self.against {
             Against::Opt => "OPT",
             Against::N => "N",
+            Against::One => "1",
         };
         let num = if self.num == 1 {
             String::new()
@@ -171,20 +230,15 @@ impl fmt::Display for Guarantee {
             When::Biconnected => format!("without cut vertices, N >= 3; {}", self.source),
         };
         let source = source.as_str();
-        if self.den == 1 {
-            write!(f, "{} <= {num}{x}{add} ({source})", self.objective)
+        let q = self.quantity.label(self.objective);
+        if self.against == Against::One && self.den == 1 {
+            write!(f, "{q} <= {} ({source})", self.num + self.add)
+        } else if self.den == 1 {
+            write!(f, "{q} <= {num}{x}{add} ({source})")
         } else if add.is_empty() {
-            write!(
-                f,
-                "{} <= {}/{} {x} ({source})",
-                self.objective, self.num, self.den
-            )
+            write!(f, "{q} <= {}/{} {x} ({source})", self.num, self.den)
         } else {
-            write!(
-                f,
-                "{} <= ({num}{x}{add})/{} ({source})",
-                self.objective, self.den
-            )
+            write!(f, "{q} <= ({num}{x}{add})/{} ({source})", self.den)
         }
     }
 }
@@ -296,6 +350,7 @@ mod tests {
     fn guarantee_arithmetic_is_exact() {
         let g = Guarantee {
             objective: Objective::Length,
+            quantity: Quantity::Value,
             num: 6,
             den: 5,
             add: -4,

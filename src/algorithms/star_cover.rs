@@ -110,6 +110,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 10,
             den: 1,
             add: 0,
@@ -119,6 +120,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Turns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 12,
             den: 1,
             add: 0,

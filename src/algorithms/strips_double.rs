@@ -77,6 +77,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 4,
             den: 1,
             add: 0,
@@ -86,6 +87,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Turns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 6,
             den: 1,
             add: 0,

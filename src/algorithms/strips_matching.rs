@@ -157,6 +157,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 5,
             den: 2,
             add: 0,
@@ -166,6 +167,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Turns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 15,
             den: 4,
             add: 0,

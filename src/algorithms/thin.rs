@@ -134,6 +134,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 1,
             den: 1,
             add: 0,
@@ -143,6 +144,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Turns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 3,
             den: 2,
             add: 0,
@@ -163,6 +165,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 1,
             den: 1,
             add: 0,
@@ -172,6 +175,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Turns,
+            quantity: crate::algorithms::Quantity::Value,
             num: 4,
             den: 3,
             add: 0,

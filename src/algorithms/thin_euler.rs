@@ -122,6 +122,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[Guarantee {
         objective: Objective::Turns,
+        quantity: crate::algorithms::Quantity::Value,
         num: 6,
         den: 5,
         add: 0,

@@ -737,6 +737,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::Length,
+            quantity: crate::algorithms::Quantity::Value,
             num: 6,
             den: 5,
             add: 0,
@@ -746,6 +747,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         },
         Guarantee {
             objective: Objective::Length,
+            quantity: crate::algorithms::Quantity::Value,
             num: 6,
             den: 5,
             add: -4,

@@ -13,7 +13,7 @@
 //! where every row has one, else against the best lower bound (axis labels say which).
 
 use super::rows::{EXACT, Row};
-use crate::algorithms::{self, Against, Guarantee};
+use crate::algorithms::{self, Against, Guarantee, Quantity};
 use crate::draw::{FONT_FAMILY, ensure_fonts};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -111,7 +111,7 @@ pub fn draw_all(out: &Path, rows: &[Row]) -> Result<()> {
         let guarantee = algorithms::find(algo).and_then(|a| {
             a.guarantees
                 .iter()
-                .find(|g| g.objective.name() == *objective)
+                .find(|g| g.objective.name() == *objective && g.quantity == Quantity::Value)
         });
         let stem = dir.join(format!(
             "ratio-vs-n_{}_{}",
@@ -232,9 +232,10 @@ fn ratio_vs_n<DB: DrawingBackend>(
     let max_n = pts.iter().map(|p| p.1).fold(1.0, f64::max) * 1.05;
     let min_n = pts.iter().map(|p| p.1).fold(max_n, f64::min).min(max_n) * 0.95;
     let g_at = |n: f64| {
-        g.map(|g| match g.against {
-            Against::Opt => g.factor(),
-            Against::N => (g.num as f64 * n + g.add as f64) / (g.den as f64 * n),
+        g.and_then(|g| match g.against {
+            Against::Opt => Some(g.factor()),
+            Against::N => Some((g.num as f64 * n + g.add as f64) / (g.den as f64 * n)),
+            Against::One => None,
         })
     };
     // Head room above the guarantee line for the legend.

@@ -9,7 +9,7 @@
 
 use super::config::{Config, ExactSpec, InstanceSpec, Source};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
-use crate::algorithms::{self, Against, Algorithm, Objective, Options};
+use crate::algorithms::{self, Algorithm, Objective, Options};
 use crate::checker;
 use crate::error::{Error, Result};
 use crate::exact::{self, ExactOptions};
@@ -466,7 +466,13 @@ fn algorithm_rows(
             let (lb, src) = lower_bound(region, objective, exact_rows);
             row.lower_bound = lb;
             row.lb_source = src;
-            row.within_guarantee = within_guarantee(algo, objective, value, region, row.opt, lb);
+            let measured = algorithms::Measured {
+                value,
+                length: report.length,
+                max_coverage: u64::from(report.max_coverage),
+            };
+            row.within_guarantee =
+                within_guarantee(algo, objective, &measured, region, row.opt, lb);
             row.compute_ratios();
             row
         })
@@ -479,7 +485,7 @@ fn algorithm_rows(
 pub fn within_guarantee(
     algo: &Algorithm,
     objective: Objective,
-    value: u64,
+    measured: &algorithms::Measured,
     region: &Region,
     opt: Option<u64>,
     lb: Option<u64>,
@@ -492,16 +498,7 @@ pub fn within_guarantee(
         .filter(|g| g.objective == objective && g.when.applies(region))
         .collect();
     for g in &applicable {
-        let verdict = match g.against {
-            Against::N => Some(g.holds(value, n)),
-            Against::Opt => match (opt, lb) {
-                (Some(o), _) => Some(g.holds(value, o)),
-                // value ≤ f·LB ≤ f·OPT shows the guarantee holds; otherwise undecided.
-                (None, Some(b)) if g.holds(value, b) => Some(true),
-                _ => None,
-            },
-        };
-        match verdict {
+        match g.decide(measured, n, opt, lb) {
             Some(false) => return Some(false),
             None => all = None,
             Some(true) => {}
