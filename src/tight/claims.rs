@@ -22,7 +22,7 @@
 //! undecided, never counted as holding.
 
 use super::{Standing, TightRow};
-use crate::algorithms::{Against, Quantity};
+use crate::algorithms::{Against, Quantity, When};
 use crate::error::{Error, Result};
 use crate::harness::rows::{EXACT, Row};
 use std::collections::{BTreeMap, BTreeSet};
@@ -94,6 +94,10 @@ struct Claim {
     /// The (algorithm, objective) pairs whose rows exercise it.
     rows: &'static [(&'static str, &'static str)],
     measure: Measure,
+    /// The instances the claim is stated for, beyond the algorithm's preconditions. A row
+    /// applies when the harness recorded (in its `guarantee` column) the algorithm's registered
+    /// guarantee with the same condition, i.e. the condition held on the instance.
+    when: When,
     implementation: Implementation,
     /// The tight family and the quantities of `tight.csv` that carry its value.
     tight: Option<(&'static str, &'static [&'static str])>,
@@ -119,6 +123,7 @@ const CLAIMS: &[Claim] = &[
         factor: "alpha_TSP (3 OPT + 6)",
         rows: &[("lawn-mst", "lawn-length"), ("lawn-2opt", "lawn-length")],
         measure: Measure::Bound(bound(V, 6, 1, 12, OPT)),
+        when: When::Always,
         implementation: Implementation::Reading(
             "alpha_TSP = 2 (doubled MST; 2-opt starts from it), square cutter, rectilinear motion",
         ),
@@ -131,6 +136,7 @@ const CLAIMS: &[Claim] = &[
         factor: "3/2 (3 OPT + 6)",
         rows: &[("lawn-christofides", "lawn-length")],
         measure: Measure::Bound(bound(V, 9, 2, 18, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -141,6 +147,7 @@ const CLAIMS: &[Claim] = &[
         factor: "3 alpha_TSP + alpha_TSP 3/10 = 99/20 OPT",
         rows: &[("lawn-box", "lawn-length")],
         measure: Measure::Bound(bound(V, 99, 20, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -151,6 +158,7 @@ const CLAIMS: &[Claim] = &[
         factor: "5/2 OPT",
         rows: &[("milling25", "length")],
         measure: Measure::Bound(bound(V, 5, 2, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Reading(
             "contours and strips on pixels: L_dB <= OPT and L_str <= OPT fail on one-pixel-thick parts (module docs of milling25)",
         ),
@@ -163,6 +171,7 @@ const CLAIMS: &[Claim] = &[
         factor: "(6 N - 4)/5",
         rows: &[("tsp65", "length")],
         measure: Measure::Bound(bound(V, 6, 5, -4, Against::N)),
+        when: When::Biconnected,
         implementation: Implementation::Paper,
         tight: Some(("band", &["tsp65_length", "opt_length"])),
     },
@@ -173,6 +182,7 @@ const CLAIMS: &[Claim] = &[
         factor: "6/5 OPT",
         rows: &[("tsp65", "length")],
         measure: Measure::Bound(bound(V, 6, 5, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("band", &["ratio_tsp65_opt", "ratio_opt_n"])),
     },
@@ -183,6 +193,7 @@ const CLAIMS: &[Claim] = &[
         factor: "11/5 OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None(
             "needs polygons with non-integral vertices and the contour tour; mowmill reads integral regions only",
         ),
@@ -195,6 +206,7 @@ const CLAIMS: &[Claim] = &[
         factor: "53/40 N",
         rows: &[("holes1325", "length")],
         measure: Measure::Bound(bound(V, 53, 40, 0, Against::N)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -205,6 +217,7 @@ const CLAIMS: &[Claim] = &[
         factor: "s <= OPT",
         rows: &[],
         measure: Measure::StripBound,
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("donut", &["strip_cover", "opt_cc_turns"])),
     },
@@ -215,6 +228,7 @@ const CLAIMS: &[Claim] = &[
         factor: "OPT (exact on the boundary)",
         rows: &[("boundary-cc", "cc-turns")],
         measure: Measure::Bound(bound(V, 1, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Reading(
             "boundary links on pixels, collinear links sharing a pixel united (module docs of boundary_cc)",
         ),
@@ -227,6 +241,7 @@ const CLAIMS: &[Claim] = &[
         factor: "t + 2c - 2",
         rows: MERGED,
         measure: Measure::Merge,
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("thin43", &["gadget_naive_turns"])),
     },
@@ -237,6 +252,7 @@ const CLAIMS: &[Claim] = &[
         factor: "3/2 t",
         rows: MERGED,
         measure: Measure::MergeHalf,
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -247,6 +263,7 @@ const CLAIMS: &[Claim] = &[
         factor: "10 OPT",
         rows: &[("star-cover", "cc-turns")],
         measure: Measure::Bound(bound(V, 10, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -257,6 +274,7 @@ const CLAIMS: &[Claim] = &[
         factor: "12 OPT",
         rows: &[("star-cover", "turns")],
         measure: Measure::Bound(bound(V, 12, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -267,6 +285,7 @@ const CLAIMS: &[Claim] = &[
         factor: "coverage <= 4",
         rows: &[("star-cover", "turns"), ("star-cover", "cc-turns")],
         measure: Measure::Bound(bound(Quantity::MaxCoverage, 4, 1, 0, Against::One)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -277,6 +296,7 @@ const CLAIMS: &[Claim] = &[
         factor: "length <= 4 OPT_length",
         rows: &[("star-cover", "turns")],
         measure: Measure::Bound(bound(Quantity::Length, 4, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -287,6 +307,7 @@ const CLAIMS: &[Claim] = &[
         factor: "6 OPT",
         rows: &[("strips-double", "turns")],
         measure: Measure::Bound(bound(V, 6, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -297,6 +318,7 @@ const CLAIMS: &[Claim] = &[
         factor: "length <= 4 OPT_length",
         rows: &[("strips-double", "turns")],
         measure: Measure::Bound(bound(Quantity::Length, 4, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -307,6 +329,7 @@ const CLAIMS: &[Claim] = &[
         factor: "5/2 OPT_cc",
         rows: &[("strips-matching", "cc-turns")],
         measure: Measure::Bound(bound(V, 5, 2, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("donut", &["ratio_cc"])),
     },
@@ -317,6 +340,7 @@ const CLAIMS: &[Claim] = &[
         factor: "15/4 OPT",
         rows: &[("strips-matching", "turns")],
         measure: Measure::Bound(bound(V, 15, 4, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("donut", &["ratio_naive", "ratio_crossing"])),
     },
@@ -327,6 +351,7 @@ const CLAIMS: &[Claim] = &[
         factor: "coverage <= 4, same turns",
         rows: &[],
         measure: Measure::TightOnly,
+        when: When::Always,
         implementation: Implementation::Reading(
             "the paper proves it in outline; --coverage4 is our construction of the local modifications",
         ),
@@ -339,6 +364,7 @@ const CLAIMS: &[Claim] = &[
         factor: "OPT_cc (exact)",
         rows: &[("thin-cc", "cc-turns"), ("thin-merge", "cc-turns")],
         measure: Measure::Bound(bound(V, 1, 1, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Reading(
             "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
         ),
@@ -351,6 +377,7 @@ const CLAIMS: &[Claim] = &[
         factor: "3/2 OPT",
         rows: &[("thin-cc", "turns")],
         measure: Measure::Bound(bound(V, 3, 2, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -361,6 +388,7 @@ const CLAIMS: &[Claim] = &[
         factor: "6/5 OPT",
         rows: &[("thin-euler", "turns")],
         measure: Measure::Bound(bound(V, 6, 5, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: None,
     },
@@ -371,6 +399,7 @@ const CLAIMS: &[Claim] = &[
         factor: "4/3 OPT",
         rows: &[("thin-merge", "turns")],
         measure: Measure::Bound(bound(V, 4, 3, 0, OPT)),
+        when: When::Always,
         implementation: Implementation::Paper,
         tight: Some(("thin43", &["gadget_naive_turns", "ratio_gadget_naive"])),
     },
@@ -381,6 +410,7 @@ const CLAIMS: &[Claim] = &[
         factor: "5d OPT_cc, (5d + 2) OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None(
             "mowmill has no instances beyond the square grid (issue 17)",
         ),
@@ -393,6 +423,7 @@ const CLAIMS: &[Claim] = &[
         factor: "(rho + 2 delta + 2) OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None(
             "mowmill has no discrete (graph) instances (issue 17)",
         ),
@@ -405,6 +436,7 @@ const CLAIMS: &[Claim] = &[
         factor: "10 OPT_cc, 12 OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None(
             "mowmill's star-cover runs on the pixels (Theorem 5.1), not on the n-segment encoding",
         ),
@@ -417,6 +449,7 @@ const CLAIMS: &[Claim] = &[
         factor: "9/2 OPT_cc, 25/4 OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None("needs non-integral orthogonal polygons (issue 18)"),
         tight: None,
     },
@@ -427,6 +460,7 @@ const CLAIMS: &[Claim] = &[
         factor: "(1 + eps) OPT",
         rows: &[],
         measure: Measure::Nothing,
+        when: When::Always,
         implementation: Implementation::None(
             "not implemented (exponential in the number of holes)",
         ),
@@ -527,11 +561,21 @@ impl<'a> Measured<'a> {
 
 fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
     let mut m = Measured::default();
+    let applies = |r: &Row| {
+        claim.when == When::Always
+            || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
+                a.guarantees
+                    .iter()
+                    .filter(|g| g.when == claim.when)
+                    .any(|g| r.guarantee.contains(&g.to_string()))
+            })
+    };
     let of_claim = |r: &Row| {
         claim
             .rows
             .iter()
             .any(|(a, o)| r.algorithm == *a && r.objective == *o)
+            && applies(r)
     };
     m.errors = rows
         .iter()
@@ -562,8 +606,8 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
     match claim.measure {
         Measure::Bound(b) => {
             m.ratio_of = match (b.against, b.quantity) {
-                (Against::N, _) => "the bound in N".to_string(),
-                (Against::One, _) => "the constant".to_string(),
+                (Against::N, _) => "the bound in N (value / bound)".to_string(),
+                (Against::One, _) => "the constant (value / bound)".to_string(),
                 (Against::Opt, Quantity::Length) => "OPT of length (exact), else N".to_string(),
                 (Against::Opt, _) => "OPT where proven, else the lower bound".to_string(),
             };
@@ -592,8 +636,13 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                 match (x, lower) {
                     (Some(x), _) => {
                         m.decide(r);
-                        if x > 0 {
-                            m.bump(q as f64 / x as f64);
+                        // Against OPT the ratio to OPT; against N or 1 the fraction of the bound.
+                        let scale = match b.against {
+                            Against::Opt => x as f64,
+                            _ => (b.num as f64 * x as f64 + b.add as f64) / b.den as f64,
+                        };
+                        if scale > 0.0 {
+                            m.bump(q as f64 / scale);
                         }
                         if !b.holds(q, x) {
                             m.violate(r);
@@ -979,17 +1028,19 @@ pub fn save_findings(
                 continue;
             }
             std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-            let src = ["grid", "wkt"]
+            let Some(src) = ["grid", "wkt"]
                 .iter()
                 .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
                 .find(|p| p.exists())
-                .ok_or_else(|| {
-                    Error::invalid(format!(
-                        "{}: the instance {instance} of a violation of {} is not saved",
-                        from.display(),
-                        c.claim
-                    ))
-                })?;
+            else {
+                eprintln!(
+                    "claims: {}: instance {instance} (a violation of {}) is not saved under instances/; \
+                     no finding written for it",
+                    from.display(),
+                    c.claim
+                );
+                continue;
+            };
             let claim_slug: String = c
                 .claim
                 .chars()
