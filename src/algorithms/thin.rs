@@ -23,23 +23,35 @@
 
 use crate::algorithms::boundary_cc::{boundary_cycle_cover, matching_certificates};
 use crate::algorithms::endpoint_matching::PortMatching;
-use crate::algorithms::merge::{connected, cover_and_tour};
+use crate::algorithms::merge::cover_and_tour;
 use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
 use crate::region::Region;
-use crate::topology::is_thin;
+use crate::topology::{components, is_thin};
 use crate::tour::CycleCover;
 use std::collections::BTreeMap;
 
-/// Precondition of the thin algorithms: connected and thin (no 2×2 block).
+/// Precondition of the thin algorithms: thin (no 2×2 block) and connected. The cycle cover
+/// alone would not need connectivity, but both algorithms also output the tour merged from it
+/// (Corollary 5.3 and Theorem 5.9), which cannot leave a component: we refuse rather than
+/// report a "tour" of several walks (`boundary-cc` gives the cycle cover of each component of
+/// a thin region without plus centres).
 pub fn precondition(region: &Region) -> Result<()> {
-    connected(region)?;
+    if region.is_empty() {
+        return Err(Error::invalid("the region is empty"));
+    }
     if !is_thin(region) {
         return Err(Error::invalid(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
-    Ok(())
+    match components(region).count {
+        1 => Ok(()),
+        c => Err(Error::invalid(format!(
+            "the region has {c} connected components, and thin-cc and thin-merge also output \
+             a tour merged from their cycle cover, which cannot leave a component"
+        ))),
+    }
 }
 
 /// Inserts a step into every unvisited pixel `c` from a neighbour `q` where a walk turns back
