@@ -113,14 +113,19 @@ fn random_boundary(rng: &mut Rng) -> Shape {
 /// A staircase of k, k − 1, …, 1 pixels, with a few random boundary-only edits.
 fn random_stairs(rng: &mut Rng) -> Shape {
     let k = 2 + rng.below(5) as i32;
-    let stairs: Shape = (0..k).flat_map(|y| (0..k - y).map(move |x| (x, y))).collect();
+    let stairs: Shape = (0..k)
+        .flat_map(|y| (0..k - y).map(move |x| (x, y)))
+        .collect();
     let mut s: Shape = stairs
         .iter()
         .copied()
         .filter(|&p| degree(&stairs, p) < 4)
         .collect();
     for _ in 0..rng.below(4) {
-        let p = (rng.below(k as u64 + 1) as i32, rng.below(k as u64 + 1) as i32);
+        let p = (
+            rng.below(k as u64 + 1) as i32,
+            rng.below(k as u64 + 1) as i32,
+        );
         toggle(&mut s, p);
         if !boundary_only(&s) || s.is_empty() {
             toggle(&mut s, p);
@@ -240,6 +245,7 @@ struct Counts {
     regions: usize,
     decided: usize,
     above: usize,
+    above_thin: usize,
     below: usize,
     not_certified: usize,
     refused: usize,
@@ -271,8 +277,7 @@ impl Search {
         c.regions += 1;
         let name = if thin { "thin-cc" } else { "boundary-cc" };
         let algo = algorithms::find(name).expect("registered");
-        let sol = match (algo.precondition)(&r).and_then(|_| (algo.run)(&r, &Options::default()))
-        {
+        let sol = match (algo.precondition)(&r).and_then(|_| (algo.run)(&r, &Options::default())) {
             Ok(sol) => sol,
             Err(e) => {
                 c.refused += 1;
@@ -295,6 +300,7 @@ impl Search {
                 if gap != 0 {
                     if gap > 0 {
                         c.above += 1;
+                        c.above_thin += usize::from(thin);
                     } else {
                         c.below += 1;
                     }
@@ -309,9 +315,14 @@ impl Search {
         }
         if thin {
             let merge = algorithms::find("thin-merge").expect("registered");
-            let sol = (merge.run)(&r, &Options::default()).expect("thin-merge runs where thin-cc does");
+            let sol =
+                (merge.run)(&r, &Options::default()).expect("thin-merge runs where thin-cc does");
             let tour = check(&r, &sol.outputs[1].cover, Mode::Milling);
-            assert!(tour.valid && tour.cycles == 1, "thin-merge tour\n{}", r.to_ascii());
+            assert!(
+                tour.valid && tour.cycles == 1,
+                "thin-merge tour\n{}",
+                r.to_ascii()
+            );
             let exact = solve(&r, Objective::TourTurns, &self.opts);
             match (exact.status, exact.value) {
                 (Status::Optimal, Some(opt)) => {
@@ -440,12 +451,13 @@ fn main() {
     }
     let c = &search.counts;
     println!(
-        "regions {}: cycle covers decided {} (above OPT {}, below OPT {}), matching not certified {}, \
+        "regions {}: cycle covers decided {} (above OPT {} of which thin-cc {}, below OPT {}), matching not certified {}, \
          refused {}, exact undecided {}; thin-merge tours decided {} (over 4/3 {}, undecided {}, \
          worst {}/{}); {:.0} s",
         c.regions,
         c.decided,
         c.above,
+        c.above_thin,
         c.below,
         c.not_certified,
         c.refused,
@@ -457,9 +469,14 @@ fn main() {
         c.worst_tour.1,
         start.elapsed().as_secs_f64()
     );
-    let mut shown = BTreeSet::new();
-    for ce in &c.counterexamples {
-        if shown.insert(ce.clone()) && shown.len() <= 20 {
+    // The first ten distinct counterexamples of each algorithm.
+    for name in ["boundary-cc", "thin-cc", "thin-merge"] {
+        let mine: BTreeSet<&String> = c
+            .counterexamples
+            .iter()
+            .filter(|ce| ce.starts_with(&format!("{name}:")))
+            .collect();
+        for ce in mine.iter().take(10) {
             println!("{ce}");
         }
     }

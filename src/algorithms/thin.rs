@@ -11,6 +11,13 @@
 //! walk visiting q either passes into c or turns back at q having arrived heading towards c;
 //! there we insert the step into c and back, moving the U-turn from q to c (same turns).
 //!
+//! Why the result is optimal: every cycle cover of the region covers its boundary pixels, so it
+//! has at least as many turns as the boundary cover, which is minimum when its matching is
+//! (`matching_optimal = 1`; the proof, and the one-pixel links it needs left out, are in the
+//! module docs of [`boundary_cc`](super::boundary_cc)); the insertions add no turn. So
+//! `matching_optimal = 1` with `centre_fallbacks = 0` proves the cover a minimum-turn cycle
+//! cover; a fallback detour (never seen: the tests assert 0) would void that proof.
+//!
 //! # thin-merge
 //! Step 1 is thin-cc; step 2 repeats (a) a merge of two cycles at no extra cost when one
 //! exists, else (c) a merge at a crossing with at most two more turns: this is the smart
