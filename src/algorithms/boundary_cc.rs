@@ -184,10 +184,12 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
 
 /// Removes closed walks of one pixel whose pixel another kept walk visits.
 ///
-/// One-pixel links at one pixel can be matched into a cycle that never moves: it costs its
-/// in-place turns (possibly 0) in the matching, but a one-pixel walk counts 4 turns. Such a
-/// walk covers nothing another walk does not, so we drop it when its pixel is visited
-/// elsewhere and keep one otherwise (our treatment of a case the paper does not discuss).
+/// The only cycle the matching can close without moving is a one-pixel link joined to itself
+/// (see [`boundary_links`]), priced 4 and counted 4. Such a walk covers nothing another walk
+/// does not, so we drop it when its pixel is visited elsewhere (our treatment of a case the
+/// paper does not discuss). This only lowers the count, and with a matching proven minimum it
+/// never applies: the cover would then beat the minimum, which the module docs prove is a
+/// lower bound.
 pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
     let mut visited: std::collections::HashSet<crate::region::Pixel> = cover
         .cycles
