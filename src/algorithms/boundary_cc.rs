@@ -5,22 +5,54 @@
 //! A boundary link is the offset, half a pixel inwards, of a maximal boundary edge, shrunk by
 //! half a pixel at each end: on the grid, a maximal run of pixels in one row (column) that all
 //! have their south, or all their north (west, east) side on the boundary; see
-//! [`boundary_links`] for links sharing a line. By Lemma 4.1 an
-//! optimal cycle cover of the boundary contains every link within one of its own links, so it
-//! is the links joined end to end by connecting paths. A link's ports leave it straight on,
-//! outwards (two collinear disjoint links are at turn distance 0); a minimum-weight perfect
-//! matching of the ports under the turn distance joins the links into a cycle cover whose turns
-//! are exactly the matching's weight (all turns are on connecting paths). Beyond a few hundred
-//! ports the matching is still exact over all pairs: the ports' turn distance plus 2 is a
-//! graph metric ([`link_graph_matching`](super::endpoint_matching) has the argument).
+//! [`boundary_links`] for links sharing a line, and for the one-pixel vertical links we leave
+//! out. By Lemma 4.1 an optimal cycle cover of the boundary contains every link within one of
+//! its own links, so it is the links joined end to end by connecting paths. A link's ports
+//! leave it straight on, outwards (two collinear disjoint links are at turn distance 0); a
+//! minimum-weight perfect matching of the ports under the turn distance (the partner pair of a
+//! one-pixel link at least 4) joins the links into a cycle cover. Beyond a few hundred ports
+//! the matching is still exact over all pairs: the ports' turn distance plus 2 is a graph
+//! metric ([`link_graph_matching`](super::endpoint_matching) has the argument).
 //!
-//! One-pixel links at one pixel may be matched into a cycle that never moves; see
-//! [`drop_still_duplicates`] for how we count and remove those.
+//! # Why the matching's minimum is the optimum
+//! Say a *heading walk* is a closed sequence of states (pixel, heading), each step a move
+//! forward (cost 0) or a quarter turn in place (cost 1). The checker's count of a closed walk
+//! of m ≥ 2 pixels is the least cost of a heading walk through its pixels (at each pixel the
+//! smaller rotation from the heading in to the heading out: 0, 1 or 2); a one-pixel walk counts
+//! 4, the full rotation. A perfect matching M of the ports closes heading walks (links straight,
+//! pairs by cheapest paths, each pair's price its turn distance, at least 4 for the partners of
+//! a one-pixel link) whose costs add up to w(M).
+//! - *The cover costs at most w(M).* A heading walk that moves costs at least the checker's
+//!   count of its pixels. One that never moves consists of one-pixel links at one pixel p
+//!   joined in place; at p there is at most one horizontal and one vertical link, and we keep
+//!   both only when one of them has several pixels, which moves, so the walk is one one-pixel
+//!   link joined to itself: priced at least 4, counted 4. (Before this rule, a one-pixel
+//!   horizontal and a one-pixel vertical link at p could close a still walk priced 1 + 1 = 2
+//!   and counted 4: the +2 of issue 12.) [`drop_still_duplicates`] may only lower the count.
+//! - *Every cycle cover C costs at least the minimum.* By Lemma 4.1 (the paper's, with our
+//!   grid reading of shared lines), C's walks can be taken to contain every link, kept or left
+//!   out, as part of a straight stretch, without more turns; a one-pixel link at p is contained
+//!   in any heading walk that has its orientation at p (every visit of p by a moving walk does:
+//!   p lacks a neighbour on that axis, so a walk cannot pass it straight across). List, along
+//!   each of C's heading walks, one occurrence of every kept link (each link once over all of
+//!   C): consecutive listed links are joined by the heading walk between them, which costs at
+//!   least their ports' turn distance; a walk that lists one link only costs at least 4 (every
+//!   closed walk does), which covers the floor of a one-pixel link; a walk that lists none
+//!   costs at least 0. Leaving a link out only drops a listing (the heading walk through it is
+//!   one from its predecessor to its successor). So C costs at least the weight of a perfect
+//!   matching of the kept ports, hence at least the minimum.
+//!
+//! So with a matching proven minimum (`matching_optimal = 1`) the cover is a minimum-turn cycle
+//! cover of the boundary pixels, and both inequalities are tight: its checker count is w(M).
+//! The links left out are still covered: a left-out link's pixel lies on the kept one-pixel
+//! horizontal link. The step from Lemma 4.1 is the paper's and is not re-proven here; the tests
+//! and `examples/boundary_search.rs` compare the cover with the exact `cc-turns` solver.
 //!
 //! # Guarantee
 //! Exact for the boundary pixels P̄ (Theorem 4.1). When every pixel is a boundary pixel the
 //! cover is a cycle cover of the whole region, and optimal: every cycle cover of the region is
-//! one of its boundary.
+//! one of its boundary. Only a matching proven minimum is used: otherwise `boundary-cc` fails
+//! rather than certify.
 
 use crate::algorithms::endpoint_matching::{COMPLETE_LIMIT, PortMatching, match_ports};
 use crate::algorithms::strips_matching::join_links;
@@ -39,12 +71,18 @@ pub struct BoundaryLink {
     pub horizontal: bool,
 }
 
-/// The boundary links of the region, in pixel order of their first pixel, horizontal first.
+/// The boundary links the matching joins, in pixel order of their first pixel, horizontal
+/// first.
 ///
 /// Links along the south and the north side of one row lie on the same line (the row's pixel
 /// centres); where they share a pixel we take their union as one link, since a cycle link
 /// covering one of them passes through the shared pixel and continues along the other (our
 /// grid reading of Lemma 4.1; without it a width-1 ring would need two rounds).
+///
+/// A one-pixel vertical link at a pixel that also has a one-pixel horizontal link is left
+/// out: the horizontal one covers its pixel, and kept, the two could be matched into a cycle
+/// that never moves, priced 2 by the matching but 4 by the checker (the module docs prove
+/// that leaving it out keeps the matching's minimum equal to the optimum).
 ///
 /// # Complexity
 /// O(N).
@@ -77,6 +115,11 @@ pub fn boundary_links(region: &Region) -> Vec<BoundaryLink> {
             });
         }
     }
+    let mut one_pixel_horizontal = vec![false; region.len()];
+    for l in links.iter().filter(|l| l.horizontal && l.first == l.last) {
+        one_pixel_horizontal[l.first] = true;
+    }
+    links.retain(|l| l.horizontal || l.first != l.last || !one_pixel_horizontal[l.first]);
     links
 }
 
@@ -141,10 +184,12 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
 
 /// Removes closed walks of one pixel whose pixel another kept walk visits.
 ///
-/// One-pixel links at one pixel can be matched into a cycle that never moves: it costs its
-/// in-place turns (possibly 0) in the matching, but a one-pixel walk counts 4 turns. Such a
-/// walk covers nothing another walk does not, so we drop it when its pixel is visited
-/// elsewhere and keep one otherwise (our treatment of a case the paper does not discuss).
+/// The only cycle the matching can close without moving is a one-pixel link joined to itself
+/// (see [`boundary_links`]), priced 4 and counted 4. Such a walk covers nothing another walk
+/// does not, so we drop it when its pixel is visited elsewhere (our treatment of a case the
+/// paper does not discuss). This only lowers the count, and with a matching proven minimum it
+/// never applies: the cover would then beat the minimum, which the module docs prove is a
+/// lower bound.
 pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
     let mut visited: std::collections::HashSet<crate::region::Pixel> = cover
         .cycles
@@ -161,9 +206,13 @@ pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
     CycleCover::new(cycles)
 }
 
-/// `boundary-cc` applies when every pixel is a boundary pixel (then it covers the region).
+/// `boundary-cc` applies when every pixel is a boundary pixel (then it covers the region). A
+/// cycle cover needs no connectivity: on a region of several components it is a cycle cover
+/// of each (the matching never pairs ports of different components, which no path joins).
 pub fn precondition(region: &Region) -> Result<()> {
-    crate::algorithms::merge::connected(region)?;
+    if region.is_empty() {
+        return Err(Error::invalid("the region is empty"));
+    }
     match (0..region.len()).find(|&i| !is_boundary(region, i)) {
         None => Ok(()),
         Some(i) => Err(Error::invalid(format!(
@@ -178,8 +227,14 @@ pub fn precondition(region: &Region) -> Result<()> {
 /// `matching_lower_bound`, `matching_candidates`).
 pub fn run(
     region: &Region,
-    _opts: &crate::algorithms::Options,
+    opts: &crate::algorithms::Options,
 ) -> Result<crate::algorithms::Solution> {
+    if opts.coverage4 {
+        return Err(Error::invalid(
+            "--coverage4 rewrites tours (Theorem 5.6 of the turn-cost paper); boundary-cc \
+             outputs only a cycle cover, so there is no tour to rewrite",
+        ));
+    }
     let (cover, matching) = boundary_cycle_cover(region)?;
     let mut sol = crate::algorithms::Solution::default();
     sol.outputs.push(crate::algorithms::Output {

@@ -11,6 +11,13 @@
 //! walk visiting q either passes into c or turns back at q having arrived heading towards c;
 //! there we insert the step into c and back, moving the U-turn from q to c (same turns).
 //!
+//! Why the result is optimal: every cycle cover of the region covers its boundary pixels, so it
+//! has at least as many turns as the boundary cover, which is minimum when its matching is
+//! (`matching_optimal = 1`; the proof, and the one-pixel links it needs left out, are in the
+//! module docs of [`boundary_cc`](super::boundary_cc)); the insertions add no turn. So
+//! `matching_optimal = 1` with `centre_fallbacks = 0` proves the cover a minimum-turn cycle
+//! cover; a fallback detour (never seen: the tests assert 0) would void that proof.
+//!
 //! # thin-merge
 //! Step 1 is thin-cc; step 2 repeats (a) a merge of two cycles at no extra cost when one
 //! exists, else (c) a merge at a crossing with at most two more turns: this is the smart
@@ -23,23 +30,35 @@
 
 use crate::algorithms::boundary_cc::{boundary_cycle_cover, matching_certificates};
 use crate::algorithms::endpoint_matching::PortMatching;
-use crate::algorithms::merge::{connected, cover_and_tour};
+use crate::algorithms::merge::cover_and_tour;
 use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
 use crate::region::Region;
-use crate::topology::is_thin;
+use crate::topology::{components, is_thin};
 use crate::tour::CycleCover;
 use std::collections::BTreeMap;
 
-/// Precondition of the thin algorithms: connected and thin (no 2×2 block).
+/// Precondition of the thin algorithms: thin (no 2×2 block) and connected. The cycle cover
+/// alone would not need connectivity, but both algorithms also output the tour merged from it
+/// (Corollary 5.3 and Theorem 5.9), which cannot leave a component: we refuse rather than
+/// report a "tour" of several walks (`boundary-cc` gives the cycle cover of each component of
+/// a thin region without plus centres).
 pub fn precondition(region: &Region) -> Result<()> {
-    connected(region)?;
+    if region.is_empty() {
+        return Err(Error::invalid("the region is empty"));
+    }
     if !is_thin(region) {
         return Err(Error::invalid(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
-    Ok(())
+    match components(region).count {
+        1 => Ok(()),
+        c => Err(Error::invalid(format!(
+            "the region has {c} connected components, and thin-cc and thin-merge also output \
+             a tour merged from their cycle cover, which cannot leave a component"
+        ))),
+    }
 }
 
 /// Inserts a step into every unvisited pixel `c` from a neighbour `q` where a walk turns back

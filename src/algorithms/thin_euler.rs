@@ -91,13 +91,21 @@ pub fn straight_decomposition(region: &Region) -> CycleCover {
 }
 
 /// Runs `thin-euler`: the straight decomposition (objective `cc-turns`, no guarantee of its
-/// own) and the Euler tour joined at crossings (objective `turns`).
-pub fn run(region: &Region, _opts: &Options) -> Result<Solution> {
+/// own) and the Euler tour joined at crossings (objective `turns`), rewritten by
+/// [`coverage4`](crate::algorithms::coverage4) under `--coverage4` (certificate
+/// `coverage4_stuck`, as for the merged tours of [`cover_and_tour`](super::merge::cover_and_tour)).
+pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let cover = straight_decomposition(region);
-    let (tour, stats) = merge_cycles(region, &cover, Merge::Naive);
-    let before = check(region, &cover, Mode::Milling);
+    let (mut tour, stats) = merge_cycles(region, &cover, Merge::Naive);
     let mut sol = Solution::default();
+    if opts.coverage4 {
+        let (rewritten, stuck) = crate::algorithms::coverage4::coverage4(region, &tour);
+        tour = rewritten;
+        sol.certificates
+            .insert("coverage4_stuck".to_string(), stuck as i64);
+    }
+    let before = check(region, &cover, Mode::Milling);
     sol.certificates
         .insert("cc_cycles".to_string(), before.cycles as i64);
     sol.certificates
