@@ -39,6 +39,8 @@ use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
 use crate::tour::CycleCover;
+use rustworkx_core::max_weight_matching::max_weight_matching;
+use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 
 /// Theorem 4 needs a connected, non-empty region; holes are allowed.
 pub fn precondition(region: &Region) -> Result<()> {
@@ -133,14 +135,11 @@ pub fn milling25(region: &Region) -> Result<Solution> {
         }
         l_match += add_shorter_matching(region, c, positions, &mut graph);
     }
-    // Degenerate grid case only: pair up lone endpoints through the region.
-    for pair in lone_ends.chunks(2) {
-        if let [a, b] = *pair {
-            let path = shortest_path(region, a, b);
-            graph.add_path(region, &path);
-            l_match += (path.len() - 1) as u64;
-        }
-    }
+    // Grid case only: the lone endpoints are paired by a minimum-weight perfect matching under
+    // the walking distance in the region, each pair joined by a shortest path (a minimum
+    // T-join; see the module docs).
+    let l_repair = add_lone_end_paths(region, &lone_ends, &mut graph);
+    l_match += l_repair;
 
     // The proof's "clearly, this graph is connected" fails when no strip reaches a hole's
     // contour (e.g. a hole two pixels from the outer boundary all around): join such
@@ -158,6 +157,7 @@ pub fn milling25(region: &Region) -> Result<Solution> {
     cert.insert("l_str".into(), l_str as i64);
     cert.insert("strip_pixels".into(), strip_pixels as i64);
     cert.insert("l_match".into(), l_match as i64);
+    cert.insert("l_repair".into(), l_repair as i64);
     cert.insert("contours".into(), contours.len() as i64);
     cert.insert("strips".into(), strips.len() as i64);
     cert.insert("odd_contours".into(), odd_contours);
@@ -285,22 +285,94 @@ fn add_shorter_matching(
     m1.min(m2) as u64
 }
 
-/// A shortest path in the grid graph (breadth-first search); used only for degenerate repairs.
-fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+/// Pairs the lone endpoints `ends` (an even number of distinct pixels) by a minimum-weight
+/// perfect matching under the walking distance in the region and adds a shortest path for
+/// every pair to the graph; returns the moves added (the minimum T-join value, T = `ends`).
+///
+/// # Complexity
+/// O(t · N) for the t breadth-first searches plus O(t³) for the blossom algorithm on the
+/// complete graph of the t ≤ holes + 1 lone endpoints.
+fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigraph) -> u64 {
+    let t = ends.len();
+    if t == 0 {
+        return 0;
+    }
+    assert!(
+        t % 2 == 0,
+        "strip lines have two ends, so lone ends come in pairs"
+    );
+    let dist: Vec<Vec<u32>> = ends.iter().map(|&a| bfs(region, a).0).collect();
+    let at = |x: usize, y: usize| dist[x][ends[y]];
+    // Maximum cardinality and weight `big − d` make the maximum-weight matching a perfect
+    // matching of minimum total distance (every pair is reachable: the region is connected).
+    let big = 2 + 2 * i128::from(
+        (0..t)
+            .flat_map(|x| (0..t).map(move |y| (x, y)))
+            .map(|(x, y)| at(x, y))
+            .max()
+            .unwrap_or(0),
+    );
+    let mut complete = UnGraph::<(), i128>::with_capacity(t, t * (t - 1) / 2);
+    for _ in 0..t {
+        complete.add_node(());
+    }
+    for x in 0..t {
+        for y in x + 1..t {
+            complete.add_edge(
+                NodeIndex::new(x),
+                NodeIndex::new(y),
+                big - i128::from(at(x, y)),
+            );
+        }
+    }
+    let mut pairs: Vec<(usize, usize)> = max_weight_matching(
+        &complete,
+        true,
+        |e: EdgeReference<i128>| Ok::<i128, std::convert::Infallible>(*e.weight()),
+        false,
+    )
+    .map(|set| set.into_iter().map(|(x, y)| (x.min(y), x.max(y))).collect())
+    .unwrap_or_else(|never| match never {});
+    // Sorted, so that the tour does not depend on the hash set's iteration order.
+    pairs.sort_unstable();
+    assert_eq!(
+        2 * pairs.len(),
+        t,
+        "a complete graph on an even number of nodes"
+    );
+    let mut added = 0;
+    for (x, y) in pairs {
+        let path = shortest_path(region, ends[x], ends[y]);
+        debug_assert_eq!(path.len() - 1, at(x, y) as usize);
+        graph.add_path(region, &path);
+        added += (path.len() - 1) as u64;
+    }
+    added
+}
+
+/// Breadth-first search from `a` in the grid graph: distances (u32::MAX where unreachable)
+/// and predecessors.
+fn bfs(region: &Region, a: usize) -> (Vec<u32>, Vec<usize>) {
+    let mut dist = vec![u32::MAX; region.len()];
     let mut prev = vec![usize::MAX; region.len()];
+    dist[a] = 0;
     prev[a] = a;
     let mut queue = std::collections::VecDeque::from([a]);
     while let Some(v) = queue.pop_front() {
-        if v == b {
-            break;
-        }
         for w in region.neighbors(v) {
-            if prev[w] == usize::MAX {
+            if dist[w] == u32::MAX {
+                dist[w] = dist[v] + 1;
                 prev[w] = v;
                 queue.push_back(w);
             }
         }
     }
+    (dist, prev)
+}
+
+/// A shortest path from `a` to `b` in the grid graph.
+fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+    let (_, prev) = bfs(region, a);
     let mut path = vec![b];
     while *path.last().expect("non-empty") != a {
         path.push(prev[*path.last().expect("non-empty")]);
