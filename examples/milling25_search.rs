@@ -115,7 +115,10 @@ impl Worst {
             (&mut self.by_opt, r),
             (&mut self.by_n, row.length as f64 / row.n as f64),
             (&mut self.db_by_opt, row.l_db as f64 / row.opt.max(1) as f64),
-            (&mut self.str_by_opt, row.l_str as f64 / row.opt.max(1) as f64),
+            (
+                &mut self.str_by_opt,
+                row.l_str as f64 / row.opt.max(1) as f64,
+            ),
         ] {
             if v > slot.0 {
                 *slot = (v, format!("{tag} (N {}, OPT {})", row.n, row.opt));
@@ -140,11 +143,15 @@ impl Worst {
                 let file = GridFile::with_meta(
                     region.clone(),
                     &[
-                        ("finding", format!("milling25 length {} vs OPT {}", row.length, row.opt)),
+                        (
+                            "finding",
+                            format!("milling25 length {} vs OPT {}", row.length, row.opt),
+                        ),
                         ("opt_length", row.opt.to_string()),
                     ],
                 );
-                file.write(&stem.with_extension("grid")).expect("write grid");
+                file.write(&stem.with_extension("grid"))
+                    .expect("write grid");
                 row.cover
                     .write(&stem.with_extension("tour.json"))
                     .expect("write tour");
@@ -158,10 +165,19 @@ impl Worst {
              {} above 5/2 OPT, {} breaking a registered guarantee",
             self.count, self.skipped, self.refused, self.over_25, self.violations
         );
-        println!("  worst length / OPT  {:.4}  {}", self.by_opt.0, self.by_opt.1);
+        println!(
+            "  worst length / OPT  {:.4}  {}",
+            self.by_opt.0, self.by_opt.1
+        );
         println!("  worst length / N    {:.4}  {}", self.by_n.0, self.by_n.1);
-        println!("  worst L_dB / OPT    {:.4}  {}", self.db_by_opt.0, self.db_by_opt.1);
-        println!("  worst L_str / OPT   {:.4}  {}", self.str_by_opt.0, self.str_by_opt.1);
+        println!(
+            "  worst L_dB / OPT    {:.4}  {}",
+            self.db_by_opt.0, self.db_by_opt.1
+        );
+        println!(
+            "  worst L_str / OPT   {:.4}  {}",
+            self.str_by_opt.0, self.str_by_opt.1
+        );
     }
 }
 
@@ -248,7 +264,11 @@ fn connected(pixels: &HashSet<Pixel>) -> bool {
 fn mutate(rng: &mut ChaCha8Rng, pixels: &HashSet<Pixel>, max_n: usize) -> Option<HashSet<Pixel>> {
     let mut list: Vec<Pixel> = pixels.iter().copied().collect();
     list.sort_unstable_by_key(|p| (p.y, p.x));
-    let four = |p: Pixel| mowmill::Dir::ALL.iter().all(|&d| pixels.contains(&p.step(d)));
+    let four = |p: Pixel| {
+        mowmill::Dir::ALL
+            .iter()
+            .all(|&d| pixels.contains(&p.step(d)))
+    };
     let mut next = pixels.clone();
     match rng.random_range(0..4) {
         0 if pixels.len() < max_n => {
@@ -293,7 +313,8 @@ fn climb(value: &dyn Fn(&str) -> Option<String>) {
     let mut w = Worst::default();
     for start in 1..=starts {
         let mut rng = ChaCha8Rng::seed_from_u64(start);
-        let style = [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms][start as usize % 4];
+        let style =
+            [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms][start as usize % 4];
         let p = GenParams {
             n: Some(rng.random_range(20..=max_n.min(60))),
             holes: Some(rng.random_range(1..=4)),
