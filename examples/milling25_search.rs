@@ -7,7 +7,7 @@
 //!     [--holes 0,1,2,3,4,6,8] [--time-limit 5] [--save instances/findings]
 //! # hill climb maximizing length / OPT from random starts
 //! cargo run --release --example milling25_search -- climb [--starts 20] [--steps 300]
-//!     [--max-n 80] [--time-limit 3] [--save instances/findings]
+//!     [--max-n 80] [--time-limit 3] [--save instances/findings] [--from START.grid]
 //! ```
 //!
 //! Every tour goes through the checker. An exact solve that ends without a proven optimum is
@@ -310,6 +310,8 @@ fn climb(value: &dyn Fn(&str) -> Option<String>) {
     let max_n: usize = value("--max-n").map_or(80, |s| s.parse().expect("--max-n N"));
     let limit: f64 = value("--time-limit").map_or(3.0, |s| s.parse().expect("--time-limit S"));
     let save = value("--save").map(PathBuf::from);
+    let from = value("--from")
+        .map(|f| GridFile::read(std::path::Path::new(&f)).expect("--from FILE.grid"));
     let mut w = Worst::default();
     for start in 1..=starts {
         let mut rng = ChaCha8Rng::seed_from_u64(start);
@@ -322,9 +324,13 @@ fn climb(value: &dyn Fn(&str) -> Option<String>) {
             style: Some(style),
             ..GenParams::new(Family::RandomHoled, start)
         };
-        let Ok(file) = generate(&p) else {
-            w.refused += 1;
-            continue;
+        let file = match (&from, generate(&p)) {
+            (Some(f), _) => f.clone(),
+            (None, Ok(f)) => f,
+            (None, Err(_)) => {
+                w.refused += 1;
+                continue;
+            }
         };
         let mut pixels: HashSet<Pixel> = file.region.pixels().iter().copied().collect();
         let region = file.region.clone();

@@ -354,7 +354,7 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
         return 0;
     }
     assert!(
-        t % 2 == 0,
+        t.is_multiple_of(2),
         "strip lines have two ends, so lone ends come in pairs"
     );
     let dist: Vec<Vec<u32>> = ends.iter().map(|&a| bfs(region, a).0).collect();
