@@ -4,7 +4,8 @@
 //! ```sh
 //! # random holed regions of every style, hole count and no_cut setting
 //! cargo run --release --example milling25_search -- random [--seeds 40] [--sizes 8,12,...]
-//!     [--holes 0,1,2,3,4,6,8] [--time-limit 5] [--save instances/findings]
+//!     [--holes 0,1,2,3,4,6,8] [--styles blob,rectangles,snake,rooms] [--time-limit 5]
+//!     [--save instances/findings]
 //! # hill climb maximizing length / OPT from random starts
 //! cargo run --release --example milling25_search -- climb [--starts 20] [--steps 300]
 //!     [--max-n 80] [--time-limit 3] [--save instances/findings] [--from START.grid]
@@ -194,7 +195,14 @@ fn random(args: &[String], value: &dyn Fn(&str) -> Option<String>) {
     let limit: f64 = value("--time-limit").map_or(5.0, |s| s.parse().expect("--time-limit S"));
     let save = value("--save").map(PathBuf::from);
     let mut total = Worst::default();
-    for style in [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms] {
+    let styles = list(
+        &value("--styles").unwrap_or("blob,rectangles,snake,rooms".into()),
+        |s| {
+            s.parse::<Style>()
+                .expect("--styles blob,rectangles,snake,rooms")
+        },
+    );
+    for style in styles {
         let mut w = Worst::default();
         for &n in &sizes {
             for &h in &holes {

@@ -123,6 +123,12 @@ fn u_shape(w: i32, gap: i32, base: i32, arm: i32, pitch: i32) -> Region {
 #[test]
 fn u_of_holed_arms_stays_within_five_halves_of_opt() {
     let r = u_shape(6, 40, 2, 24, 3);
+    assert_eq!(
+        r,
+        Region::from_ascii(include_str!(
+            "../instances/regressions/milling25-u-holed-arms.grid"
+        ))
+    );
     assert_eq!(r.len(), 378);
     assert_eq!(topology::holes(&r).count, 14);
     let (sol, length) = run(&r);
