@@ -10,6 +10,17 @@
 //! - **detour**: from a pixel x of A step to an adjacent pixel of B, run around B and step
 //!   back to x (two new visits); always possible between touching cycles.
 //!
+//! A detour is allowed only between two *settled* pixels: pixels all of whose visits already
+//! lie in one merged cycle. Exchanges are always allowed. This is our rule (the paper's merge
+//! extends links and says nothing on coverage); it bounds the visits a merge adds: a detour
+//! between settled p and q in different cycles crosses an edge p–q that no input walk uses
+//! (such a walk would put both pixels' visits in one cycle), and each such edge takes at most
+//! one detour, after which p and q are settled in one cycle for good. So a pixel gains at most
+//! one visit per neighbour joined to it by no input walk; the star and doubled-strip covers
+//! keep coverage 4 by this count (their module docs). Merging never gets stuck: cycles sharing
+//! a pixel can always be spliced there, and once no two merged cycles share a pixel every
+//! pixel is settled.
+//!
 //! The cost of an operation is the change of the turn count at the at most four pixels whose
 //! moves change (turns at a pixel depend only on its two neighbours on the walk), so it is
 //! exact and local.
