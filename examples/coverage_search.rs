@@ -98,9 +98,7 @@ fn main() {
                     for out in &sol.outputs {
                         let rep = check(&region, &out.cover, Mode::Milling);
                         assert!(rep.valid, "{name} {label}: {:?}", rep.error);
-                        let t = tally
-                            .entry((name.to_string(), out.objective))
-                            .or_default();
+                        let t = tally.entry((name.to_string(), out.objective)).or_default();
                         t.outputs += 1;
                         let cov = u64::from(rep.max_coverage);
                         if cov > 4 {
@@ -126,9 +124,11 @@ fn main() {
                             length: rep.length,
                             max_coverage: cov,
                         };
-                        for g in algo.guarantees.iter().filter(|g| {
-                            g.objective == out.objective && g.against != Against::Opt
-                        }) {
+                        for g in algo
+                            .guarantees
+                            .iter()
+                            .filter(|g| g.objective == out.objective && g.against != Against::Opt)
+                        {
                             if g.decide(&m, nn, None, None) == Some(false) {
                                 t.violated += 1;
                                 eprintln!("{name} {label}: {g} violated ({m:?})");
@@ -138,7 +138,23 @@ fn main() {
                 }
             }
         }
+        eprintln!("after n = {n}:");
+        report(&tally, regions, &sizes, refused, errors);
     }
+    let any_violated = report(&tally, regions, &sizes, refused, errors);
+    if any_violated {
+        std::process::exit(1);
+    }
+}
+
+/// Prints the table; returns whether a registered bound was violated.
+fn report(
+    tally: &BTreeMap<(String, Objective), Tally>,
+    regions: usize,
+    sizes: &[usize],
+    refused: usize,
+    errors: usize,
+) -> bool {
     println!(
         "regions {regions} (sizes {sizes:?}), generator refusals {refused}, algorithm errors {errors}"
     );
@@ -146,7 +162,7 @@ fn main() {
         "algorithm\toutput\toutputs\tcoverage>4\tworst coverage\tworst length/N\tturns>t+2c-2\tregistered bounds violated"
     );
     let mut any_violated = false;
-    for ((name, objective), t) in &tally {
+    for ((name, objective), t) in tally {
         println!(
             "{name}\t{objective}\t{}\t{}\t{} ({})\t{:.3} ({})\t{}\t{}",
             t.outputs,
@@ -160,7 +176,5 @@ fn main() {
         );
         any_violated |= t.violated > 0;
     }
-    if any_violated {
-        std::process::exit(1);
-    }
+    any_violated
 }

@@ -72,7 +72,11 @@ fn decide_all(name: &str, region: &Region, merge: Merge, label: &str) -> (u64, f
             length: rep.length,
             max_coverage: u64::from(rep.max_coverage),
         };
-        for g in algo.guarantees.iter().filter(|g| g.objective == out.objective) {
+        for g in algo
+            .guarantees
+            .iter()
+            .filter(|g| g.objective == out.objective)
+        {
             if g.against == Against::Opt {
                 continue;
             }
@@ -179,7 +183,10 @@ fn length_is_within_four_times_the_exact_optimum() {
             }
         }
     }
-    assert!(unsolved * 20 <= solved, "{unsolved} unsolved, {solved} solved");
+    assert!(
+        unsolved * 20 <= solved,
+        "{unsolved} unsolved, {solved} solved"
+    );
 }
 
 /// A 123-pixel cut-out of `random-simple --n 1000000 --seed 1` (around (367, 115)). The

@@ -320,7 +320,11 @@ fn check_against_opt(
         }
         let r = run(name, region, &Options::default());
         // Coverage and length bounds (against N or 1) are tested in tests/guarantees.rs.
-        for g in algo.guarantees.iter().filter(|g| g.quantity == Quantity::Value) {
+        for g in algo
+            .guarantees
+            .iter()
+            .filter(|g| g.quantity == Quantity::Value)
+        {
             assert_eq!(g.against, Against::Opt);
             let (value, opt) = match g.objective {
                 Objective::CcTurns => (r.cc.turns, opt_cc),
