@@ -10,6 +10,17 @@
 //! - **detour**: from a pixel x of A step to an adjacent pixel of B, run around B and step
 //!   back to x (two new visits); always possible between touching cycles.
 //!
+//! A detour is allowed only between two *settled* pixels: pixels all of whose visits already
+//! lie in one merged cycle. Exchanges are always allowed. This is our rule (the paper's merge
+//! extends links and says nothing on coverage); it bounds the visits a merge adds: a detour
+//! between settled p and q in different cycles crosses an edge p–q that no input walk uses
+//! (such a walk would put both pixels' visits in one cycle), and each such edge takes at most
+//! one detour, after which p and q are settled in one cycle for good. So a pixel gains at most
+//! one visit per neighbour joined to it by no input walk; the star and doubled-strip covers
+//! keep coverage 4 by this count (their module docs). Merging never gets stuck: cycles sharing
+//! a pixel can always be spliced there, and once no two merged cycles share a pixel every
+//! pixel is settled.
+//!
 //! The cost of an operation is the change of the turn count at the at most four pixels whose
 //! moves change (turns at a pixel depend only on its two neighbours on the walk), so it is
 //! exact and local.
@@ -77,6 +88,11 @@ struct Walks<'a> {
     size: Vec<usize>,
     /// Visits per region pixel, kept up to date by detours (exchanges keep visits).
     coverage: Vec<u32>,
+    /// The nodes of the input cover at each pixel, in compressed rows:
+    /// `visit_nodes[visit_start[p]..visit_start[p + 1]]` (detour copies are left out: each
+    /// belongs to the cycle of the node it copies).
+    visit_start: Vec<u32>,
+    visit_nodes: Vec<u32>,
     stats: MergeStats,
 }
 
@@ -101,6 +117,8 @@ impl<'a> Walks<'a> {
             root: Vec::new(),
             size: Vec::new(),
             coverage: vec![0; region.len()],
+            visit_start: Vec::new(),
+            visit_nodes: Vec::new(),
             stats: MergeStats::default(),
         };
         for (c, walk) in cover.cycles.iter().enumerate() {
@@ -138,7 +156,52 @@ impl<'a> Walks<'a> {
         for n in 0..w.pix.len() as u32 {
             w.recount_turn(n);
         }
+        let n = region.len();
+        let mut start = vec![0u32; n + 1];
+        for &p in &w.pix {
+            start[p as usize + 1] += 1;
+        }
+        for p in 0..n {
+            start[p + 1] += start[p];
+        }
+        let mut fill = start.clone();
+        let mut flat = vec![0u32; w.pix.len()];
+        for (node, &p) in w.pix.iter().enumerate() {
+            flat[fill[p as usize] as usize] = node as u32;
+            fill[p as usize] += 1;
+        }
+        w.visit_start = start;
+        w.visit_nodes = flat;
         w
+    }
+
+    fn visits(&self, p: usize) -> &[u32] {
+        &self.visit_nodes[self.visit_start[p] as usize..self.visit_start[p + 1] as usize]
+    }
+
+    /// Whether every visit of pixel `p` already lies in one merged cycle. Settledness only
+    /// grows as cycles merge.
+    fn settled(&mut self, p: usize) -> bool {
+        let (a, b) = (
+            self.visit_start[p] as usize,
+            self.visit_start[p + 1] as usize,
+        );
+        let Some(&first) = self.visit_nodes.get(a) else {
+            return true;
+        };
+        let root = self.root_of(first);
+        (a + 1..b).all(|k| {
+            let node = self.visit_nodes[k];
+            self.root_of(node) == root
+        })
+    }
+
+    /// Whether detours between nodes `x` and `z` are allowed: only between settled pixels (see
+    /// the module documentation: this keeps the coverage bound of star and doubled-strip
+    /// covers).
+    fn detours_allowed(&mut self, x: u32, z: u32) -> bool {
+        let (p, q) = (self.pix[x as usize] as usize, self.pix[z as usize] as usize);
+        p != q && self.settled(p) && self.settled(q)
     }
 
     fn find(&mut self, mut c: u32) -> u32 {
@@ -228,7 +291,7 @@ impl<'a> Walks<'a> {
     /// The valid operations joining the cycles of `x` and `z` (different cycles): exchanges of
     /// an edge at `x` with an edge at `z` (at a shared pixel these are the splices), and, for
     /// adjacent pixels, detours.
-    fn for_each_op(&self, x: u32, z: u32, mut out: impl FnMut(Op)) {
+    fn for_each_op(&self, x: u32, z: u32, detours: bool, mut out: impl FnMut(Op)) {
         let same = self.pix[x as usize] == self.pix[z as usize];
         if !same && !self.adjacent(x, z) {
             return;
@@ -255,7 +318,7 @@ impl<'a> Walks<'a> {
                 }
             }
         }
-        if !same {
+        if !same && detours {
             for backward in [false, true] {
                 out(Op::Detour { x, z, backward });
                 out(Op::Detour {
@@ -279,9 +342,10 @@ impl<'a> Walks<'a> {
 
     /// The cheapest operation joining the cycles of `x` and `z`; among equally cheap ones, one
     /// that keeps every pixel within 4 visits (Corollary 5.2's coverage) where there is one.
-    fn best_op(&self, x: u32, z: u32) -> Option<(i32, Op)> {
+    fn best_op(&mut self, x: u32, z: u32) -> Option<(i32, Op)> {
+        let detours = self.detours_allowed(x, z);
         let mut best: Option<(i32, bool, Op)> = None;
-        self.for_each_op(x, z, |op| {
+        self.for_each_op(x, z, detours, |op| {
             let d = self.delta(op);
             // The coverage test only where it can decide: cheaper, or as cheap as a best
             // that exceeds 4.
@@ -435,21 +499,7 @@ impl<'a> Walks<'a> {
     /// vertically), other pairs at one pixel, pairs at adjacent pixels.
     fn candidate_pairs(&self) -> [Vec<(u32, u32)>; 3] {
         let n = self.region.len();
-        // Visits per pixel, in compressed rows: visits[start[p]..start[p + 1]].
-        let mut start = vec![0u32; n + 1];
-        for &p in &self.pix {
-            start[p as usize + 1] += 1;
-        }
-        for p in 0..n {
-            start[p + 1] += start[p];
-        }
-        let mut fill = start.clone();
-        let mut flat = vec![0u32; self.pix.len()];
-        for (node, &p) in self.pix.iter().enumerate() {
-            flat[fill[p as usize] as usize] = node as u32;
-            fill[p as usize] += 1;
-        }
-        let visits = |p: usize| &flat[start[p] as usize..start[p + 1] as usize];
+        let visits = |p: usize| self.visits(p);
         let (mut crossing, mut same, mut adjacent) = (Vec::new(), Vec::new(), Vec::new());
         for p in 0..n {
             for &x in visits(p) {
@@ -543,44 +593,64 @@ pub fn merge_cycles(
                     w.apply(op, d);
                 }
             }
+            let mut blocked: Vec<(u32, u32)> = Vec::new();
             for &(x, z) in classes.iter().flatten() {
-                if w.root_of(x) != w.root_of(z)
-                    && let Some((d, _)) = w.best_op(x, z)
-                {
-                    buckets[slot(d)].push((x, z));
+                if w.root_of(x) != w.root_of(z) {
+                    match w.best_op(x, z) {
+                        Some((d, _)) => buckets[slot(d)].push((x, z)),
+                        None => blocked.push((x, z)),
+                    }
                 }
             }
             // Within a bucket (one cost), pairs whose merge would bring a pixel above 4
             // visits wait until the bucket's other pairs are done: same turns, less coverage.
-            let mut b = 0;
-            let mut deferred: Vec<(u32, u32)> = Vec::new();
-            let mut last_chance = false;
-            while b < buckets.len() {
-                let Some((x, z)) = buckets[b].pop() else {
-                    if !deferred.is_empty() && !last_chance {
+            // A pair with no allowed operation yet (only detours, at an unsettled pixel) is
+            // kept for a later round; after a round every pixel is settled (every pair at a
+            // shared pixel has a splice), so the second round merges everything left.
+            loop {
+                let mut b = 0;
+                let mut deferred: Vec<(u32, u32)> = Vec::new();
+                let mut last_chance = false;
+                while b < buckets.len() {
+                    let Some((x, z)) = buckets[b].pop() else {
+                        if !deferred.is_empty() && !last_chance {
+                            buckets[b].append(&mut deferred);
+                            last_chance = true;
+                            continue;
+                        }
                         buckets[b].append(&mut deferred);
-                        last_chance = true;
+                        if buckets[b].is_empty() {
+                            b += 1;
+                            last_chance = false;
+                        }
+                        continue;
+                    };
+                    if w.root_of(x) == w.root_of(z) {
                         continue;
                     }
-                    buckets[b].append(&mut deferred);
-                    if buckets[b].is_empty() {
-                        b += 1;
-                        last_chance = false;
+                    let Some((now, op)) = w.best_op(x, z) else {
+                        blocked.push((x, z));
+                        continue;
+                    };
+                    if slot(now) > b {
+                        buckets[slot(now)].push((x, z));
+                    } else if !last_chance && w.exceeds_four(op) {
+                        deferred.push((x, z));
+                    } else {
+                        w.apply(op, now);
                     }
-                    continue;
-                };
-                if w.root_of(x) == w.root_of(z) {
-                    continue;
                 }
-                let Some((now, op)) = w.best_op(x, z) else {
-                    continue;
-                };
-                if slot(now) > b {
-                    buckets[slot(now)].push((x, z));
-                } else if !last_chance && w.exceeds_four(op) {
-                    deferred.push((x, z));
-                } else {
-                    w.apply(op, now);
+                for (x, z) in std::mem::take(&mut blocked) {
+                    if w.root_of(x) != w.root_of(z) {
+                        match w.best_op(x, z) {
+                            Some((d, _)) => buckets[slot(d)].push((x, z)),
+                            None => blocked.push((x, z)),
+                        }
+                    }
+                }
+                // No pair left, or none can move (cannot happen: see above).
+                if buckets.iter().all(Vec::is_empty) {
+                    break;
                 }
             }
         }

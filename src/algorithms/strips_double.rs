@@ -3,12 +3,29 @@
 //!
 //! # Guarantee
 //! The cycle cover has 4s ≤ 4·OPT turns in s cycles (s = minimum strip cover size ≤ OPT,
-//! Lemma 4.2); merging adds at most 2 per merge (Theorem 4.2): at most 6s − 2 ≤ 6·OPT turns.
-//! Every pixel is covered at most 4 times (twice by each of its two strips), so the tour is
-//! also within 4 times the optimal length (Theorem 5.4).
+//! Lemma 4.2); merging adds at most 2 per merge (Theorem 4.2, as [`merge`](super::merge)
+//! states it): at most 6s − 2 ≤ 6·OPT turns.
+//!
+//! Coverage ≤ 4 and length ≤ 4N ≤ 4·OPT_length (Theorem 5.4), cycle cover and tour, proven
+//! for our construction by counting visits per axis of a pixel p (at most 2 each):
+//! - p's strip along the axis is in the cover: its doubled walk visits p at most twice (a
+//!   one-pixel strip once) and uses the edges to both neighbours along the axis.
+//! - It is not: no doubled walk visits p along this axis. The merge turns a one-pixel walk
+//!   [o] into [o, q] with q a neighbour of o (4 turns either way); o's strip along the other
+//!   axis is a single pixel, so q lies along o's strip that is not in the cover (a minimum
+//!   cover has no redundant strip), i.e. the extra visit lands on q's uncovered axis and uses
+//!   the edge o–q. A detour adds one visit at p only across an edge p–q to a pixel of another
+//!   merged cycle, both settled (see [`merge`](super::merge)), hence across an edge no input
+//!   walk uses, at most once per such edge. So each of p's (at most 2) neighbours along the
+//!   axis adds at most one visit.
+//!
+//! Length: a closed walk of m ≥ 2 positions has m moves (a one-pixel walk none), so length ≤
+//! visits ≤ 4N, and N ≤ OPT_length for N ≥ 2 (N = 1: both are 0).
 
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
+use crate::algorithms::{
+    Against, Algorithm, Guarantee, Objective, Options, Quantity, Solution, When,
+};
 use crate::error::Result;
 use crate::region::{Pixel, Region};
 use crate::strip_cover::strip_cover;
@@ -77,23 +94,63 @@ pub const ALGORITHM: Algorithm = Algorithm {
     guarantees: &[
         Guarantee {
             objective: Objective::CcTurns,
-            quantity: crate::algorithms::Quantity::Value,
+            quantity: Quantity::Value,
             num: 4,
             den: 1,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: When::Always,
             source: "Theorem 5.4 of Optimal covering tours with turn costs (4 turns per strip, Lemma 4.2)",
         },
         Guarantee {
             objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
+            quantity: Quantity::Value,
             num: 6,
             den: 1,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: When::Always,
             source: "Theorem 5.4 of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::CcTurns,
+            quantity: Quantity::MaxCoverage,
+            num: 4,
+            den: 1,
+            add: 0,
+            against: Against::One,
+            when: When::Always,
+            source: "Theorem 5.4 (its cycle cover: two visits per strip) of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::CcTurns,
+            quantity: Quantity::Length,
+            num: 4,
+            den: 1,
+            add: 0,
+            against: Against::N,
+            when: When::Always,
+            source: "Theorem 5.4 (its cycle cover; N <= OPT length) of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            quantity: Quantity::MaxCoverage,
+            num: 4,
+            den: 1,
+            add: 0,
+            against: Against::One,
+            when: When::Always,
+            source: "Theorem 5.4 (coverage, our merge) of Optimal covering tours with turn costs",
+        },
+        Guarantee {
+            objective: Objective::Turns,
+            quantity: Quantity::Length,
+            num: 4,
+            den: 1,
+            add: 0,
+            against: Against::N,
+            when: When::Always,
+            source: "Theorem 5.4 (length; N <= OPT length) of Optimal covering tours with turn costs",
         },
     ],
     precondition: crate::algorithms::merge::connected,

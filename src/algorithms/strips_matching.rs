@@ -149,7 +149,10 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     cover_and_tour(region, smc.cover, opts, certificates)
 }
 
-/// The registry entry.
+/// The registry entry. No coverage or length bound is registered: the paper notes that this
+/// algorithm gives no immediate length bound (Fig. 5), and Table 1's 4 and 4 for integral
+/// orthogonal milling come from the Theorem 5.6 rewrite (`--coverage4`), not from the
+/// algorithm (its tours reach coverage 8 on random regions: `examples/coverage_search.rs`).
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "strips-matching",
     summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",
