@@ -251,6 +251,13 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                     bump(tally, k).skipped += 1;
                     continue;
                 }
+                // A bound on another quantity than the value against OPT is against that
+                // quantity's optimum: the length optimum for `length`; none for coverage.
+                let (o, lb) = match (g.quantity, g.against) {
+                    (Quantity::Length, Against::Opt) => opt.of(Objective::Length),
+                    (Quantity::MaxCoverage, Against::Opt) => (None, 0),
+                    _ => (o, lb),
+                };
                 let verdict = g.decide(&m, n, o, Some(lb));
                 let q = match g.quantity {
                     Quantity::Value => value,
