@@ -143,6 +143,19 @@ fn sample() -> Vec<Case> {
             &mut out,
         );
     }
+    // Thin pockets with short arms next to crossings: where thin-cc's claim is hardest.
+    for seed in 112..136u64 {
+        gen_case(
+            GenParams {
+                n: Some(16 + seed as usize % 15),
+                holes: Some(seed as usize % 3),
+                compactness: Some(0.6 + (seed % 5) as f64 / 10.0),
+                ..g(Family::ThinArms, seed)
+            },
+            "thin-arms",
+            &mut out,
+        );
+    }
     // No-cut holed regions start at 24 pixels.
     for seed in 0..4u64 {
         gen_case(
