@@ -70,6 +70,17 @@
 //! lattice edges (each closes one bounded face, one hole) and at most one dead-end stub pixel
 //! to reach N exactly.
 //!
+//! The hard-shape families (issue 12: the shapes the certificates of `boundary-cc`,
+//! `thin-cc` and `milling25` find hardest) reuse this machinery. `boundary` draws a shape of
+//! the style with about 4N/3 pixels; each pixel with four neighbours, in random order, then
+//! loses itself or one of its neighbours (the pixel itself with a probability drawn per
+//! instance between 0.2 and 0.8), the first of these whose removal leaves its 8-ring in one
+//! run of pixels, so that connectivity is kept locally (a global check for the few stuck
+//! ones); growth or erosion to exactly N then never makes a pixel inner again. `thin-arms`
+//! grows a tree pixel by pixel (each new pixel completes no 2 × 2 block and touches one arc
+//! of the region) and closes H loops with bridging cells. `pinholes` removes H pixels whose
+//! 3 × 3 block is full from a hole-free shape of N + H pixels, often continuing a column.
+//!
 //! Near the smallest size that holds the requested holes (and for the tiniest `no_cut`
 //! shapes) the random construction often fails, and the result is the deterministic
 //! fallback: a staircase of full rows with one-pixel holes on a grid, or for `thin` a
@@ -85,7 +96,8 @@
 //! `no_cut`, whose walls are two pixels thick, N ≥ min over a of (3a + 2)(3⌈H/a⌉ + 2) − H,
 //! and then refuses the few sizes just above that minimum it cannot build, such as
 //! N = 25 for H = 1; `thin` needs 2t − 1 + H pixels, t the fewest lattice nodes with H
-//! independent cycles).
+//! independent cycles). `pinholes` refuses what `random-holed` without `no_cut` refuses, and
+//! `thin-arms` what `thin` refuses: their fallbacks are those families' fallbacks.
 //!
 //! # Output
 //!
