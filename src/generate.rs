@@ -21,6 +21,9 @@
 //! | `band` | `k` | the diagonal band B_k, the tight class of the 6/5 bound of Theorem 5 of the milling paper: pixels (x, y) with 0 ≤ x, y ≤ k + 1 and \|x − y\| ≤ 2 (k = 1 is the 3 × 3 square); N = 5k + 4, no holes, no cut vertices. |
 //! | `thin43` | `s` | the 4/3 thin example of the turn-cost paper (Fig. 6, Theorem 5.9), as reconstructed in issue 7: width-1 corridors on rings and paths with even vertices (gadgets X1–X4, and Y_j, R_j for j = 1..s); N = 222 + 77s, thin. |
 //! | `lawn-scattered` | `n`, `parts` P (3), `style`, `compactness` | grass in exactly P components, N pixels in all; each component is a random hole-free shape, and components are at least one empty cell apart in all 8 directions; no holes. |
+//! | `boundary` | `n`, `style`, `compactness` | exactly N pixels, 4-connected, every pixel a boundary pixel (an empty 4-neighbour, [`topology::is_boundary`]; the precondition of `boundary-cc`), holes any number: a shape of the style whose inner pixels lose themselves (pinholes, notches) or a neighbour (stairs, one-pixel links and one-pixel-thick parts). Fallback: two rows. |
+//! | `thin-arms` | `n`, `holes` H (0), `compactness` | a thin pocket grown pixel by pixel (corridors at any spacing, stairs, crossings with arms of one or two pixels; the more compact, the more branches), exactly N pixels and H holes. Fallback: the `thin` fallback. |
+//! | `pinholes` | `n`, `holes` H (required), `style`, `compactness` | exactly N pixels, 4-connected, exactly H holes of one cell each, often in columns or rows 2–4 cells apart (hole contours tangent to the strips between them), walls down to one pixel. Fallback: the `random-holed` staircase. |
 //!
 //! # Shape styles
 //!
@@ -67,6 +70,17 @@
 //! lattice edges (each closes one bounded face, one hole) and at most one dead-end stub pixel
 //! to reach N exactly.
 //!
+//! The hard-shape families (issue 12: the shapes the certificates of `boundary-cc`,
+//! `thin-cc` and `milling25` find hardest) reuse this machinery. `boundary` draws a shape of
+//! the style with about 4N/3 pixels; each pixel with four neighbours, in random order, then
+//! loses itself or one of its neighbours (the pixel itself with a probability drawn per
+//! instance between 0.2 and 0.8), the first of these whose removal leaves its 8-ring in one
+//! run of pixels, so that connectivity is kept locally (a global check for the few stuck
+//! ones); growth or erosion to exactly N then never makes a pixel inner again. `thin-arms`
+//! grows a tree pixel by pixel (each new pixel completes no 2 × 2 block and touches one arc
+//! of the region) and closes H loops with bridging cells. `pinholes` removes H pixels whose
+//! 3 × 3 block is full from a hole-free shape of N + H pixels, often continuing a column.
+//!
 //! Near the smallest size that holds the requested holes (and for the tiniest `no_cut`
 //! shapes) the random construction often fails, and the result is the deterministic
 //! fallback: a staircase of full rows with one-pixel holes on a grid, or for `thin` a
@@ -82,7 +96,8 @@
 //! `no_cut`, whose walls are two pixels thick, N ≥ min over a of (3a + 2)(3⌈H/a⌉ + 2) − H,
 //! and then refuses the few sizes just above that minimum it cannot build, such as
 //! N = 25 for H = 1; `thin` needs 2t − 1 + H pixels, t the fewest lattice nodes with H
-//! independent cycles).
+//! independent cycles). `pinholes` refuses what `random-holed` without `no_cut` refuses, and
+//! `thin-arms` what `thin` refuses: their fallbacks are those families' fallbacks.
 //!
 //! # Output
 //!
@@ -126,6 +141,9 @@ pub enum Family {
     Donut,
     Band,
     Thin43,
+    Boundary,
+    ThinArms,
+    Pinholes,
 }
 
 /// A generator parameter (the field of [`GenParams`] of the same name).
@@ -192,7 +210,7 @@ pub struct FamilyInfo {
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
 /// arm in `build`.
-const FAMILY_TABLE: [FamilyInfo; 8] = [
+const FAMILY_TABLE: [FamilyInfo; 11] = [
     FamilyInfo {
         family: Family::Rect,
         name: "rect",
@@ -255,10 +273,31 @@ const FAMILY_TABLE: [FamilyInfo; 8] = [
         params: &[Param::S],
         required: &[Param::S],
     },
+    FamilyInfo {
+        family: Family::Boundary,
+        name: "boundary",
+        summary: "every pixel a boundary pixel (the precondition of boundary-cc): stairs, one-pixel links and parts, holes",
+        params: &[Param::N, Param::Style, Param::Compactness],
+        required: &[Param::N],
+    },
+    FamilyInfo {
+        family: Family::ThinArms,
+        name: "thin-arms",
+        summary: "thin pocket grown pixel by pixel: stairs, crossings with short arms, exactly n pixels and `holes` holes",
+        params: &[Param::N, Param::Holes, Param::Compactness],
+        required: &[Param::N],
+    },
+    FamilyInfo {
+        family: Family::Pinholes,
+        name: "pinholes",
+        summary: "exactly n pixels, exactly `holes` one-pixel holes, often in columns, walls down to one pixel",
+        params: &[Param::N, Param::Holes, Param::Style, Param::Compactness],
+        required: &[Param::N, Param::Holes],
+    },
 ];
 
 impl Family {
-    pub const ALL: [Family; 8] = [
+    pub const ALL: [Family; 11] = [
         Family::Rect,
         Family::RandomSimple,
         Family::RandomHoled,
@@ -267,6 +306,9 @@ impl Family {
         Family::Donut,
         Family::Band,
         Family::Thin43,
+        Family::Boundary,
+        Family::ThinArms,
+        Family::Pinholes,
     ];
 
     /// The family's registry row.
@@ -659,6 +701,17 @@ impl Spec {
                     min_holed_pixels(holes, self.no_cut)
                 )))
             }
+            Family::Pinholes if n < min_holed_pixels(holes, false) => Err(Error::invalid(format!(
+                "pinholes: {holes} one-pixel holes do not fit in {n} pixels: this generator needs n ≥ {} (one-pixel \
+                 holes on a grid)",
+                min_holed_pixels(holes, false)
+            ))),
+            Family::ThinArms if n < min_thin_pixels(self.holes) => Err(Error::invalid(format!(
+                "thin-arms: {} holes need n ≥ {} pixels (each hole is a cycle of width-1 corridors around at least \
+                 one empty cell), got {n}",
+                self.holes,
+                min_thin_pixels(self.holes)
+            ))),
             Family::Thin if n < min_thin_pixels(self.holes) => Err(Error::invalid(format!(
                 "thin: {} holes need n ≥ {} pixels (each hole is a cycle of width-1 corridors around at least one \
                  empty cell), got {n}",
@@ -679,7 +732,9 @@ impl Spec {
         let (components, holes) = match self.family {
             Family::Donut => (1, 1),
             Family::Thin43 => (1, thin43_holes(self.s)),
-            Family::RandomHoled | Family::Thin => (1, self.holes),
+            Family::RandomHoled | Family::Thin | Family::ThinArms | Family::Pinholes => {
+                (1, self.holes)
+            }
             Family::LawnScattered => (self.parts, 0),
             _ => (1, 0),
         };
@@ -694,8 +749,13 @@ impl Spec {
             components,
             holes,
             cut,
-            thin: matches!(self.family, Family::Thin | Family::Thin43),
+            thin: matches!(
+                self.family,
+                Family::Thin | Family::Thin43 | Family::ThinArms
+            ),
             separated: self.family == Family::LawnScattered,
+            any_holes: self.family == Family::Boundary,
+            boundary_only: self.family == Family::Boundary,
         }
     }
 
@@ -728,6 +788,24 @@ impl Spec {
                 return self.with_attempts(
                     |rng, attempt| thin_pixels(n, h, o.compactness, Some(attempt), rng),
                     |rng| thin_pixels(n, h, o.compactness, None, rng),
+                );
+            }
+            Family::Boundary => {
+                return self.with_attempts(
+                    |rng, _| boundary_canvas(n, &o, rng).map(|c| c.pixels()),
+                    |_| Some(two_rows_pixels(n)),
+                );
+            }
+            Family::ThinArms => {
+                return self.with_attempts(
+                    |rng, _| thin_arms_pixels(n, h, o.compactness, rng),
+                    |rng| thin_pixels(n, h, o.compactness, None, rng),
+                );
+            }
+            Family::Pinholes => {
+                return self.with_attempts(
+                    |rng, _| pinholes_canvas(n, h, &o, rng).map(|c| c.pixels()),
+                    |rng| rows_pixels(n, h, false, rng),
                 );
             }
         };
@@ -800,6 +878,10 @@ struct Promise {
     thin: bool,
     /// Components pairwise at Chebyshev distance ≥ 2 (no 8-adjacency between components).
     separated: bool,
+    /// Any number of holes (`holes` is then ignored).
+    any_holes: bool,
+    /// Every pixel a boundary pixel (`topology::is_boundary`).
+    boundary_only: bool,
 }
 
 /// Checks `promise`; returns the number of holes.
@@ -815,7 +897,7 @@ fn verify(region: &Region, promise: &Promise) -> std::result::Result<usize, Stri
         ));
     }
     let holes = topology::holes(region).count;
-    if holes != promise.holes {
+    if holes != promise.holes && !promise.any_holes {
         return Err(format!("{holes} holes instead of {}", promise.holes));
     }
     let bad = match promise.cut {
@@ -834,6 +916,11 @@ fn verify(region: &Region, promise: &Promise) -> std::result::Result<usize, Stri
     }
     if promise.thin && !topology::is_thin(region) {
         return Err("a 2x2 block in a thin region".to_string());
+    }
+    if promise.boundary_only
+        && let Some(i) = (0..region.len()).find(|&i| !topology::is_boundary(region, i))
+    {
+        return Err(format!("inner pixel {}", region.pixel(i)));
     }
     if promise.separated {
         for (i, &p) in region.pixels().iter().enumerate() {
@@ -2472,6 +2559,241 @@ fn thin_pixels(
 }
 
 // ---------------------------------------------------------------------------------------------
+// Hard shapes: boundary-only regions, thin pockets grown pixel by pixel, one-pixel holes
+// ---------------------------------------------------------------------------------------------
+
+/// The number of maximal runs of occupied cells around the ring (cyclically; a full ring is
+/// one run). Consecutive ring cells are 4-adjacent, so at most one run means that removing
+/// the centre keeps its pixel neighbours connected to one another: connectivity is kept.
+fn ring_runs(ring: [bool; 8]) -> usize {
+    if ring.iter().all(|&o| o) {
+        return 1;
+    }
+    (0..8).filter(|&i| ring[i] && !ring[(i + 7) % 8]).count()
+}
+
+/// Whether adding cell `k` would complete a 2 × 2 block of occupied cells.
+fn makes_block(c: &Canvas, k: usize) -> bool {
+    let r = c.ring_occ(k);
+    (0..4).any(|q| r[2 * q] && r[2 * q + 1] && r[(2 * q + 2) % 8])
+}
+
+/// Whether the occupied cells stay 4-connected without `k` (breadth-first search).
+fn connected_without(c: &Canvas, k: usize) -> bool {
+    let Some(start) = (0..4).map(|i| c.nb(k, 2 * i)).find(|&q| c.occ[q]) else {
+        return c.count <= 1;
+    };
+    let mut seen = vec![false; c.area()];
+    seen[k] = true;
+    seen[start] = true;
+    let (mut stack, mut reached) = (vec![start], 1);
+    while let Some(q) = stack.pop() {
+        for i in 0..4 {
+            let r = c.nb(q, 2 * i);
+            if c.occ[r] && !seen[r] {
+                seen[r] = true;
+                reached += 1;
+                stack.push(r);
+            }
+        }
+    }
+    reached + 1 == c.count
+}
+
+/// Inner pixels (all four neighbours present) the local rule may leave behind before an
+/// attempt gives up; each costs a global connectivity check.
+const MAX_STUCK: usize = 64;
+
+/// A connected region of exactly `n` pixels, every one with an empty 4-neighbour: a shape of
+/// the given style, then every inner pixel k in random order loses k itself (a pinhole or a
+/// notch) or one of its four neighbours (stairs, one-pixel links and parts), whichever first
+/// keeps the region connected, then simple growth or erosion to n that never makes a pixel
+/// inner again.
+fn boundary_canvas(n: usize, o: &ShapeOpts, rng: &mut Rng) -> Option<Canvas> {
+    let (mut c, _) = simple_canvas(n + n / 3 + 1, o, rng)?;
+    let own = between(rng, 20, 80) as f64 / 100.0;
+    let mut inner: Vec<u32> = (0..c.area())
+        .filter(|&k| c.occ[k] && c.nb4(k) == 4)
+        .map(|k| k as u32)
+        .collect();
+    shuffle(&mut inner, rng);
+    let mut stuck = Vec::new();
+    for k in inner {
+        let k = k as usize;
+        if !c.occ[k] || c.nb4(k) < 4 {
+            continue;
+        }
+        let mut options = [k, c.nb(k, 0), c.nb(k, 2), c.nb(k, 4), c.nb(k, 6)];
+        shuffle(&mut options[1..], rng);
+        if !chance(rng, own) {
+            options.rotate_left(1);
+        }
+        match options
+            .iter()
+            .find(|&&r| c.in_zone(r, ADJ_MARGIN) && ring_runs(c.ring_occ(r)) <= 1)
+        {
+            Some(&r) => c.set(r, false),
+            None => stuck.push(k),
+        }
+    }
+    if stuck.len() > MAX_STUCK {
+        return None;
+    }
+    for k in stuck {
+        if !c.occ[k] || c.nb4(k) < 4 {
+            continue;
+        }
+        let options = [k, c.nb(k, 0), c.nb(k, 2), c.nb(k, 4), c.nb(k, 6)];
+        let &r = options.iter().find(|&&r| connected_without(&c, r))?;
+        c.set(r, false);
+    }
+    // Exactly n: add an empty cell only if it and its pixel neighbours keep an empty
+    // 4-neighbour; remove a pixel only if its ring is one run (connectivity kept).
+    while c.count != n {
+        let grow = c.count < n;
+        let mut cells: Vec<u32> = (0..c.area())
+            .filter(|&k| c.in_zone(k, ADJ_MARGIN) && c.occ[k] != grow && c.nb4(k) > 0)
+            .map(|k| k as u32)
+            .collect();
+        shuffle(&mut cells, rng);
+        let before = c.count;
+        for k in cells {
+            let k = k as usize;
+            if c.count == n {
+                break;
+            }
+            let ok = if grow {
+                !c.occ[k]
+                    && c.nb4(k) < 4
+                    && (0..4).all(|i| {
+                        let q = c.nb(k, 2 * i);
+                        !c.occ[q] || c.nb4(q) <= 2
+                    })
+            } else {
+                c.occ[k] && ring_runs(c.ring_occ(k)) == 1
+            };
+            if ok {
+                c.set(k, grow);
+            }
+        }
+        if c.count == before {
+            return None;
+        }
+    }
+    Some(c)
+}
+
+/// The fallback of `boundary`: two rows, the upper one shorter by at most one pixel.
+fn two_rows_pixels(n: usize) -> Vec<Pixel> {
+    (0..n)
+        .map(|i| Pixel::new((i / 2) as i32, (i % 2) as i32))
+        .collect()
+}
+
+/// A thin region of exactly n pixels and `holes` holes grown pixel by pixel: a tree grown
+/// from one pixel by cells with one region neighbour that complete no 2 × 2 block (a cell
+/// next to a pixel that already has two or more neighbours, i.e. a new branch, is accepted
+/// with a probability rising with `compactness`, so crossings with short arms and stairs are
+/// common), then `holes` bridging cells (Yokoi number 2, no 2 × 2 block), each closing one
+/// loop.
+fn thin_arms_pixels(n: usize, holes: usize, compactness: f64, rng: &mut Rng) -> Option<Vec<Pixel>> {
+    let tree = n - holes;
+    let mut c = Canvas::for_target(n, 4, rng);
+    let (x, y) = center(&c, rng);
+    let k0 = c.idx(x, y);
+    c.set(k0, true);
+    let mut front: Vec<u32> = (0..4).map(|i| c.nb(k0, 2 * i) as u32).collect();
+    let branchy = 0.15 + 0.7 * compactness;
+    let mut budget = 400 * n + 1000;
+    while c.count < tree {
+        if front.is_empty() || budget == 0 {
+            return None;
+        }
+        budget -= 1;
+        let i = below(rng, front.len());
+        let k = front[i] as usize;
+        if c.occ[k] || !c.in_zone(k, ADJ_MARGIN) || c.yokoi(k) != 1 || makes_block(&c, k) {
+            front.swap_remove(i);
+            continue;
+        }
+        let branch = (0..4)
+            .map(|d| c.nb(k, 2 * d))
+            .any(|q| c.occ[q] && c.nb4(q) >= 2);
+        let p = if branch { branchy } else { 1.0 - branchy / 2.0 };
+        if chance(rng, p) {
+            c.set(k, true);
+            front.swap_remove(i);
+            front.extend(
+                (0..4)
+                    .map(|d| c.nb(k, 2 * d))
+                    .filter(|&q| !c.occ[q])
+                    .map(|q| q as u32),
+            );
+        }
+    }
+    let mut bridges: Vec<u32> = (0..c.area())
+        .filter(|&k| !c.occ[k] && c.in_zone(k, ADJ_MARGIN) && c.yokoi(k) == 2)
+        .map(|k| k as u32)
+        .collect();
+    shuffle(&mut bridges, rng);
+    let mut made = 0;
+    while made < holes {
+        let k = bridges.pop()? as usize;
+        if !c.occ[k] && c.yokoi(k) == 2 && !makes_block(&c, k) {
+            c.set(k, true);
+            made += 1;
+        }
+    }
+    Some(c.pixels())
+}
+
+/// A shape of exactly n pixels with exactly `holes` one-pixel holes: a hole-free shape of
+/// n + holes pixels of the given style, then pixels whose 3 × 3 block is full are removed
+/// (each a new hole of one cell, so holes are at least one wall pixel apart); after a hole,
+/// with a probability drawn per instance, the next one continues a column (or, less often, a
+/// row) 2 to 4 cells further on, so that hole contours line up with one another and with the
+/// strips between them.
+fn pinholes_canvas(n: usize, holes: usize, o: &ShapeOpts, rng: &mut Rng) -> Option<Canvas> {
+    let (mut c, _) = simple_canvas(n + holes, o, rng)?;
+    let mut sites: Vec<u32> = (0..c.area())
+        .filter(|&k| c.occ[k] && c.in_zone(k, ADJ_MARGIN + 1) && c.full(k, 1))
+        .map(|k| k as u32)
+        .collect();
+    shuffle(&mut sites, rng);
+    let column = unit(rng);
+    let mut last: Option<(usize, (i64, i64))> = None;
+    for _ in 0..holes {
+        let next = last
+            .filter(|_| chance(rng, column))
+            .and_then(|(k, (dx, dy))| {
+                let step = between(rng, 2, 4) as i64;
+                let (x, y) = ((k % c.w) as i64 + step * dx, (k / c.w) as i64 + step * dy);
+                if !c.zone_xy(x, y, ADJ_MARGIN + 1) {
+                    return None;
+                }
+                let q = c.idx(x as usize, y as usize);
+                (c.occ[q] && c.full(q, 1)).then_some((q, (dx, dy)))
+            });
+        let (k, dir) = match next {
+            Some(found) => found,
+            None => {
+                let k = pop_site(&c, &mut sites, 1)?;
+                let dir = match (chance(rng, 0.7), chance(rng, 0.5)) {
+                    (true, true) => (0, 1),
+                    (true, false) => (0, -1),
+                    (false, true) => (1, 0),
+                    (false, false) => (-1, 0),
+                };
+                (k, dir)
+            }
+        };
+        c.set(k, false);
+        last = Some((k, dir));
+    }
+    Some(c)
+}
+
+// ---------------------------------------------------------------------------------------------
 // Scattered lawns
 // ---------------------------------------------------------------------------------------------
 
@@ -2502,6 +2824,8 @@ fn lawn_part(size: usize, o: &ShapeOpts, rng: &mut Rng) -> Vec<Pixel> {
         cut: CutRule::Any,
         thin: false,
         separated: false,
+        any_holes: false,
+        boundary_only: false,
     };
     for _ in 0..MAX_ATTEMPTS {
         if let Some((c, _)) = simple_canvas(size, o, rng)
@@ -2711,6 +3035,22 @@ mod tests {
                     }
                 }
             }
+            Family::Boundary => {
+                assert_eq!(s.components, 1, "{r:?}");
+                assert!(
+                    (0..r.len()).all(|i| topology::is_boundary(r, i)),
+                    "every pixel a boundary pixel\n{r:?}"
+                );
+            }
+            Family::ThinArms => {
+                assert_eq!((s.components, s.holes), (1, p.holes.unwrap_or(0)), "{r:?}");
+                assert!(s.thin, "thin\n{r:?}");
+            }
+            Family::Pinholes => {
+                assert_eq!((s.components, s.holes), (1, p.holes.unwrap()), "{r:?}");
+                let cells = topology::holes(r).hole_cells();
+                assert!(cells.iter().all(|h| h.len() == 1), "one-pixel holes\n{r:?}");
+            }
             Family::Rect | Family::Donut | Family::Band | Family::Thin43 => {}
         }
     }
@@ -2754,7 +3094,10 @@ mod tests {
                 "lawn-scattered",
                 "donut",
                 "band",
-                "thin43"
+                "thin43",
+                "boundary",
+                "thin-arms",
+                "pinholes"
             ]
         );
         let e = "disc".parse::<Family>().unwrap_err().to_string();
@@ -3084,6 +3427,8 @@ mod tests {
                         cut,
                         thin: false,
                         separated: false,
+                        any_holes: false,
+                        boundary_only: false,
                     };
                     assert_eq!(
                         verify(&region, &promise),
@@ -3130,6 +3475,8 @@ mod tests {
                     cut: CutRule::Any,
                     thin: true,
                     separated: false,
+                    any_holes: false,
+                    boundary_only: false,
                 };
                 assert_eq!(
                     verify(&region, &promise),
@@ -3167,6 +3514,8 @@ mod tests {
                             cut: cut(false),
                             thin: false,
                             separated: false,
+                            any_holes: false,
+                            boundary_only: false,
                         };
                         match simple_canvas(n, &o, &mut rng) {
                             Some((c, _)) => {
@@ -3219,6 +3568,8 @@ mod tests {
                     cut: CutRule::Any,
                     thin: true,
                     separated: false,
+                    any_holes: false,
+                    boundary_only: false,
                 };
                 assert_eq!(verify(&r, &promise), Ok(holes), "thin n {n}\n{r:?}");
             }
@@ -3276,6 +3627,75 @@ mod tests {
                 "thin seed {seed}"
             );
         }
+    }
+
+    /// The hard-shape families come from their random constructions, not their fallbacks,
+    /// and show the features they are for.
+    #[test]
+    fn hard_shapes_are_random_and_show_their_features() {
+        let (mut total, mut fallbacks) = (0, Vec::new());
+        let (mut holed, mut links, mut crossings, mut columns) = (0, 0, 0, 0);
+        for seed in 0..40u64 {
+            let n = 12 + 7 * seed as usize;
+            let cases = [
+                GenParams {
+                    n: Some(n),
+                    ..params(Family::Boundary, seed)
+                },
+                GenParams {
+                    n: Some(n),
+                    holes: Some(seed as usize % 3),
+                    ..params(Family::ThinArms, seed)
+                },
+                GenParams {
+                    n: Some(n + 30),
+                    holes: Some(1 + seed as usize % 6),
+                    ..params(Family::Pinholes, seed)
+                },
+            ];
+            for p in cases {
+                let (f, provenance) = generate_traced(&p).unwrap();
+                assert_promises(&f, &p);
+                total += 1;
+                if provenance == Provenance::Fallback {
+                    fallbacks.push(p.clone());
+                }
+                let r = &f.region;
+                match p.family {
+                    Family::Boundary => {
+                        holed += usize::from(topology::holes(r).count > 0);
+                        // A pixel without its north and south neighbours: a one-pixel link.
+                        links += usize::from((0..r.len()).any(|i| {
+                            r.neighbor(i, Dir::N).is_none()
+                                && r.neighbor(i, Dir::S).is_none()
+                                && r.degree(i) == 2
+                        }));
+                    }
+                    Family::ThinArms => {
+                        crossings += usize::from((0..r.len()).any(|i| r.degree(i) == 4));
+                    }
+                    _ => {
+                        let cells: BTreeSet<(i32, i32)> = topology::holes(r)
+                            .hole_cells()
+                            .iter()
+                            .flatten()
+                            .map(|p| (p.x, p.y))
+                            .collect();
+                        columns += usize::from(cells.iter().any(|&(x, y)| {
+                            (2..=4)
+                                .any(|d| cells.contains(&(x, y + d)) || cells.contains(&(x + d, y)))
+                        }));
+                    }
+                }
+            }
+        }
+        assert!(fallbacks.len() * 20 <= total, "fallbacks: {fallbacks:?}");
+        assert!(
+            holed >= 10 && links >= 20,
+            "boundary: {holed} holed, {links} with links"
+        );
+        assert!(crossings >= 10, "thin-arms: {crossings} with a crossing");
+        assert!(columns >= 10, "pinholes: {columns} with holes in line");
     }
 
     fn boundary_fraction(f: &GridFile) -> f64 {
@@ -3372,6 +3792,31 @@ mod tests {
         fn thin_keeps_its_promises(n in 1usize..500, holes in 0usize..10, seed: u64, c in compactness_strategy()) {
             let p = GenParams { compactness: c, ..thin(n, holes, seed) };
             if n < min_thin_pixels(holes) {
+                refused(&p);
+            } else {
+                gen_ok(&p);
+            }
+        }
+
+        #[test]
+        fn boundary_keeps_its_promises(n in 1usize..400, seed: u64, style in style_strategy(), c in compactness_strategy()) {
+            gen_ok(&GenParams { n: Some(n), style, compactness: c, ..params(Family::Boundary, seed) });
+        }
+
+        #[test]
+        fn thin_arms_keeps_its_promises(n in 1usize..400, holes in 0usize..8, seed: u64, c in compactness_strategy()) {
+            let p = GenParams { n: Some(n), holes: Some(holes), compactness: c, ..params(Family::ThinArms, seed) };
+            if n < min_thin_pixels(holes) {
+                refused(&p);
+            } else {
+                gen_ok(&p);
+            }
+        }
+
+        #[test]
+        fn pinholes_keeps_its_promises(n in 1usize..400, holes in 0usize..12, seed: u64, style in style_strategy()) {
+            let p = GenParams { n: Some(n), holes: Some(holes), style, ..params(Family::Pinholes, seed) };
+            if n < min_holed_pixels(holes, false) {
                 refused(&p);
             } else {
                 gen_ok(&p);

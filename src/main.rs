@@ -264,7 +264,8 @@ fn parse_cutter(s: &str) -> Result<Cutter, String> {
 
 #[derive(Args)]
 struct GenArgs {
-    /// Family: rect, random-simple, random-holed, thin, lawn-scattered, donut, band, thin43.
+    /// Family: rect, random-simple, random-holed, thin, lawn-scattered, donut, band, thin43,
+    /// boundary, thin-arms, pinholes.
     family: Family,
     /// Number of pixels.
     #[arg(long)]

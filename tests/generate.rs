@@ -42,6 +42,20 @@ fn generated_files_read_back_byte_for_byte() {
             height: Some(6),
             ..params(Family::Rect, 8)
         },
+        GenParams {
+            n: Some(80),
+            ..params(Family::Boundary, 9)
+        },
+        GenParams {
+            n: Some(70),
+            holes: Some(2),
+            ..params(Family::ThinArms, 10)
+        },
+        GenParams {
+            n: Some(90),
+            holes: Some(5),
+            ..params(Family::Pinholes, 11)
+        },
     ];
     for p in cases {
         let f = generate(&p).unwrap();
@@ -86,11 +100,38 @@ fn frozen_instances() {
         compactness: Some(0.3),
         ..params(Family::Thin, 3)
     };
-    let got: Vec<String> = [simple, holed, thin]
+    // The hard-shape families (issue 12), frozen from their first version.
+    let boundary = GenParams {
+        n: Some(24),
+        style: Some(Style::Blob),
+        compactness: Some(0.5),
+        ..params(Family::Boundary, 1)
+    };
+    let arms = GenParams {
+        n: Some(25),
+        holes: Some(1),
+        compactness: Some(0.8),
+        ..params(Family::ThinArms, 3)
+    };
+    let pinholes = GenParams {
+        n: Some(40),
+        holes: Some(3),
+        style: Some(Style::Rectangles),
+        compactness: Some(0.9),
+        ..params(Family::Pinholes, 3)
+    };
+    let got: Vec<String> = [simple, holed, thin, boundary, arms, pinholes]
         .iter()
         .map(|p| generate(p).unwrap().to_text().unwrap())
         .collect();
-    let expected = [FROZEN_SIMPLE, FROZEN_HOLED, FROZEN_THIN];
+    let expected = [
+        FROZEN_SIMPLE,
+        FROZEN_HOLED,
+        FROZEN_THIN,
+        FROZEN_BOUNDARY,
+        FROZEN_ARMS,
+        FROZEN_PINHOLES,
+    ];
     for (g, e) in got.iter().zip(expected) {
         assert_eq!(g, e, "got:\n{g}");
     }
@@ -134,6 +175,49 @@ const FROZEN_THIN: &str = "; family: thin\n\
      ..#...#\n\
      ..#...#\n\
      ###.###\n";
+
+const FROZEN_BOUNDARY: &str = "; family: boundary\n\
+     ; params: n=24 style=blob compactness=0.5\n\
+     ; seed: 1\n\
+     ; n: 24\n\
+     ; holes: 1\n\
+     .#.....\n\
+     .#####.\n\
+     .#.#.#.\n\
+     .##.###\n\
+     ####..#\n\
+     ...####\n\
+     ...#...\n";
+const FROZEN_ARMS: &str = "; family: thin-arms\n\
+     ; params: n=25 holes=1 compactness=0.8\n\
+     ; seed: 3\n\
+     ; n: 25\n\
+     ; holes: 1\n\
+     .#.....\n\
+     .#...#.\n\
+     .##..#.\n\
+     ..#####\n\
+     ###.#..\n\
+     ..###..\n\
+     .#.#...\n\
+     .####..\n\
+     ..#....\n";
+const FROZEN_PINHOLES: &str = "; family: pinholes\n\
+     ; params: n=40 holes=3 style=rectangles compactness=0.9\n\
+     ; seed: 3\n\
+     ; n: 40\n\
+     ; holes: 3\n\
+     #...##.\n\
+     #######\n\
+     ###.##.\n\
+     #.##...\n\
+     #####..\n\
+     #.#.#..\n\
+     #####..\n\
+     .###...\n\
+     ..##...\n\
+     ..##...\n\
+     ..##...\n";
 
 /// The sizes the README reports. Prints the generation time (release build):
 /// `cargo test --release --test generate -- --ignored --nocapture`.
