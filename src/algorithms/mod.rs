@@ -161,6 +161,49 @@ pub struct Guarantee {
 }
 
 impl Guarantee {
+    /// `value ≤ num/den · OPT` on every instance the algorithm accepts.
+    pub const fn vs_opt(objective: Objective, num: i64, den: i64, source: &'static str) -> Self {
+        Guarantee {
+            objective,
+            quantity: Quantity::Value,
+            num,
+            den,
+            add: 0,
+            against: Against::Opt,
+            when: When::Always,
+            source,
+        }
+    }
+
+    /// Every pixel visited at most `max` times by the outputs of `objective`.
+    pub const fn max_coverage(objective: Objective, max: i64, source: &'static str) -> Self {
+        Guarantee {
+            objective,
+            quantity: Quantity::MaxCoverage,
+            num: max,
+            den: 1,
+            add: 0,
+            against: Against::One,
+            when: When::Always,
+            source,
+        }
+    }
+
+    /// The walks of `objective` have length at most `factor · N` (hence at most `factor` times
+    /// the optimal milling length, which is at least N for N ≥ 2).
+    pub const fn length_vs_n(objective: Objective, factor: i64, source: &'static str) -> Self {
+        Guarantee {
+            objective,
+            quantity: Quantity::Length,
+            num: factor,
+            den: 1,
+            add: 0,
+            against: Against::N,
+            when: When::Always,
+            source,
+        }
+    }
+
     /// The factor as a float, for tables and plots.
     pub fn factor(&self) -> f64 {
         self.num as f64 / self.den as f64

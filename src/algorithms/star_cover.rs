@@ -42,9 +42,7 @@
 
 use crate::algorithms::merge::cover_and_tour;
 use crate::algorithms::strips_double::{close_walk, extend_walk, straight};
-use crate::algorithms::{
-    Against, Algorithm, Guarantee, Objective, Options, Quantity, Solution, When,
-};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::{Dir, Pixel, Region};
 use crate::tour::{CycleCover, Walk};
@@ -133,66 +131,38 @@ pub const ALGORITHM: Algorithm = Algorithm {
     summary: "greedy rook placement, one 10-turn walk per star, merged (linear time; each pixel covered at most 4 times)",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::Value,
-            num: 10,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: When::Always,
-            source: "Theorem 5.1 / Corollary 5.2 of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::Value,
-            num: 12,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: When::Always,
-            source: "Corollary 5.2 of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::MaxCoverage,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::One,
-            when: When::Always,
-            source: "Theorem 5.1 (coverage mu = 4) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::Length,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::N,
-            when: When::Always,
-            source: "Theorem 5.1 (length delta = 4; N <= OPT length) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::MaxCoverage,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::One,
-            when: When::Always,
-            source: "Corollary 5.2 (coverage) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::Length,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::N,
-            when: When::Always,
-            source: "Corollary 5.2 (length; N <= OPT length) of Optimal covering tours with turn costs",
-        },
+        Guarantee::vs_opt(
+            Objective::CcTurns,
+            10,
+            1,
+            "Theorem 5.1 / Corollary 5.2 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::vs_opt(
+            Objective::Turns,
+            12,
+            1,
+            "Corollary 5.2 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::max_coverage(
+            Objective::CcTurns,
+            4,
+            "Theorem 5.1 (coverage mu = 4) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::length_vs_n(
+            Objective::CcTurns,
+            4,
+            "Theorem 5.1 (length delta = 4; N <= OPT length) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::max_coverage(
+            Objective::Turns,
+            4,
+            "Corollary 5.2 (coverage) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::length_vs_n(
+            Objective::Turns,
+            4,
+            "Corollary 5.2 (length; N <= OPT length) of Optimal covering tours with turn costs",
+        ),
     ],
     precondition: crate::algorithms::merge::connected,
     run,

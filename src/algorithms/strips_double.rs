@@ -23,9 +23,7 @@
 //! visits ≤ 4N, and N ≤ OPT_length for N ≥ 2 (N = 1: both are 0).
 
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{
-    Against, Algorithm, Guarantee, Objective, Options, Quantity, Solution, When,
-};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::{Pixel, Region};
 use crate::strip_cover::strip_cover;
@@ -92,66 +90,38 @@ pub const ALGORITHM: Algorithm = Algorithm {
     summary: "minimum strip cover, each strip doubled with two U-turns, merged (also at most 4x the optimal length)",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::Value,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: When::Always,
-            source: "Theorem 5.4 of Optimal covering tours with turn costs (4 turns per strip, Lemma 4.2)",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::Value,
-            num: 6,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: When::Always,
-            source: "Theorem 5.4 of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::MaxCoverage,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::One,
-            when: When::Always,
-            source: "Theorem 5.4 (its cycle cover: two visits per strip) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: Quantity::Length,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::N,
-            when: When::Always,
-            source: "Theorem 5.4 (its cycle cover; N <= OPT length) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::MaxCoverage,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::One,
-            when: When::Always,
-            source: "Theorem 5.4 (coverage, our merge) of Optimal covering tours with turn costs",
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: Quantity::Length,
-            num: 4,
-            den: 1,
-            add: 0,
-            against: Against::N,
-            when: When::Always,
-            source: "Theorem 5.4 (length; N <= OPT length) of Optimal covering tours with turn costs",
-        },
+        Guarantee::vs_opt(
+            Objective::CcTurns,
+            4,
+            1,
+            "Theorem 5.4 of Optimal covering tours with turn costs (4 turns per strip, Lemma 4.2)",
+        ),
+        Guarantee::vs_opt(
+            Objective::Turns,
+            6,
+            1,
+            "Theorem 5.4 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::max_coverage(
+            Objective::CcTurns,
+            4,
+            "Theorem 5.4 (its cycle cover: two visits per strip) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::length_vs_n(
+            Objective::CcTurns,
+            4,
+            "Theorem 5.4 (its cycle cover; N <= OPT length) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::max_coverage(
+            Objective::Turns,
+            4,
+            "Theorem 5.4 (coverage, our merge) of Optimal covering tours with turn costs",
+        ),
+        Guarantee::length_vs_n(
+            Objective::Turns,
+            4,
+            "Theorem 5.4 (length; N <= OPT length) of Optimal covering tours with turn costs",
+        ),
     ],
     precondition: crate::algorithms::merge::connected,
     run,

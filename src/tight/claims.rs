@@ -346,14 +346,14 @@ const CLAIMS: &[Claim] = &[
     },
     Claim {
         paper: TURNS,
-        id: "Table 1 (integral orthogonal: length 4, coverage 4)",
-        statement: "the 3.75 tour rewritten by Theorem 5.6 is also a 4-approximation on length and covers each pixel at most 4 times",
+        id: "Table 1 (length 4, coverage 4)",
+        statement: "integral orthogonal and thin rows: the tours rewritten by Theorem 5.6 are 4-approximations on length and cover each pixel at most 4 times",
         factor: "length <= 4 OPT_length, coverage <= 4",
         rows: &[],
         measure: Measure::Nothing,
         when: When::Always,
         implementation: Implementation::None(
-            "realized by strips-matching --coverage4, which bench configs cannot select yet (issue 13); plain strips-matching tours reach coverage 18, and Theorem 5.6 is measured on the tight donuts",
+            "realized by --coverage4 (strips-matching, thin-cc, thin-merge), which bench configs cannot select yet (issue 13); without it strips-matching tours reach coverage 18 and thin-cc cycle covers 5; Theorem 5.6 is measured on the tight donuts",
         ),
         tight: None,
     },
