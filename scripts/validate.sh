@@ -10,6 +10,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-results/validate}
 cargo build --release --quiet
+# The slow test tier first: the complete-graph references the large-instance matchings rest on.
+cargo test --release --test tight --test matching --test boundary -- --ignored
 bin=target/release/mowmill
 if [ -f "$out/results.csv" ]; then
   "$bin" bench --resume "$out" --config experiments/validate.toml --jobs "${JOBS:-2}"

@@ -57,6 +57,7 @@ fn check_matching(r: &Region, ports: &[Port], floor: &[u32], m: &PortMatching) {
 /// On random regions of a few hundred endpoints: lower bound ≤ the complete-graph minimum ≤
 /// the priced matching, and a matching certified optimal has exactly the minimum weight.
 #[test]
+#[ignore = "slow tier (tens of seconds): .ci/run and scripts/validate.sh run it with --ignored"]
 fn priced_matching_is_bounded_by_the_complete_minimum() {
     let mut certified = 0;
     let mut runs = 0;

@@ -96,6 +96,7 @@ fn donut_k2_to_k4_against_the_exact_solver() {
 }
 
 #[test]
+#[ignore = "slow tier (tens of seconds): .ci/run and scripts/validate.sh run it with --ignored"]
 fn donut_k5_and_k6_against_the_exact_solver() {
     donut_members(5..=6);
 }
