@@ -365,3 +365,43 @@ fn draw_writes_svg_and_png() {
     ]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// Issue 12: a tour objective on a disconnected region is bad input (exit 2 with the reason),
+/// not a solver failure (exit 1); the cycle-cover objective accepts it.
+#[test]
+fn exact_refuses_tours_of_disconnected_regions_with_exit_2() {
+    let dir = temp_dir("disconnected");
+    let path = dir.join("two.grid");
+    std::fs::write(&path, "##.##\n##.##\n").unwrap();
+    let file = path.to_str().unwrap();
+    for objective in ["length", "tour-turns"] {
+        let out = mowmill(&["exact", file, "--objective", objective]);
+        assert_eq!(out.status.code(), Some(2), "{objective}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("2 connected components"), "{err}");
+    }
+    let out = mowmill(&["exact", file, "--objective", "cc-turns", "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(json(&out)["value"], 8);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 12: lawn-box's factor is 3α + (3/10)α with α = 3/2 (the paper derives θ = 3/10 for
+/// α = 1), i.e. 99/20, not 24/5.
+#[test]
+fn lawn_box_registers_99_over_20() {
+    let out = mowmill(&["algos", "--json"]);
+    let list = json(&out);
+    let lawn_box = list
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|a| a["name"] == "lawn-box")
+        .unwrap();
+    let g = lawn_box["guarantees"][0].as_str().unwrap();
+    assert!(g.starts_with("lawn-length <= 99/20 OPT"), "{g}");
+}

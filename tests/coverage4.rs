@@ -255,9 +255,15 @@ fn capping_coverage_at_four_costs_optimal_tours_nothing() {
         if free.status == Status::Optimal && capped.status == Status::Optimal {
             assert_eq!(capped.value, free.value, "{family} n={n} seed={seed}");
             compared += 1;
+        } else {
+            // Counted: an unproven pair decides nothing, and at most one may be unproven.
+            eprintln!("{family} n={n} seed={seed}: not both proven within 60 s");
         }
     }
-    assert!(compared >= 4, "only {compared} pairs solved to optimality");
+    assert!(
+        compared >= 5,
+        "only {compared} of 6 pairs solved to optimality"
+    );
 }
 
 /// A cap of 1: the 2x2 square's 4-cycle visits each pixel once (optimal, 4 turns); a row of 3
