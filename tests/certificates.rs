@@ -7,13 +7,16 @@
 //! counted and asserted rare. `examples/certify.rs` runs the same checks on thousands of
 //! regions and hill-climbs for counterexamples.
 
+#[path = "common/brute.rs"]
+mod brute;
 mod certify;
+use brute::{brute_cc_turns, cheapest_walks};
 
 use certify::{Tally, check_algorithms, exact_options, optima, table};
 use mowmill::exact::{self, Status};
 use mowmill::generate::{Family, GenParams, Style, generate};
-use mowmill::region::{Dir, Region, Symmetry};
-use std::collections::{BTreeMap, BinaryHeap, HashMap};
+use mowmill::region::{Region, Symmetry};
+use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
 /// Seconds per exact solve; a solve that does not finish is counted as unproven.
@@ -304,73 +307,6 @@ fn registered_guarantees_hold_and_nothing_beats_the_optimum() {
 // ---------------------------------------------------------------------------------------------
 // Exact against brute force and symmetries
 // ---------------------------------------------------------------------------------------------
-
-/// The cheapest closed walk covering exactly each pixel set (bit mask), for `w_len` per move
-/// plus `w_turn` per quarter turn: Dijkstra over (pixel, heading, first heading, visited) from
-/// the set's lowest pixel. One-pixel walks cost 4 turns. (The oracle of tests/exact.rs.)
-fn cheapest_walks(r: &Region, w_len: u64, w_turn: u64) -> Vec<u64> {
-    let n = r.len();
-    assert!(n <= 8);
-    let mut best = vec![u64::MAX; 1 << n];
-    for v in 0..n {
-        best[1 << v] = 4 * w_turn;
-    }
-    for s in 0..n {
-        let idx = |v: usize, h: usize, h0: usize, m: usize| ((m * n + v) * 4 + h) * 4 + h0;
-        let mut dist: HashMap<usize, u64> = HashMap::new();
-        let mut heap = BinaryHeap::new();
-        for d in Dir::ALL {
-            if let Some(w) = r.neighbor(s, d).filter(|&w| w > s) {
-                let m = (1 << s) | (1 << w);
-                dist.insert(idx(w, d.index(), d.index(), m), w_len);
-                heap.push(std::cmp::Reverse((w_len, w, d.index(), d.index(), m)));
-            }
-        }
-        while let Some(std::cmp::Reverse((c, v, h, h0, m))) = heap.pop() {
-            if dist.get(&idx(v, h, h0, m)).is_some_and(|&d| d < c) {
-                continue;
-            }
-            if v == s {
-                let close = c + w_turn * u64::from(Dir::from_index(h).turn_to(Dir::from_index(h0)));
-                best[m] = best[m].min(close);
-            }
-            for d in Dir::ALL {
-                let Some(w) = r.neighbor(v, d).filter(|&w| w >= s) else {
-                    continue;
-                };
-                let nc = c + w_len + w_turn * u64::from(Dir::from_index(h).turn_to(d));
-                let k = idx(w, d.index(), h0, m | (1 << w));
-                if dist.get(&k).is_none_or(|&old| nc < old) {
-                    dist.insert(k, nc);
-                    heap.push(std::cmp::Reverse((nc, w, d.index(), h0, m | (1 << w))));
-                }
-            }
-        }
-    }
-    best
-}
-
-fn brute_cc_turns(r: &Region) -> u64 {
-    let best = cheapest_walks(r, 0, 1);
-    let full = (1usize << r.len()) - 1;
-    let mut f = vec![u64::MAX; full + 1];
-    f[0] = 0;
-    for m in 1..=full {
-        let low = m & m.wrapping_neg();
-        // Walks may overlap: any set S holding the lowest pixel of m.
-        let mut s = full;
-        loop {
-            if s & low != 0 && best[s] != u64::MAX && f[m & !s] != u64::MAX {
-                f[m] = f[m].min(best[s] + f[m & !s]);
-            }
-            if s == 0 {
-                break;
-            }
-            s = (s - 1) & full;
-        }
-    }
-    f[full]
-}
 
 fn proven(r: &Region, o: exact::Objective) -> Option<u64> {
     let res = exact::solve(r, o, &exact_options(LIMIT));
