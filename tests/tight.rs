@@ -265,3 +265,47 @@ fn tight_and_claims_commands_write_their_tables_and_gate_on_contradictions() {
     assert!(line("Corollary 4").contains("not implemented"), "{table}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A violated claim's instances are saved with the algorithm's tour, a figure and a note.
+#[test]
+fn claims_save_the_findings_of_a_violation() {
+    let dir = std::env::temp_dir().join(format!("mowmill-findings-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let from = dir.join("run");
+    std::fs::create_dir_all(from.join("instances")).unwrap();
+    let mut rows =
+        mowmill::harness::rows::read_rows(std::path::Path::new("results/default/results.csv"))
+            .unwrap();
+    let r = rows
+        .iter_mut()
+        .find(|r| r.algorithm == "milling25" && r.opt.is_some())
+        .expect("a milling25 row with a proven optimum");
+    r.value = Some(3 * r.opt.unwrap());
+    let instance = r.instance.clone();
+    let grid = format!("{instance}.grid");
+    std::fs::copy(
+        std::path::Path::new("results/default/instances").join(&grid),
+        from.join("instances").join(&grid),
+    )
+    .unwrap();
+    mowmill::harness::rows::write_sorted(&from.join("results.csv"), &mut rows).unwrap();
+    let out = dir.join("claims");
+    let o = mowmill(&[
+        "claims",
+        "--from",
+        from.to_str().unwrap(),
+        "--tight",
+        "none.csv",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let stem = format!("theorem-4-milling25-{instance}");
+    for ext in ["grid", "tour.json", "png", "md"] {
+        let p = out.join("findings").join(format!("{stem}.{ext}"));
+        assert!(p.exists(), "{} missing", p.display());
+    }
+    let note = std::fs::read_to_string(out.join("findings").join(format!("{stem}.md"))).unwrap();
+    assert!(note.contains("implementation: reading"), "{note}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
