@@ -1,0 +1,95 @@
+//! `mowmill exact`: an exact MILP optimum with a proven bound.
+
+use anyhow::Result;
+use clap::Args;
+use mowmill::exact;
+use mowmill::instance::Instance;
+use mowmill::topology;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Args)]
+pub struct ExactArgs {
+    /// Instance file (.grid or WKT).
+    pub file: PathBuf,
+    /// length, cc-turns, tour-turns, weighted or lawn-tsp.
+    #[arg(long)]
+    pub objective: String,
+    /// Weight C of turns for `weighted` (length + C * turns).
+    #[arg(long)]
+    pub turn_cost: Option<u32>,
+    /// Wall-clock limit in seconds; the answer is then labelled time_limit with its bound.
+    #[arg(long)]
+    pub time_limit: Option<f64>,
+    /// HiGHS threads for this solve.
+    #[arg(long, default_value_t = 1)]
+    pub threads: usize,
+    #[arg(long)]
+    pub json: bool,
+    /// Write the optimal (or best) walk(s) to this tour file.
+    #[arg(long)]
+    pub tour_out: Option<PathBuf>,
+    /// Show the solver's log.
+    #[arg(long)]
+    pub verbose: bool,
+    /// Turn objectives: visit every pixel at most this many times (the optimum under this
+    /// cap; Theorem 5.6 of the turn-cost paper says a cap of 4 costs no turns).
+    #[arg(long)]
+    pub max_coverage: Option<u32>,
+}
+
+pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
+    let objective =
+        exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
+    let inst = Instance::read(&a.file)?;
+    // A milling tour of a disconnected region does not exist: that is bad input for this
+    // objective (exit 2, like `solve`), not a solver failure.
+    if objective.is_tour() && objective != exact::Objective::LawnTsp {
+        let parts = topology::components(&inst.region).count;
+        if parts != 1 {
+            return Err(mowmill::Error::Invalid(format!(
+                "{}: the region has {parts} connected components; objective {} is a tour, \
+                 which needs one (cc-turns and lawn-tsp accept several)",
+                a.file.display(),
+                objective
+            ))
+            .into());
+        }
+    }
+    let opts = exact::ExactOptions {
+        time_limit: a.time_limit,
+        threads: a.threads,
+        verbose: a.verbose,
+        warm_start: None,
+        max_coverage: a.max_coverage,
+    };
+    let result = exact::solve(&inst.region, objective, &opts);
+    if let (Some(path), Some(cover)) = (&a.tour_out, &result.cover) {
+        cover.write(path)?;
+    }
+    if a.json {
+        println!("{}", serde_json::to_string_pretty(&result)?);
+    } else {
+        println!(
+            "{} {}: value {} lower bound {} ({}) in {:.2}s, {} rounds{}",
+            result.objective,
+            result.status,
+            result.value.map_or("-".to_string(), |v| v.to_string()),
+            result.lower_bound,
+            result.lb_source,
+            result.seconds,
+            result.rounds,
+            result
+                .message
+                .as_deref()
+                .map(|m| format!(" — {m}"))
+                .unwrap_or_default()
+        );
+    }
+    let ok = result.valid && !matches!(result.status, exact::Status::Error);
+    Ok(if ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

@@ -1,0 +1,140 @@
+//! `mowmill tight` and `mowmill claims`: the tight families and the claims table.
+
+use anyhow::Result;
+use clap::Args;
+use mowmill::error::Error;
+use mowmill::harness;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+#[derive(Args)]
+pub struct TightArgs {
+    /// Output directory: tight.csv, tight.md, claims.csv, claims.md, figures/.
+    #[arg(long, default_value = "results/tight")]
+    pub out: PathBuf,
+    /// Results directory for the claims table (skipped with a note if it has no results.csv).
+    #[arg(long, default_value = "results/default")]
+    pub from: PathBuf,
+    /// Small ranges (donut k = 2..4, band k = 1..6, thin43 s = 0..2) for a quick look.
+    #[arg(long)]
+    pub quick: bool,
+    /// Time limit of each exact solve, in seconds.
+    #[arg(long, default_value_t = 120.0)]
+    pub time_limit: f64,
+    /// Skip the figures.
+    #[arg(long)]
+    pub no_figures: bool,
+}
+
+pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
+    use mowmill::tight;
+    let mut opts = tight::TightOptions {
+        time_limit: a.time_limit,
+        ..tight::TightOptions::default()
+    };
+    if a.quick {
+        opts.donut_k = (2..=4).collect();
+        opts.band_k = (1..=6).collect();
+        opts.thin43_s = (0..=2).collect();
+    }
+    std::fs::create_dir_all(&a.out).map_err(|e| Error::io(&a.out, e))?;
+    let started = std::time::Instant::now();
+    let run = tight::run(&opts)?;
+    let csv = a.out.join("tight.csv");
+    tight::write_csv(&run, &csv)?;
+    let md = tight::markdown(&run);
+    let md_path = a.out.join("tight.md");
+    std::fs::write(&md_path, &md).map_err(|e| Error::io(&md_path, e))?;
+    println!("{md}");
+    if !a.no_figures {
+        tight::figures::draw_all(&run, &a.out)?;
+    }
+    let tight_rows: Vec<tight::TightRow> = run.rows().cloned().collect();
+    let results = a.from.join("results.csv");
+    if results.exists() {
+        let rows = harness::rows::read_rows(&results)?;
+        let table = tight::claims::table(&rows, &tight_rows);
+        write_claims(&table, &a.from, &a.out)?;
+    } else {
+        eprintln!(
+            "no {}: the claims table is skipped (run `mowmill bench --out {}` first)",
+            results.display(),
+            a.from.display()
+        );
+    }
+    let bad = run.contradictions();
+    eprintln!(
+        "tight: {} rows in {:.1} s; wrote {} and {}",
+        run.rows().count(),
+        started.elapsed().as_secs_f64(),
+        csv.display(),
+        md_path.display()
+    );
+    for r in &bad {
+        eprintln!(
+            "CONTRADICTED: {} {} {}: claimed {}, measured {:?} ({})",
+            r.family, r.member, r.quantity, r.claim, r.measured, r.how
+        );
+    }
+    Ok(if bad.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
+
+/// Writes claims.csv and claims.md into `out`, prints the table; returns the contradictions.
+pub fn write_claims(
+    table: &[mowmill::tight::claims::ClaimRow],
+    from: &Path,
+    out: &Path,
+) -> Result<usize> {
+    use mowmill::tight::claims;
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    claims::write_csv(table, &out.join("claims.csv"))?;
+    let md = claims::markdown(table, &from.display().to_string());
+    let path = out.join("claims.md");
+    std::fs::write(&path, &md).map_err(|e| Error::io(&path, e))?;
+    println!("{md}");
+    Ok(table.iter().filter(|c| c.verdict == "violated").count())
+}
+
+/// Exits 1 when any claim is violated (the table says whether by the paper's algorithm or by
+/// our reading of it).
+pub fn claims_command(
+    from: &Path,
+    tight: &Path,
+    out: Option<&Path>,
+    findings: Option<&Path>,
+) -> Result<ExitCode> {
+    use mowmill::tight::claims;
+    let rows = harness::rows::read_rows(&from.join("results.csv"))?;
+    let tight_rows = if tight.exists() {
+        claims::read_tight(tight)?
+    } else {
+        eprintln!(
+            "no {}: the tight-family column stays empty",
+            tight.display()
+        );
+        Vec::new()
+    };
+    let table = claims::table(&rows, &tight_rows);
+    let bad = match out {
+        Some(out) => write_claims(&table, from, out)?,
+        None => {
+            println!("{}", claims::markdown(&table, &from.display().to_string()));
+            table.iter().filter(|c| c.verdict == "violated").count()
+        }
+    };
+    if let Some(dir) = findings {
+        let files = claims::save_findings(&table, from, dir)?;
+        if !files.is_empty() {
+            eprintln!("saved {} finding file(s) in {}", files.len(), dir.display());
+        }
+    }
+    Ok(if bad == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}
