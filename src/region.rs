@@ -181,6 +181,10 @@ const NONE: u32 = u32::MAX;
 /// The largest bounding-box area a region may span (the dense index holds one `u32` per cell).
 pub const MAX_BBOX_CELLS: usize = 1 << 30;
 
+/// The most pixels a region may have; larger inputs are refused with an error (exit 2) before
+/// anything proportional to them is allocated.
+pub const MAX_PIXELS: usize = 20_000_000;
+
 /// A finite set of unit pixels and its grid graph (4-neighbour adjacency).
 ///
 /// Pixels are numbered `0..len()` in row-major order from the bottom row (y ascending, then
