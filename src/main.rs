@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 use mowmill::algorithms::{self};
 use mowmill::checker::{self, Mode};
 use mowmill::draw::{self, DrawOptions};
+use mowmill::error::Error;
 use mowmill::harness::{self};
 use mowmill::instance::Instance;
 use mowmill::topology;
@@ -137,10 +138,27 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("mowmill: error: {e:#}");
-            ExitCode::from(2)
+            eprintln!("mowmill: error: {}", message(&e));
+            // Bad input 2, solver failure 3, invalid output 1 (see `Error::exit_code`).
+            ExitCode::from(e.downcast_ref::<Error>().map_or(2, Error::exit_code))
         }
     }
+}
+
+/// The error and its causes, each said once: a cause whose text the message already contains
+/// (an I/O error inside "file: error") is not repeated.
+fn message(e: &anyhow::Error) -> String {
+    let mut out = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if !out.contains(&text) {
+            if !out.is_empty() {
+                out.push_str(": ");
+            }
+            out.push_str(&text);
+        }
+    }
+    out
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {

@@ -162,7 +162,7 @@ fn json_has_the_contract_keys() {
         assert!(v.get(k).is_some(), "key {k}");
     }
     assert_eq!(v["status"], "optimal");
-    assert_eq!(v["objective"], "tour-turns");
+    assert_eq!(v["objective"], "turns");
     assert!(v.get("cover").is_none());
 }
 

@@ -730,7 +730,7 @@ fn output_walk(p: &Points, tour: &[usize]) -> Walk {
 
 /// A lower bound on the optimal lawn tour from the area swept (covered area ≤ L·w + a), in
 /// the reported units (exact L1 units, or milli-units for Euclidean motion), rounded down.
-fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
+pub fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
     let area = region.len() as f64;
     let (w, a, scale) = match cutter {
         Cutter::Square => (1.0, 1.0, 1.0),

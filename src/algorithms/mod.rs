@@ -79,6 +79,34 @@ impl Objective {
     }
 }
 
+impl std::str::FromStr for Objective {
+    type Err = String;
+
+    /// Parses an objective name or one of its [aliases](canonical_objective).
+    fn from_str(s: &str) -> std::result::Result<Objective, String> {
+        let name = canonical_objective(s);
+        Objective::ALL
+            .into_iter()
+            .find(|o| o.name() == name)
+            .ok_or_else(|| {
+                format!(
+                    "unknown objective {s:?}: expected one of {}",
+                    Objective::ALL.map(|o| o.name()).join(", ")
+                )
+            })
+    }
+}
+
+/// The one spelling of an objective name in the CLI, JSON, CSV and configs. Old spellings
+/// stay accepted: `tour-turns` (the exact solver's name for `turns` before the names were
+/// unified). Other names come back unchanged.
+pub fn canonical_objective(name: &str) -> &str {
+    match name {
+        "tour-turns" => "turns",
+        other => other,
+    }
+}
+
 impl fmt::Display for Objective {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -306,6 +334,60 @@ pub enum Cutter {
     SquareFree,
     /// Unit disk (hexagonal lattice).
     Disk,
+}
+
+impl Merge {
+    pub const NAMES: [&'static str; 2] = ["naive", "smart"];
+}
+
+impl fmt::Display for Merge {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Merge::Naive => "naive",
+            Merge::Smart => "smart",
+        })
+    }
+}
+
+impl std::str::FromStr for Merge {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Merge, String> {
+        match s {
+            "naive" => Ok(Merge::Naive),
+            "smart" => Ok(Merge::Smart),
+            _ => Err(format!("unknown merge {s:?}: expected naive or smart")),
+        }
+    }
+}
+
+impl Cutter {
+    pub const NAMES: [&'static str; 3] = ["square", "square-free", "disk"];
+}
+
+impl fmt::Display for Cutter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Cutter::Square => "square",
+            Cutter::SquareFree => "square-free",
+            Cutter::Disk => "disk",
+        })
+    }
+}
+
+impl std::str::FromStr for Cutter {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Cutter, String> {
+        match s {
+            "square" => Ok(Cutter::Square),
+            "square-free" => Ok(Cutter::SquareFree),
+            "disk" => Ok(Cutter::Disk),
+            _ => Err(format!(
+                "unknown cutter {s:?}: expected square, square-free or disk"
+            )),
+        }
+    }
 }
 
 /// Options every algorithm receives; each uses the ones that concern it.

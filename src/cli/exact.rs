@@ -12,7 +12,7 @@ use std::process::ExitCode;
 pub struct ExactArgs {
     /// Instance file (.grid or WKT).
     pub file: PathBuf,
-    /// length, cc-turns, tour-turns, weighted or lawn-tsp.
+    /// length, cc-turns, turns (alias tour-turns), weighted or lawn-tsp.
     #[arg(long)]
     pub objective: String,
     /// Weight C of turns for `weighted` (length + C * turns).

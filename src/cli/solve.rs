@@ -1,10 +1,13 @@
-//! `mowmill solve`: one registered algorithm on one instance, through the checker.
+//! `mowmill solve`: one algorithm (registered, or an outside program with `--command`) on one
+//! instance, through the one evaluation pipeline: checked walk, bound, guarantee verdicts.
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use clap::Args;
-use mowmill::algorithms::{self, Cutter, Merge, Options};
-use mowmill::checker;
+use mowmill::algorithms::{self, Cutter, Merge, Objective, Options};
+use mowmill::evaluate::{self, Checked, Known, Reference, Subject};
+use mowmill::exact;
 use mowmill::instance::Instance;
+use mowmill::outside::{OutsideAlgorithm, OutsideSpec};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -13,159 +16,283 @@ pub struct SolveArgs {
     /// Instance file (.grid or WKT).
     pub file: PathBuf,
     /// Algorithm name (see `mowmill algos`).
+    #[arg(long, required_unless_present = "command", conflicts_with = "command")]
+    pub algo: Option<String>,
+    /// Run an outside program instead, e.g. "python3 examples/outside_greedy.py {instance}
+    /// {tour_out}" (split on spaces; quotes group words). See README, "Outside algorithms".
     #[arg(long)]
-    pub algo: String,
+    pub command: Option<String>,
+    /// The objective to report: length, cc-turns, turns (alias tour-turns) or lawn-length.
+    /// Default: the algorithm's tour (its first objective for outside programs).
+    #[arg(long)]
+    pub objective: Option<String>,
+    /// Also solve exactly (MILP) to decide guarantees against the proven optimum.
+    #[arg(long)]
+    pub exact: bool,
+    /// Time limit in seconds of the exact solve (--exact) and of an outside program.
+    #[arg(long, default_value_t = 60.0)]
+    pub time_limit: f64,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
     /// Write the walk(s) of the printed output to this tour file.
     #[arg(long)]
     pub tour_out: Option<PathBuf>,
-    /// Print the unmerged cycle cover instead of the merged tour.
+    /// Print the unmerged cycle cover instead of the merged tour (same as --objective cc-turns).
     #[arg(long)]
     pub cycle_cover: bool,
-    /// Merging strategy for cycle covers: naive or smart.
-    #[arg(long, default_value = "smart", value_parser = parse_merge)]
-    pub merge: Merge,
-    /// Lawn-mowing cutter and motion: square, square-free or disk.
-    #[arg(long, default_value = "square", value_parser = parse_cutter)]
-    pub cutter: Cutter,
+    /// Merging strategy for cycle covers.
+    #[arg(long, default_value = "smart", value_parser = Merge::NAMES)]
+    pub merge: String,
+    /// Lawn-mowing cutter and motion.
+    #[arg(long, default_value = "square", value_parser = Cutter::NAMES)]
+    pub cutter: String,
     /// Rewrite tours to cover each pixel at most 4 times (Theorem 5.6 of the turn-cost paper).
     #[arg(long)]
-    coverage4: bool,
+    pub coverage4: bool,
 }
 
-pub fn parse_merge(s: &str) -> Result<Merge, String> {
-    match s {
-        "naive" => Ok(Merge::Naive),
-        "smart" => Ok(Merge::Smart),
-        _ => Err(format!("expected naive or smart, got {s:?}")),
+/// Splits a command line on spaces; single or double quotes group words.
+fn split_command(s: &str) -> Vec<String> {
+    let mut words = Vec::new();
+    let mut word = String::new();
+    let mut quote = None;
+    let mut started = false;
+    for c in s.chars() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), c) => word.push(c),
+            (None, '"' | '\'') => {
+                quote = Some(c);
+                started = true;
+            }
+            (None, c) if c.is_whitespace() => {
+                if started || !word.is_empty() {
+                    words.push(std::mem::take(&mut word));
+                }
+                started = false;
+            }
+            (None, c) => word.push(c),
+        }
     }
-}
-
-pub fn parse_cutter(s: &str) -> Result<Cutter, String> {
-    match s {
-        "square" => Ok(Cutter::Square),
-        "square-free" => Ok(Cutter::SquareFree),
-        "disk" => Ok(Cutter::Disk),
-        _ => Err(format!("expected square, square-free or disk, got {s:?}")),
+    if started || !word.is_empty() {
+        words.push(word);
     }
+    words
 }
 
 pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
-    let algo = algorithms::find(&a.algo).with_context(|| {
-        format!(
-            "unknown algorithm {:?}: expected one of {}",
-            a.algo,
-            algorithms::names().join(", ")
-        )
-    })?;
+    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
+        bail!(mowmill::Error::invalid(format!(
+            "--time-limit {}: expected a positive number of seconds",
+            a.time_limit
+        )));
+    }
+    let wanted: Option<Objective> = match (&a.objective, a.cycle_cover) {
+        (Some(o), _) => Some(o.parse().map_err(mowmill::Error::Invalid)?),
+        (None, true) => Some(Objective::CcTurns),
+        (None, false) => None,
+    };
     let inst = Instance::read(&a.file)?;
-    (algo.precondition)(&inst.region)
-        .with_context(|| format!("{} does not apply to {}", algo.name, a.file.display()))?;
-    let opts = Options {
-        merge: a.merge,
-        cutter: a.cutter,
+    let options = Options {
+        merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
+        cutter: a.cutter.parse().map_err(mowmill::Error::Invalid)?,
         coverage4: a.coverage4,
     };
-    let start = std::time::Instant::now();
-    let solution = (algo.run)(&inst.region, &opts)?;
-    let seconds = start.elapsed().as_secs_f64();
-    // The merged tour by default; the cycle cover with --cycle-cover.
-    let pick = |want_cc: bool| {
-        solution
-            .outputs
-            .iter()
-            .find(|o| (o.objective == algorithms::Objective::CcTurns) == want_cc)
-    };
-    let output = pick(a.cycle_cover)
-        .or_else(|| solution.outputs.first())
-        .context("the algorithm returned no output")?;
-    let mut report = checker::check(&inst.region, &output.cover, output.objective.mode());
-    // Lawn tours with free motion or the disk are lattice polygons: the lawn checker recounts
-    // their Euclidean length (milli-units, rounded up) and the cells they must visit.
-    if output.objective == algorithms::Objective::LawnLength
-        && mowmill::lawn_check::is_milli(opts.cutter)
-    {
-        let lawn = mowmill::lawn_check::check_lawn(&inst.region, &output.cover, opts.cutter);
-        report = checker::Report {
-            valid: lawn.valid,
-            length: lawn.length,
-            turns: 0,
-            cycles: lawn.cycles,
-            max_coverage: 0,
-            error: lawn.error,
-            coverage: Vec::new(),
-            violation: None,
-        };
-    }
-    let valid = report.valid && (!output.objective.is_tour() || output.cover.is_tour());
-    let value = match output.objective {
-        algorithms::Objective::Length | algorithms::Objective::LawnLength => report.length,
-        _ => report.turns,
-    };
-    let n = inst.region.len() as u64;
-    let guarantees: Vec<serde_json::Value> = algo
-        .guarantees
-        .iter()
-        .filter(|g| g.objective == output.objective && g.when.applies(&inst.region))
-        .map(|g| {
-            let measured = algorithms::Measured {
-                value,
-                length: report.length,
-                max_coverage: u64::from(report.max_coverage),
+    let outside;
+    let subject = match (&a.algo, &a.command) {
+        (Some(name), _) => {
+            let algo = algorithms::find(name).ok_or_else(|| {
+                mowmill::Error::invalid(format!(
+                    "unknown algorithm {name:?}: expected one of {}",
+                    algorithms::names().join(", ")
+                ))
+            })?;
+            // A precondition the user's instance misses is bad input (exit 2).
+            (algo.precondition)(&inst.region)
+                .with_context(|| format!("{} does not apply to {}", algo.name, a.file.display()))?;
+            Subject::Registered(algo)
+        }
+        (None, Some(command)) => {
+            let objective = wanted.unwrap_or(Objective::Length);
+            let spec = OutsideSpec {
+                name: "outside".into(),
+                command: split_command(command),
+                objectives: vec![objective.to_string()],
+                guarantee: None,
+                time_limit: a.time_limit,
             };
-            let holds = g.decide(&measured, n, None, None);
-            serde_json::json!({ "bound": g.to_string(), "factor": g.factor(), "holds": holds })
-        })
-        .collect();
+            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new("."))
+                .map_err(|e| mowmill::Error::invalid(format!("--command: {e}")))?;
+            Subject::Outside(&outside)
+        }
+        (None, None) => unreachable!("clap requires --algo or --command"),
+    };
+    // The merged tour by default; the cycle cover with --cycle-cover.
+    let objective = match wanted {
+        Some(o) if subject.objectives().contains(&o) => o,
+        Some(o) => bail!(mowmill::Error::invalid(format!(
+            "{} reports {}, not {o}",
+            subject.name(),
+            subject
+                .objectives()
+                .iter()
+                .map(|o| o.name())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ))),
+        None => subject
+            .objectives()
+            .iter()
+            .copied()
+            .find(|o| o.is_tour())
+            .unwrap_or(subject.objectives()[0]),
+    };
+    let mut reference = Reference::default();
+    let mut exact_json = serde_json::Value::Null;
+    if a.exact {
+        let Some(eo) = evaluate::exact_counterpart(objective) else {
+            bail!(mowmill::Error::invalid(format!(
+                "--exact: no exact solver computes the optimum of {objective} (lawn-tsp is a \
+                 reference tour through the centres, not the optimal lawn tour)"
+            )));
+        };
+        let exact_objective: exact::Objective =
+            eo.name().parse().map_err(mowmill::Error::Invalid)?;
+        let opts = exact::ExactOptions {
+            time_limit: Some(a.time_limit),
+            ..exact::ExactOptions::default()
+        };
+        let r = exact::solve(&inst.region, exact_objective, &opts);
+        let optimal = r.status == exact::Status::Optimal && r.valid;
+        reference.insert(
+            eo,
+            Known {
+                opt: if optimal { r.value } else { None },
+                lower_bound: Some(r.lower_bound),
+                status: r.status.to_string(),
+                source: if optimal {
+                    format!("opt:{eo}")
+                } else {
+                    format!("exact-bound:{eo}")
+                },
+            },
+        );
+        exact_json = serde_json::json!({
+            "objective": eo.name(),
+            "status": r.status.to_string(),
+            "value": r.value,
+            "lower_bound": r.lower_bound,
+            "seconds": r.seconds,
+        });
+    }
+    let eval = evaluate::evaluate(subject, &inst.region, &options, &[objective], &reference);
+    if let Some(e) = &eval.error {
+        // The algorithm (or outside program) failed: not the input's fault.
+        eprintln!("mowmill: error: {} failed: {e}", subject.name());
+        return Ok(ExitCode::from(3));
+    }
+    let Some(out) = eval.output(objective) else {
+        let why = eval
+            .missing
+            .first()
+            .map(|m| m.1.clone())
+            .unwrap_or_default();
+        eprintln!("mowmill: error: {why}");
+        return Ok(ExitCode::from(3));
+    };
     if let Some(path) = &a.tour_out {
-        output.cover.write(path)?;
+        out.cover.write(path)?;
     }
-    let mut json = serde_json::json!({
-        "algorithm": algo.name,
-        "objective": output.objective,
-        "length": report.length,
-        "turns": report.turns,
-        "cycles": report.cycles,
-        "max_coverage": report.max_coverage,
-        "valid": valid,
-        "error": report.error,
-        "guarantee": guarantees,
-        "n": n,
-        "seconds": seconds,
-    });
-    for (k, v) in &solution.certificates {
-        json[k] = serde_json::json!(v);
-    }
+    let n = inst.region.len() as u64;
     if a.json {
+        let mut json = serde_json::json!({
+            "algorithm": evaluate::variant_name(subject.name(), subject.objectives(), &options),
+            "objective": out.objective,
+            "value": out.value,
+            "length": out.length,
+            "turns": out.turns,
+            "cycles": out.cycles,
+            "max_coverage": out.max_coverage,
+            "valid": out.valid,
+            "error": out.error,
+            "guarantee": out.verdicts,
+            "within_guarantee": out.within_guarantee,
+            "lower_bound": out.lower_bound,
+            "lb_source": out.lb_source,
+            "opt": out.opt,
+            "opt_status": out.opt_status,
+            "n": n,
+            "seconds": eval.seconds,
+            "options": {
+                "merge": options.merge.to_string(),
+                "cutter": options.cutter.to_string(),
+                "coverage4": options.coverage4,
+            },
+        });
+        if a.exact {
+            json["exact"] = exact_json;
+        }
+        for (k, v) in &eval.certificates {
+            json[k] = serde_json::json!(v);
+        }
         println!("{}", serde_json::to_string_pretty(&json)?);
     } else {
-        println!(
-            "{}: {} {} | length {}, turns {}, {} cycle(s), max coverage {} | {}",
-            algo.name,
-            output.objective,
-            value,
-            report.length,
-            report.turns,
-            report.cycles,
-            report.max_coverage,
-            if valid {
-                "valid".to_string()
-            } else {
-                format!("INVALID: {}", report.error.unwrap_or_default())
-            }
-        );
-        for (k, v) in &solution.certificates {
-            println!("  {k}: {v}");
-        }
+        print_text(subject.name(), out, &eval.certificates);
     }
-    let violated = guarantees
-        .iter()
-        .any(|g| g["holds"] == serde_json::Value::Bool(false));
-    Ok(if valid && !violated {
+    let violated = out.within_guarantee == Some(false);
+    Ok(if out.valid && !violated {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
+}
+
+fn print_text(name: &str, out: &Checked, certificates: &std::collections::BTreeMap<String, i64>) {
+    println!(
+        "{name}: {} {} | length {}, turns {}, {} cycle(s), max coverage {} | {}",
+        out.objective,
+        out.value,
+        out.length,
+        out.turns,
+        out.cycles,
+        out.max_coverage,
+        if out.valid {
+            "valid".to_string()
+        } else {
+            format!("INVALID: {}", out.error.clone().unwrap_or_default())
+        }
+    );
+    match (out.opt, out.lower_bound) {
+        (Some(opt), _) => println!("  optimum {opt} (proven by the exact solver)"),
+        (None, Some(lb)) => println!("  lower bound {lb} ({})", out.lb_source),
+        _ => {}
+    }
+    if out.verdicts.is_empty() {
+        println!("  guarantee: none registered for {}", out.objective);
+    }
+    for v in &out.verdicts {
+        let verdict = match v.holds {
+            Some(true) => "holds",
+            Some(false) => "VIOLATED",
+            None => "undecided (optimum unknown, lower bound too weak; try --exact)",
+        };
+        println!("  guarantee {}: {verdict}", v.bound);
+    }
+    for (k, v) in certificates {
+        println!("  {k}: {v}");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn commands_split_on_spaces_and_quotes() {
+        assert_eq!(
+            split_command("python3 'my prog.py' {instance}  \"{tour_out}\" ''"),
+            ["python3", "my prog.py", "{instance}", "{tour_out}", ""]
+        );
+    }
 }

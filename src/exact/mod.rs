@@ -22,7 +22,7 @@
 //!   `Σ turn(ab) p` with turn 0 straight, 1 perpendicular, 2 U-turn; an isolated pixel is a
 //!   one-pixel walk of 4 turns. U-turns are only offered at the end of their strip (pushing a
 //!   U-turn along its strip keeps the turns). (Turn-cost paper, Sections 2 and 4.)
-//! * **`tour-turns`**: the passage model plus connectivity cuts on the graph of pixel sides
+//! * **`turns`** (also spelled `tour-turns`): the passage model plus connectivity cuts on the graph of pixel sides
 //!   (passages join sides of a pixel, edges join facing sides): `Σ_{edges across S} x_e +
 //!   Σ_{passages across S} p >= 2` for side sets `S` holding all sides of one pixel and none of
 //!   another. Plain edge connectivity would allow walks that only cross each other, which no
@@ -82,8 +82,7 @@ pub enum Objective {
 
 impl Objective {
     /// All objective names, as the CLI spells them.
-    pub const NAMES: [&'static str; 5] =
-        ["length", "cc-turns", "tour-turns", "weighted", "lawn-tsp"];
+    pub const NAMES: [&'static str; 5] = ["length", "cc-turns", "turns", "weighted", "lawn-tsp"];
 
     /// The objective named `name`; `turn_cost` is required by, and only accepted with,
     /// `weighted`.
@@ -139,7 +138,7 @@ impl fmt::Display for Objective {
         f.write_str(match self {
             Objective::Length => "length",
             Objective::CcTurns => "cc-turns",
-            Objective::TourTurns => "tour-turns",
+            Objective::TourTurns => "turns",
             Objective::Weighted { .. } => "weighted",
             Objective::LawnTsp => "lawn-tsp",
         })
@@ -154,7 +153,8 @@ impl FromStr for Objective {
         match s {
             "length" => Ok(Objective::Length),
             "cc-turns" => Ok(Objective::CcTurns),
-            "tour-turns" => Ok(Objective::TourTurns),
+            // `tour-turns` is the spelling before the objective names were unified.
+            "turns" | "tour-turns" => Ok(Objective::TourTurns),
             "weighted" => Ok(Objective::Weighted { turn_cost: 1 }),
             "lawn-tsp" => Ok(Objective::LawnTsp),
             _ => Err(format!(
@@ -328,7 +328,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
         )
     } else if opts.max_coverage.is_some() && !objective.counts_turns() {
         Answer::stopped(
-            Stop::Error("a coverage cap applies to cc-turns, tour-turns and weighted only".into()),
+            Stop::Error("a coverage cap applies to cc-turns, turns and weighted only".into()),
             Bound {
                 value: 0,
                 source: "none",

@@ -20,14 +20,16 @@
 //! family = "fixtures"  # the family column of their rows
 //!
 //! [[exact]]
-//! objective = "length" # length, cc-turns, tour-turns, weighted, lawn-tsp
+//! objective = "length" # length, cc-turns, turns, weighted, lawn-tsp
 //! max_n = 64           # only instances with at most this many pixels
 //! time_limit = 20      # seconds per solve
 //! turn_cost = 2        # weighted only: length + turn_cost · turns
 //! ```
 
+use crate::algorithms::{Cutter, Merge, Options};
 use crate::error::{Error, Result};
 use crate::generate::{Family, GenParams, Style};
+use crate::outside::{OutsideAlgorithm, OutsideSpec};
 use serde::{Deserialize, Deserializer, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -44,6 +46,31 @@ pub struct Config {
     pub files: Vec<FilesSpec>,
     #[serde(default)]
     pub exact: Vec<ExactSpec>,
+    /// Algorithm options; lists expand into every combination, and each algorithm runs once
+    /// per distinct combination of the options that concern it.
+    #[serde(default)]
+    pub options: OptionsSpec,
+    /// Outside algorithms (programs run per instance; see [`crate::outside`]).
+    #[serde(default)]
+    pub algorithm: Vec<OutsideSpec>,
+    /// The folder outside algorithms run in: the config file's folder (not part of the file).
+    #[serde(skip)]
+    pub dir: PathBuf,
+}
+
+/// The `[options]` table: `merge`, `cutter`, `coverage4`, each a value or a list.
+#[derive(Clone, Debug, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct OptionsSpec {
+    /// naive or smart (default smart).
+    #[serde(default)]
+    pub merge: OneOrMany<String>,
+    /// square, square-free or disk (default square).
+    #[serde(default)]
+    pub cutter: OneOrMany<String>,
+    /// Rewrite tours to cover each pixel at most 4 times (default false).
+    #[serde(default)]
+    pub coverage4: OneOrMany<bool>,
 }
 
 fn default_seed() -> u64 {
@@ -166,7 +193,44 @@ impl Config {
     /// Reads and validates a config file. Errors name the file and the offending key.
     pub fn read(path: &Path) -> Result<Config> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Config::parse(&text, &path.display().to_string())
+        let mut config = Config::parse(&text, &path.display().to_string())?;
+        config.dir = match path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        Ok(config)
+    }
+
+    /// Every combination of the `[options]` lists (one set of defaults when none is given).
+    pub fn option_sets(&self) -> Vec<Options> {
+        fn or_default<T: Clone>(v: &OneOrMany<T>, d: T) -> Vec<T> {
+            if v.0.is_empty() { vec![d] } else { v.0.clone() }
+        }
+        let merges = or_default(&self.options.merge, Merge::default().to_string());
+        let cutters = or_default(&self.options.cutter, Cutter::default().to_string());
+        let c4s = or_default(&self.options.coverage4, false);
+        let mut sets = Vec::new();
+        for m in &merges {
+            for c in &cutters {
+                for &coverage4 in &c4s {
+                    sets.push(Options {
+                        // Validated in `validate`.
+                        merge: m.parse().unwrap_or_default(),
+                        cutter: c.parse().unwrap_or_default(),
+                        coverage4,
+                    });
+                }
+            }
+        }
+        sets
+    }
+
+    /// The outside algorithms of the `[[algorithm]]` tables (validated in `validate`).
+    pub fn outside_algorithms(&self) -> Vec<OutsideAlgorithm> {
+        self.algorithm
+            .iter()
+            .filter_map(|spec| OutsideAlgorithm::from_spec(spec, &self.dir).ok())
+            .collect()
     }
 
     pub fn parse(text: &str, file: &str) -> Result<Config> {
@@ -205,10 +269,29 @@ impl Config {
             if f.count == 0 {
                 return Err(format!("{at}.count: expected at least 1"));
             }
-            check_algorithms(&f.algorithms, &at)?;
+            check_algorithms(&f.algorithms, &self.algorithm, &at)?;
         }
         for (i, f) in self.files.iter().enumerate() {
-            check_algorithms(&f.algorithms, &format!("files[{i}]"))?;
+            check_algorithms(&f.algorithms, &self.algorithm, &format!("files[{i}]"))?;
+        }
+        for m in &self.options.merge.0 {
+            m.parse::<Merge>()
+                .map_err(|e| format!("options.merge: {e}"))?;
+        }
+        for c in &self.options.cutter.0 {
+            c.parse::<Cutter>()
+                .map_err(|e| format!("options.cutter: {e}"))?;
+        }
+        let mut outside_names = std::collections::BTreeSet::new();
+        for (i, a) in self.algorithm.iter().enumerate() {
+            OutsideAlgorithm::from_spec(a, &self.dir)
+                .map_err(|e| format!("algorithm[{i}] ({}): {e}", a.name))?;
+            if !outside_names.insert(a.name.clone()) {
+                return Err(format!(
+                    "algorithm[{i}]: a second algorithm named {:?}",
+                    a.name
+                ));
+            }
         }
         for (i, e) in self.exact.iter().enumerate() {
             let at = format!("exact[{i}]");
@@ -305,9 +388,13 @@ impl Config {
     }
 }
 
-fn check_algorithms(algos: &Option<Vec<String>>, at: &str) -> std::result::Result<(), String> {
+fn check_algorithms(
+    algos: &Option<Vec<String>>,
+    outside: &[OutsideSpec],
+    at: &str,
+) -> std::result::Result<(), String> {
     for a in algos.iter().flatten() {
-        if crate::algorithms::find(a).is_none() {
+        if crate::algorithms::find(a).is_none() && !outside.iter().any(|o| &o.name == a) {
             return Err(format!(
                 "{at}.algorithms: unknown algorithm {a:?}; registered: {}",
                 crate::algorithms::names().join(", ")

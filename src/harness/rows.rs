@@ -43,6 +43,16 @@ pub struct Row {
     pub valid: Option<bool>,
     pub seconds: f64,
     pub error: String,
+    /// The merge strategy the row's algorithm ran with (empty where merging does not apply).
+    #[serde(default)]
+    pub merge: String,
+    /// The lawn cutter and motion (empty where it does not apply).
+    #[serde(default)]
+    pub cutter: String,
+    /// Whether tours were rewritten to cover each pixel at most 4 times (empty where it does
+    /// not apply).
+    #[serde(default)]
+    pub coverage4: Option<bool>,
 }
 
 impl Row {
@@ -175,6 +185,9 @@ pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
                 format!("expected a results.csv row: {e}"),
             )
         })?;
+        // Files written before the objective names were unified say `tour-turns`.
+        let mut row = row;
+        row.objective = crate::algorithms::canonical_objective(&row.objective).to_string();
         rows.push(row);
     }
     Ok(rows)

@@ -9,13 +9,14 @@
 
 use super::config::{Config, ExactSpec, InstanceSpec, Source};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
-use crate::algorithms::{self, Algorithm, Objective, Options};
+use crate::algorithms::{self, Objective};
 use crate::checker;
 use crate::error::{Error, Result};
+use crate::evaluate::{self, Evaluation, Known, Reference, Subject};
 use crate::exact::{self, ExactOptions};
 use crate::instance::Instance;
 use crate::region::Region;
-use crate::{bounds, topology};
+use crate::topology;
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -202,30 +203,11 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 
 /// The name of an exact objective in the `objective` column.
 pub fn exact_objective_name(e: &ExactSpec) -> String {
+    let name = crate::algorithms::canonical_objective(&e.objective);
     match e.turn_cost {
-        Some(c) => format!("{}-c{c}", e.objective),
-        None => e.objective.clone(),
+        Some(c) => format!("{name}-c{c}"),
+        None => name.to_string(),
     }
-}
-
-/// The exact objective whose optimum is the optimum of an algorithm's objective. Lawn mowing
-/// has none: the exact `lawn-tsp` through the pixel centres is the αTSP = 1 reference of
-/// Theorem 2, not the optimal lawn-mowing tour (which may be shorter), so dividing a guarantee
-/// against OPT by it would be unsound; its rows stand on their own.
-pub fn exact_for(objective: Objective) -> Option<&'static str> {
-    match objective {
-        Objective::Length => Some("length"),
-        Objective::CcTurns => Some("cc-turns"),
-        Objective::Turns => Some("tour-turns"),
-        Objective::LawnLength => None,
-    }
-}
-
-/// The area lower bound on a lawn-mowing tour with the unit square cutter and rectilinear
-/// motion (milling paper, Section 4): a tour of length L sweeps area at most L·w + a with
-/// sweep width w = 1 and cutter area a = 1, so L ≥ N − 1.
-fn lawn_area_lower_bound(region: &Region) -> u64 {
-    (region.len() as u64).saturating_sub(1)
 }
 
 fn run_on_region(
@@ -237,62 +219,81 @@ fn run_on_region(
 ) -> Vec<Row> {
     let mut rows = Vec::new();
     // Exact rows first (or their earlier results when resuming): the algorithms divide by them.
-    let mut exact_rows: HashMap<String, Row> = HashMap::new();
+    let mut reference = Reference::default();
     for e in &config.exact {
         if region.len() > e.max_n {
             continue;
         }
         let name = exact_objective_name(e);
         let key = (spec.name.clone(), EXACT.to_string(), name.clone());
-        if let Some(r) = done.get(&key) {
-            exact_rows.insert(name, r.clone());
-            continue;
+        let row = match done.get(&key) {
+            Some(r) => r.clone(),
+            None => {
+                let row = exact_row(region, &base, e, &name);
+                rows.push(row.clone());
+                row
+            }
+        };
+        if let Ok(objective) = name.parse::<Objective>() {
+            reference.insert(objective, known_from(&row, &name));
         }
-        let row = exact_row(region, &base, e, &name);
-        exact_rows.insert(name, row.clone());
-        rows.push(row);
     }
-    let algos: Vec<&'static Algorithm> = match &spec.algorithms {
-        Some(names) => names.iter().filter_map(|n| algorithms::find(n)).collect(),
+    let outside = config.outside_algorithms();
+    let mut subjects: Vec<Subject<'_>> = match &spec.algorithms {
+        Some(names) => names
+            .iter()
+            .filter_map(|n| algorithms::find(n).map(Subject::Registered))
+            .collect(),
         None => algorithms::REGISTRY
             .iter()
             .filter(|a| (a.precondition)(region).is_ok())
+            .map(Subject::Registered)
             .collect(),
     };
-    for algo in algos {
-        let pending: Vec<Objective> = algo
-            .objectives
+    subjects.extend(
+        outside
             .iter()
-            .copied()
             .filter(|o| {
-                !done.contains_key(&(
-                    spec.name.clone(),
-                    algo.name.to_string(),
-                    o.name().to_string(),
-                ))
+                spec.algorithms
+                    .as_ref()
+                    .is_none_or(|names| names.contains(&o.name))
             })
-            .collect();
-        if pending.is_empty() {
-            continue;
+            .map(Subject::Outside),
+    );
+    for subject in subjects {
+        let mut seen = std::collections::HashSet::new();
+        for options in config.option_sets() {
+            let name = evaluate::variant_name(subject.name(), subject.objectives(), &options);
+            if !seen.insert(name.clone()) {
+                continue;
+            }
+            let pending: Vec<Objective> = subject
+                .objectives()
+                .iter()
+                .copied()
+                .filter(|o| !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string())))
+                .collect();
+            if pending.is_empty() {
+                continue;
+            }
+            let eval = evaluate::evaluate(subject, region, &options, &pending, &reference);
+            rows.extend(algorithm_rows(region, &base, subject, &name, &eval));
         }
-        rows.extend(algorithm_rows(region, &base, algo, &pending, &exact_rows));
     }
     rows
 }
 
-/// Runs `f`, turning a panic into an error message.
-fn guarded<T>(f: impl FnOnce() -> Result<T>) -> std::result::Result<T, String> {
-    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
-        Ok(Ok(x)) => Ok(x),
-        Ok(Err(e)) => Err(e.to_string()),
-        Err(panic) => Err(format!(
-            "panic: {}",
-            panic
-                .downcast_ref::<String>()
-                .cloned()
-                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
-                .unwrap_or_else(|| "unknown".into())
-        )),
+/// What an exact row says about the optimum of its objective.
+fn known_from(row: &Row, name: &str) -> Known {
+    Known {
+        opt: row.opt,
+        lower_bound: row.lower_bound,
+        status: row.opt_status.clone(),
+        source: if row.opt.is_some() {
+            format!("opt:{name}")
+        } else {
+            format!("exact-bound:{name}")
+        },
     }
 }
 
@@ -303,7 +304,7 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
         ..base.clone()
     };
     let start = Instant::now();
-    let outcome = guarded(|| {
+    let outcome = evaluate::guarded(|| {
         let objective =
             exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
         let options = ExactOptions {
@@ -343,166 +344,63 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
     row
 }
 
-/// The best known lower bound for an algorithm objective, and its source.
-fn lower_bound(
-    region: &Region,
-    objective: Objective,
-    exact_rows: &HashMap<String, Row>,
-) -> (Option<u64>, String) {
-    let mut candidates: Vec<(u64, String)> = Vec::new();
-    match objective {
-        Objective::Length => {
-            let b = bounds::length_lower_bound(region);
-            candidates.push((b.value, b.source.to_string()));
-        }
-        Objective::Turns | Objective::CcTurns => {
-            let b = bounds::turn_lower_bound(region);
-            candidates.push((b.value, b.source.to_string()));
-        }
-        Objective::LawnLength => {
-            candidates.push((
-                lawn_area_lower_bound(region),
-                "area: N <= L*w + a".to_string(),
-            ));
-        }
-    }
-    let exact_names: &[&str] = match objective {
-        Objective::Length => &["length"],
-        Objective::CcTurns => &["cc-turns"],
-        // A tour is a cycle cover, so cycle-cover bounds bound tours too.
-        Objective::Turns => &["tour-turns", "cc-turns"],
-        Objective::LawnLength => &[],
-    };
-    for name in exact_names {
-        if let Some(lb) = exact_rows.get(*name).and_then(|r| r.lower_bound) {
-            let src = if exact_rows[*name].opt.is_some() {
-                format!("opt:{name}")
-            } else {
-                format!("exact-bound:{name}")
-            };
-            candidates.push((lb, src));
-        }
-    }
-    // The largest bound wins; ties keep the first (cheapest) source.
-    let best = candidates
-        .into_iter()
-        .fold(None::<(u64, String)>, |acc, c| match acc {
-            Some(a) if a.0 >= c.0 => Some(a),
-            _ => Some(c),
-        });
-    match best {
-        Some((b, s)) => (Some(b), s),
-        None => (None, String::new()),
-    }
-}
-
+/// One row per objective of an evaluation (an error row for each objective it did not
+/// produce).
 fn algorithm_rows(
     region: &Region,
     base: &Row,
-    algo: &Algorithm,
-    objectives: &[Objective],
-    exact_rows: &HashMap<String, Row>,
+    subject: Subject<'_>,
+    name: &str,
+    eval: &Evaluation,
 ) -> Vec<Row> {
-    let start = Instant::now();
-    let outcome = guarded(|| {
-        (algo.precondition)(region)?;
-        (algo.run)(region, &Options::default())
-    });
-    let seconds = start.elapsed().as_secs_f64();
+    let (merge, cutter, coverage4) = evaluate::relevant_options(subject.objectives());
     let row_for = |objective: Objective| Row {
-        algorithm: algo.name.into(),
+        algorithm: name.to_string(),
         objective: objective.name().into(),
-        guarantee: algo
-            .guarantees
+        guarantee: subject
+            .applicable(objective, region, &eval.options)
             .iter()
-            .filter(|g| g.objective == objective && g.when.applies(region))
             .map(|g| g.to_string())
             .collect::<Vec<_>>()
             .join("; "),
-        seconds,
+        seconds: eval.seconds,
+        merge: if merge {
+            eval.options.merge.to_string()
+        } else {
+            String::new()
+        },
+        cutter: if cutter {
+            eval.options.cutter.to_string()
+        } else {
+            String::new()
+        },
+        coverage4: coverage4.then_some(eval.options.coverage4),
         ..base.clone()
     };
-    let solution = match outcome {
-        Ok(s) => s,
-        Err(msg) => {
-            return objectives
-                .iter()
-                .map(|&o| Row {
-                    error: msg.clone(),
-                    ..row_for(o)
-                })
-                .collect();
-        }
-    };
-    objectives
+    let mut rows: Vec<Row> = eval
+        .outputs
         .iter()
-        .map(|&objective| {
-            let mut row = row_for(objective);
-            let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
-                row.error = format!("{} returned no {} output", algo.name, objective);
-                return row;
-            };
-            let report = checker::check(region, &output.cover, objective.mode());
-            let is_tour_ok = !objective.is_tour() || output.cover.is_tour();
-            row.valid = Some(report.valid && is_tour_ok);
-            if !report.valid {
-                row.error = report.error.clone().unwrap_or_default();
-            } else if !is_tour_ok {
-                row.error = format!("a tour objective got {} cycles", output.cover.cycles.len());
-            }
-            row.length = Some(report.length);
-            row.turns = Some(report.turns);
-            row.cycles = Some(report.cycles as u64);
-            row.max_coverage = Some(u64::from(report.max_coverage));
-            let value = match objective {
-                Objective::Length | Objective::LawnLength => report.length,
-                Objective::Turns | Objective::CcTurns => report.turns,
-            };
-            row.value = Some(value);
-            if let Some(ex) = exact_for(objective).and_then(|name| exact_rows.get(name)) {
-                row.opt = ex.opt;
-                row.opt_status = ex.opt_status.clone();
-            }
-            let (lb, src) = lower_bound(region, objective, exact_rows);
-            row.lower_bound = lb;
-            row.lb_source = src;
-            let measured = algorithms::Measured {
-                value,
-                length: report.length,
-                max_coverage: u64::from(report.max_coverage),
-            };
-            row.within_guarantee =
-                within_guarantee(algo, objective, &measured, region, row.opt, lb);
+        .map(|c| {
+            let mut row = row_for(c.objective);
+            row.valid = Some(c.valid);
+            row.error = c.error.clone().unwrap_or_default();
+            row.length = Some(c.length);
+            row.turns = Some(c.turns);
+            row.cycles = Some(c.cycles as u64);
+            row.max_coverage = Some(c.max_coverage);
+            row.value = Some(c.value);
+            row.opt = c.opt;
+            row.opt_status = c.opt_status.clone();
+            row.lower_bound = c.lower_bound;
+            row.lb_source = c.lb_source.clone();
+            row.within_guarantee = c.within_guarantee;
             row.compute_ratios();
             row
         })
-        .collect()
-}
-
-/// `Some(true)` when every guarantee of the objective is shown to hold, `Some(false)` when one
-/// is violated, `None` when it cannot be decided (a guarantee against OPT, OPT unknown, and the
-/// lower bound too weak to show it).
-pub fn within_guarantee(
-    algo: &Algorithm,
-    objective: Objective,
-    measured: &algorithms::Measured,
-    region: &Region,
-    opt: Option<u64>,
-    lb: Option<u64>,
-) -> Option<bool> {
-    let n = region.len() as u64;
-    let mut all = Some(true);
-    let applicable: Vec<_> = algo
-        .guarantees
-        .iter()
-        .filter(|g| g.objective == objective && g.when.applies(region))
         .collect();
-    for g in &applicable {
-        match g.decide(measured, n, opt, lb) {
-            Some(false) => return Some(false),
-            None => all = None,
-            Some(true) => {}
-        }
-    }
-    if applicable.is_empty() { None } else { all }
+    rows.extend(eval.missing.iter().map(|(objective, why)| Row {
+        error: why.clone(),
+        ..row_for(*objective)
+    }));
+    rows
 }

@@ -197,14 +197,17 @@ pub fn read(path: &Path) -> Result<Vec<StatRow>> {
     r.deserialize()
         .enumerate()
         .map(|(k, rec)| {
-            rec.map_err(|e| {
+            let mut s: StatRow = rec.map_err(|e| {
                 Error::parse(
                     &path.display().to_string(),
                     k + 2,
                     1,
                     format!("expected a stats.csv row: {e}"),
                 )
-            })
+            })?;
+            // Baselines written before the objective names were unified say `tour-turns`.
+            s.objective = crate::algorithms::canonical_objective(&s.objective).to_string();
+            Ok(s)
         })
         .collect()
 }

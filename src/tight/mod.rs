@@ -24,6 +24,7 @@ use crate::algorithms::merge::merge_cycles;
 use crate::algorithms::{self, Merge, Objective as AlgoObjective, Options};
 use crate::checker::{Mode, Report, check};
 use crate::error::{Error, Result};
+use crate::evaluate::{self, Reference, Subject};
 use crate::exact::{self, ExactOptions, Objective as ExactObjective, Status};
 use crate::generate::{Family, GenParams, generate, thin43_gadgets};
 use crate::region::{Pixel, Region};
@@ -84,7 +85,7 @@ pub const TIGHT_COLUMNS: [&str; 12] = [
 pub struct TightOptions {
     /// Donut widths k (each with L = 3k and L = 4k).
     pub donut_k: Vec<usize>,
-    /// The exact `tour-turns` solver runs on donuts with k up to this.
+    /// The exact `turns` solver runs on donuts with k up to this.
     pub donut_exact_k: usize,
     pub band_k: Vec<usize>,
     /// The exact `length` solver runs on bands with k up to this.
@@ -302,7 +303,8 @@ fn exact_solve(
     (value, r.lower_bound, r.cover)
 }
 
-/// Runs a registered algorithm and returns its checked output for `objective`.
+/// Runs a registered algorithm through the [evaluation pipeline](crate::evaluate) and returns
+/// its output for `objective` with the checker's recount, insisting that it is valid.
 fn run_algorithm(
     region: &Region,
     name: &str,
@@ -315,14 +317,21 @@ fn run_algorithm(
         merge,
         ..Options::default()
     };
-    let solution = (algo.run)(region, &opts)?;
-    let out = solution
-        .outputs
-        .into_iter()
-        .find(|o| o.objective == objective)
+    let eval = evaluate::evaluate(
+        Subject::Registered(algo),
+        region,
+        &opts,
+        &[objective],
+        &Reference::default(),
+    );
+    if let Some(e) = eval.error {
+        return Err(Error::solver(format!("{name}: {e}")));
+    }
+    let out = eval
+        .output(objective)
         .ok_or_else(|| Error::invalid(format!("{name} has no {objective} output")))?;
     let report = checked(region, &out.cover, name)?;
-    Ok((out.cover, report))
+    Ok((out.cover.clone(), report))
 }
 
 fn f(v: u64) -> Option<f64> {
@@ -454,7 +463,7 @@ pub fn donut(side: usize, k: usize, opts: &TightOptions) -> Result<Member> {
                     (4 * kk + 2) as f64,
                     f(v),
                     Standing::Established,
-                    "exact tour-turns (proven optimal)",
+                    "exact turns (proven optimal)",
                     FIG5,
                 );
                 if let Some(c) = cover {
@@ -475,7 +484,7 @@ pub fn donut(side: usize, k: usize, opts: &TightOptions) -> Result<Member> {
                     f(spiral.turns),
                     Standing::Established,
                     verdict,
-                    &format!("spiral; exact tour-turns hit the time limit with lower bound {lb}"),
+                    &format!("spiral; exact turns hit the time limit with lower bound {lb}"),
                     FIG5,
                 );
                 spiral.turns
@@ -490,7 +499,7 @@ pub fn donut(side: usize, k: usize, opts: &TightOptions) -> Result<Member> {
             Standing::Established,
             "upper bound met",
             &format!(
-                "spiral (upper bound); exact tour-turns not run (k > {})",
+                "spiral (upper bound); exact turns not run (k > {})",
                 opts.donut_exact_k
             ),
             FIG5,
@@ -817,9 +826,9 @@ pub fn thin43(s: usize, opts: &TightOptions) -> Result<Member> {
         opt_tour.map(|v| v as f64),
         Standing::Established,
         &if opt_tour.is_some() {
-            "exact tour-turns (proven optimal)".to_string()
+            "exact turns (proven optimal)".to_string()
         } else {
-            format!("exact tour-turns hit the time limit (lower bound {tour_lb})")
+            format!("exact turns hit the time limit (lower bound {tour_lb})")
         },
         FIG6,
     );

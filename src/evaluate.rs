@@ -1,0 +1,502 @@
+//! The one evaluation pipeline: an algorithm, its options and a region → the checked walks,
+//! their values, the best available lower bound and its source, the verdict of every guarantee,
+//! and the certificates. `solve`, `bench`, `tight` and every later command call [`evaluate`];
+//! nothing else runs an algorithm and judges its output.
+//!
+//! Steps, in order:
+//! 1. check the algorithm's preconditions and run it (a registered algorithm in-process, an
+//!    [outside](crate::outside) one as a child process); a panic becomes an error;
+//! 2. recount every output with the independent [`checker`] (the [lawn
+//!    checker](crate::lawn_check) for lawn tours in milli-units), insisting on one closed walk
+//!    for tour objectives;
+//! 3. take the best lower bound: the cheap bounds of [`bounds`] and whatever the caller knows
+//!    from exact solves ([`Reference`]);
+//! 4. decide every applicable guarantee: against OPT when it is known, against the lower bound
+//!    when that suffices (value ≤ f·LB ≤ f·OPT), else undecided.
+
+use crate::algorithms::{self, Algorithm, Cutter, Guarantee, Measured, Merge, Objective, Options};
+use crate::bounds;
+use crate::checker::{self, Report};
+use crate::error::{Error, Result};
+use crate::lawn_check;
+use crate::outside::OutsideAlgorithm;
+use crate::region::Region;
+use crate::tour::CycleCover;
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+/// What is evaluated: a registered algorithm or one declared in a config (`[[algorithm]]`).
+#[derive(Clone, Copy, Debug)]
+pub enum Subject<'a> {
+    Registered(&'static Algorithm),
+    Outside(&'a OutsideAlgorithm),
+}
+
+impl Subject<'_> {
+    pub fn name(&self) -> &str {
+        match self {
+            Subject::Registered(a) => a.name,
+            Subject::Outside(o) => &o.name,
+        }
+    }
+
+    pub fn objectives(&self) -> &[Objective] {
+        match self {
+            Subject::Registered(a) => a.objectives,
+            Subject::Outside(o) => &o.objectives,
+        }
+    }
+
+    pub fn guarantees(&self) -> &[Guarantee] {
+        match self {
+            Subject::Registered(a) => a.guarantees,
+            Subject::Outside(o) => &o.guarantees,
+        }
+    }
+
+    /// The guarantees that apply to `objective` on `region` with `options`. The lawn
+    /// guarantees are proven for the square cutter with rectilinear motion only, so other
+    /// cutters are measured without a guarantee.
+    pub fn applicable(
+        &self,
+        objective: Objective,
+        region: &Region,
+        options: &Options,
+    ) -> Vec<&Guarantee> {
+        self.guarantees()
+            .iter()
+            .filter(|g| g.objective == objective && g.when.applies(region))
+            .filter(|_| objective != Objective::LawnLength || options.cutter == Cutter::Square)
+            .collect()
+    }
+
+    /// Whether the subject accepts `region` (always true for outside algorithms: they say so
+    /// by failing).
+    pub fn accepts(&self, region: &Region) -> bool {
+        match self {
+            Subject::Registered(a) => (a.precondition)(region).is_ok(),
+            Subject::Outside(_) => true,
+        }
+    }
+}
+
+/// What the caller knows about the optimum of each algorithm objective, from exact solves.
+#[derive(Clone, Debug, Default)]
+pub struct Reference {
+    known: BTreeMap<Objective, Known>,
+}
+
+/// An exact solve's outcome for one objective.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Known {
+    /// The proven optimum.
+    pub opt: Option<u64>,
+    /// A proven lower bound on the optimum (equal to `opt` when optimal).
+    pub lower_bound: Option<u64>,
+    /// The exact solver's status (`optimal`, `time_limit`, ...), for the `opt_status` column.
+    pub status: String,
+    /// Where the bound comes from, e.g. `opt:cc-turns` or `exact-bound:turns`.
+    pub source: String,
+}
+
+impl Reference {
+    /// Records an exact solve of `objective`. A tour is a cycle cover, so a bound on the
+    /// cycle-cover optimum also bounds the tour optimum: callers record both.
+    pub fn insert(&mut self, objective: Objective, known: Known) {
+        self.known.insert(objective, known);
+    }
+
+    pub fn get(&self, objective: Objective) -> Option<&Known> {
+        self.known.get(&objective)
+    }
+
+    /// The proven optimum of `objective`, if an exact solve proved it.
+    pub fn opt(&self, objective: Objective) -> Option<u64> {
+        self.get(objective).and_then(|k| k.opt)
+    }
+
+    /// Exact lower bounds that bound `objective`: its own, and for `turns` also the cycle
+    /// cover's (every tour is a cycle cover).
+    fn exact_bounds(&self, objective: Objective) -> Vec<(u64, String)> {
+        let sources: &[Objective] = match objective {
+            Objective::Turns => &[Objective::Turns, Objective::CcTurns],
+            o => std::slice::from_ref(match o {
+                Objective::Length => &Objective::Length,
+                Objective::CcTurns => &Objective::CcTurns,
+                _ => &Objective::LawnLength,
+            }),
+        };
+        sources
+            .iter()
+            .filter_map(|o| self.get(*o))
+            .filter_map(|k| Some((k.lower_bound?, k.source.clone())))
+            .collect()
+    }
+}
+
+/// The cheap lower bound on the optimum of `objective` (no exact solve), with its source.
+/// Lawn tours: the area swept (milling paper, Section 4), in the units the lawn checker
+/// reports for the cutter.
+pub fn cheap_bound(region: &Region, objective: Objective, cutter: Cutter) -> (u64, String) {
+    match objective {
+        Objective::Length => {
+            let b = bounds::length_lower_bound(region);
+            (b.value, b.source.to_string())
+        }
+        Objective::Turns | Objective::CcTurns => {
+            let b = bounds::turn_lower_bound(region);
+            (b.value, b.source.to_string())
+        }
+        Objective::LawnLength => (
+            algorithms::lawn::area_lower_bound(region, cutter).max(0) as u64,
+            "area: N <= L*w + a".to_string(),
+        ),
+    }
+}
+
+/// The verdict on one guarantee.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Verdict {
+    /// The guarantee as text, e.g. `turns <= 3/2 OPT (Corollary 5.3 ...)`.
+    pub bound: String,
+    pub factor: f64,
+    /// `Some(true)` shown to hold, `Some(false)` violated, `None` undecided.
+    pub holds: Option<bool>,
+}
+
+/// One checked output of an evaluation.
+#[derive(Clone, Debug)]
+pub struct Checked {
+    pub objective: Objective,
+    pub cover: CycleCover,
+    /// The checker accepted it, and it is one closed walk where the objective is a tour.
+    pub valid: bool,
+    /// Why it is invalid.
+    pub error: Option<String>,
+    /// The objective's value (length or turns) as the checker recounted it.
+    pub value: u64,
+    pub length: u64,
+    pub turns: u64,
+    pub cycles: usize,
+    pub max_coverage: u64,
+    /// The proven optimum, when known.
+    pub opt: Option<u64>,
+    pub opt_status: String,
+    /// The best lower bound on the optimum and its source.
+    pub lower_bound: Option<u64>,
+    pub lb_source: String,
+    pub verdicts: Vec<Verdict>,
+    /// `Some(true)` when every applicable guarantee holds, `Some(false)` when one is
+    /// violated, `None` when one is undecided or none applies.
+    pub within_guarantee: Option<bool>,
+}
+
+/// Everything one run of one algorithm on one region gave.
+#[derive(Clone, Debug)]
+pub struct Evaluation {
+    pub algorithm: String,
+    pub options: Options,
+    pub seconds: f64,
+    /// Named integers the algorithm reports (strip cover size, matching weight, ...).
+    pub certificates: BTreeMap<String, i64>,
+    /// One entry per requested objective the algorithm produced.
+    pub outputs: Vec<Checked>,
+    /// Requested objectives the algorithm did not produce, with why.
+    pub missing: Vec<(Objective, String)>,
+    /// The run failed: every requested objective is missing for this reason.
+    pub error: Option<String>,
+}
+
+impl Evaluation {
+    /// The checked output for `objective`.
+    pub fn output(&self, objective: Objective) -> Option<&Checked> {
+        self.outputs.iter().find(|c| c.objective == objective)
+    }
+}
+
+/// Runs `subject` on `region` with `options`, checks every output of the `objectives` asked
+/// for (all the subject's objectives when empty) and judges its guarantees. Never fails:
+/// errors and panics are recorded in the evaluation.
+pub fn evaluate(
+    subject: Subject<'_>,
+    region: &Region,
+    options: &Options,
+    objectives: &[Objective],
+    reference: &Reference,
+) -> Evaluation {
+    let wanted: Vec<Objective> = if objectives.is_empty() {
+        subject.objectives().to_vec()
+    } else {
+        objectives.to_vec()
+    };
+    let start = Instant::now();
+    let outcome = guarded(|| match subject {
+        Subject::Registered(a) => {
+            (a.precondition)(region)?;
+            (a.run)(region, options)
+        }
+        Subject::Outside(o) => o.run(region, &wanted),
+    });
+    let seconds = start.elapsed().as_secs_f64();
+    let mut eval = Evaluation {
+        algorithm: subject.name().to_string(),
+        options: options.clone(),
+        seconds,
+        certificates: BTreeMap::new(),
+        outputs: Vec::new(),
+        missing: Vec::new(),
+        error: None,
+    };
+    let solution = match outcome {
+        Ok(s) => s,
+        Err(msg) => {
+            eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
+            eval.error = Some(msg);
+            return eval;
+        }
+    };
+    eval.certificates = solution.certificates;
+    for objective in wanted {
+        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
+            let why = format!("{} returned no {objective} output", subject.name());
+            eval.missing.push((objective, why));
+            continue;
+        };
+        let checked = judge(
+            subject,
+            region,
+            options,
+            objective,
+            output.cover.clone(),
+            reference,
+        );
+        eval.outputs.push(checked);
+    }
+    eval
+}
+
+/// Checks one cover of `objective` and judges the subject's guarantees on it.
+pub fn judge(
+    subject: Subject<'_>,
+    region: &Region,
+    options: &Options,
+    objective: Objective,
+    cover: CycleCover,
+    reference: &Reference,
+) -> Checked {
+    let report = recount(region, &cover, objective, options.cutter);
+    let one_walk = !objective.is_tour() || cover.is_tour();
+    let valid = report.valid && one_walk;
+    let error = if !report.valid {
+        Some(report.error.clone().unwrap_or_default())
+    } else if !one_walk {
+        Some(format!(
+            "a tour objective got {} cycles",
+            cover.cycles.len()
+        ))
+    } else {
+        None
+    };
+    let value = match objective {
+        Objective::Length | Objective::LawnLength => report.length,
+        Objective::Turns | Objective::CcTurns => report.turns,
+    };
+    let opt = exact_counterpart(objective).and_then(|o| reference.opt(o));
+    let opt_status = exact_counterpart(objective)
+        .and_then(|o| reference.get(o))
+        .map(|k| k.status.clone())
+        .unwrap_or_default();
+    let (lower_bound, lb_source) = best_bound(region, objective, options.cutter, reference);
+    let measured = Measured {
+        value,
+        length: report.length,
+        max_coverage: u64::from(report.max_coverage),
+    };
+    let n = region.len() as u64;
+    let applicable = subject.applicable(objective, region, options);
+    let verdicts: Vec<Verdict> = applicable
+        .iter()
+        .map(|g| Verdict {
+            bound: g.to_string(),
+            factor: g.factor(),
+            holds: g.decide(&measured, n, opt, lower_bound),
+        })
+        .collect();
+    let within_guarantee = if verdicts.is_empty() {
+        None
+    } else if verdicts.iter().any(|v| v.holds == Some(false)) {
+        Some(false)
+    } else if verdicts.iter().all(|v| v.holds == Some(true)) {
+        Some(true)
+    } else {
+        None
+    };
+    Checked {
+        objective,
+        cover,
+        valid,
+        error,
+        value,
+        length: report.length,
+        turns: report.turns,
+        cycles: report.cycles,
+        max_coverage: u64::from(report.max_coverage),
+        opt,
+        opt_status,
+        lower_bound,
+        lb_source,
+        verdicts,
+        within_guarantee,
+    }
+}
+
+/// The objective whose exact optimum is the optimum of an algorithm objective. Lawn mowing has
+/// none: the exact `lawn-tsp` through the pixel centres is the αTSP = 1 reference of Theorem 2,
+/// not the optimal lawn-mowing tour (which may be shorter), so dividing a guarantee against
+/// OPT by it would be unsound.
+pub fn exact_counterpart(objective: Objective) -> Option<Objective> {
+    match objective {
+        Objective::LawnLength => None,
+        o => Some(o),
+    }
+}
+
+/// The largest lower bound on the optimum of `objective`; ties keep the first (cheapest)
+/// source.
+fn best_bound(
+    region: &Region,
+    objective: Objective,
+    cutter: Cutter,
+    reference: &Reference,
+) -> (Option<u64>, String) {
+    let mut best = cheap_bound(region, objective, cutter);
+    if objective != Objective::LawnLength {
+        for (b, source) in reference.exact_bounds(objective) {
+            if b > best.0 {
+                best = (b, source);
+            }
+        }
+    }
+    (Some(best.0), best.1)
+}
+
+/// The checker's recount of `cover` for `objective`: the milling checker, or for lawn tours the
+/// lawn checker where the cutter's motion is Euclidean (lengths in milli-units).
+pub fn recount(
+    region: &Region,
+    cover: &CycleCover,
+    objective: Objective,
+    cutter: Cutter,
+) -> Report {
+    if objective == Objective::LawnLength && lawn_check::is_milli(cutter) {
+        let lawn = lawn_check::check_lawn(region, cover, cutter);
+        return Report {
+            valid: lawn.valid,
+            length: lawn.length,
+            turns: 0,
+            cycles: lawn.cycles,
+            max_coverage: 0,
+            error: lawn.error,
+            coverage: Vec::new(),
+            violation: None,
+        };
+    }
+    checker::check(region, cover, objective.mode())
+}
+
+/// Runs `f`, turning a panic into an error message.
+pub fn guarded<T>(f: impl FnOnce() -> Result<T>) -> std::result::Result<T, String> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+        Ok(Ok(x)) => Ok(x),
+        Ok(Err(e)) => Err(e.to_string()),
+        Err(panic) => Err(format!(
+            "panic: {}",
+            panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "unknown".into())
+        )),
+    }
+}
+
+/// The option names that change what `subject` computes for its objectives: `merge` and
+/// `coverage4` for algorithms that merge cycle covers into tours, `cutter` for lawn tours.
+pub fn relevant_options(objectives: &[Objective]) -> (bool, bool, bool) {
+    let merge = objectives.contains(&Objective::CcTurns) && objectives.contains(&Objective::Turns);
+    let coverage4 = objectives.contains(&Objective::Turns);
+    let cutter = objectives.contains(&Objective::LawnLength);
+    (merge, cutter, coverage4)
+}
+
+/// The name of an algorithm run with `options` in the `algorithm` column: the plain name with
+/// the default options, else the name with the non-default relevant options in brackets, e.g.
+/// `strips-matching[merge=naive,coverage4]`, so that statistics never mix variants.
+pub fn variant_name(name: &str, objectives: &[Objective], options: &Options) -> String {
+    let (merge, cutter, coverage4) = relevant_options(objectives);
+    let mut parts = Vec::new();
+    if merge && options.merge != Merge::default() {
+        parts.push(format!("merge={}", options.merge));
+    }
+    if cutter && options.cutter != Cutter::default() {
+        parts.push(format!("cutter={}", options.cutter));
+    }
+    if coverage4 && options.coverage4 {
+        parts.push("coverage4".to_string());
+    }
+    if parts.is_empty() {
+        name.to_string()
+    } else {
+        format!("{name}[{}]", parts.join(","))
+    }
+}
+
+/// Splits a variant name (see [`variant_name`]) into the algorithm name and its options.
+pub fn parse_variant(s: &str) -> Result<(&str, Options)> {
+    let Some((name, rest)) = s.split_once('[') else {
+        return Ok((s, Options::default()));
+    };
+    let inner = rest
+        .strip_suffix(']')
+        .ok_or_else(|| Error::invalid(format!("{s:?}: expected NAME[option,...]")))?;
+    let mut options = Options::default();
+    for part in inner.split(',') {
+        match part.split_once('=') {
+            Some(("merge", v)) => options.merge = v.parse().map_err(Error::invalid)?,
+            Some(("cutter", v)) => options.cutter = v.parse().map_err(Error::invalid)?,
+            None if part == "coverage4" => options.coverage4 = true,
+            _ => {
+                return Err(Error::invalid(format!(
+                    "{s:?}: unknown option {part:?} (expected merge=..., cutter=... or coverage4)"
+                )));
+            }
+        }
+    }
+    Ok((name, options))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn variant_names_round_trip() {
+        let objectives = [Objective::CcTurns, Objective::Turns];
+        let options = Options {
+            merge: Merge::Naive,
+            coverage4: true,
+            ..Options::default()
+        };
+        let name = variant_name("strips-matching", &objectives, &options);
+        assert_eq!(name, "strips-matching[merge=naive,coverage4]");
+        let (base, back) = parse_variant(&name).unwrap();
+        assert_eq!(base, "strips-matching");
+        assert_eq!((back.merge, back.coverage4), (Merge::Naive, true));
+        // Options that do not concern the algorithm leave its name alone.
+        assert_eq!(
+            variant_name("tsp65", &[Objective::Length], &options),
+            "tsp65"
+        );
+        assert!(parse_variant("tsp65[speed=11]").is_err());
+    }
+}
