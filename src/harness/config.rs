@@ -24,7 +24,25 @@
 //! max_n = 64           # only instances with at most this many pixels
 //! time_limit = 20      # seconds per solve
 //! turn_cost = 2        # weighted only: length + turn_cost · turns
+//!
+//! [options]            # algorithm options; lists expand into every combination
+//! merge = ["smart", "naive"]   # cycle cover → tour merging (default smart)
+//! cutter = "square"            # lawn cutter: square, square-free, disk (default square)
+//! coverage4 = [false, true]    # rewrite tours to cover each pixel at most 4 times
+//!
+//! [[algorithm]]        # an outside algorithm: any program (see crate::outside)
+//! name = "my-greedy"
+//! command = ["python3", "my_greedy.py", "{instance}", "{tour_out}"]
+//! objectives = ["length", "turns"]
+//! guarantee = { objective = "turns", factor = "7/2", against = "opt" }   # optional
+//! time_limit = 60
 //! ```
+//!
+//! Each algorithm runs once per distinct combination of the options that concern it (merge
+//! and coverage4 for cycle-cover algorithms, coverage4 for tours, cutter for lawn tours); rows
+//! record the options in the `merge`, `cutter` and `coverage4` columns, and a run with
+//! non-default options is named `NAME[merge=naive,coverage4]` in the `algorithm` column, so
+//! statistics never mix variants.
 
 use crate::algorithms::{Cutter, Merge, Options};
 use crate::error::{Error, Result};

@@ -1,0 +1,160 @@
+//! Outside algorithms through the whole harness: every failure mode of a program (crash,
+//! time limit, malformed tour, invalid walk) becomes a row, and a good walk is judged like a
+//! registered algorithm's (checker, exact optimum, claimed guarantee).
+
+use std::path::Path;
+use std::process::Command;
+
+fn mowmill(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_mowmill"))
+        .args(args)
+        .output()
+        .expect("run mowmill")
+}
+
+fn write(path: &Path, text: &str) {
+    std::fs::write(path, text).unwrap();
+}
+
+fn rows(dir: &Path) -> Vec<csv::StringRecord> {
+    let mut r = csv::Reader::from_path(dir.join("results.csv")).unwrap();
+    r.records().map(|x| x.unwrap()).collect()
+}
+
+fn column(dir: &Path, name: &str) -> usize {
+    let mut r = csv::Reader::from_path(dir.join("results.csv")).unwrap();
+    r.headers().unwrap().iter().position(|h| h == name).unwrap()
+}
+
+#[test]
+fn every_failure_of_an_outside_program_is_a_row() {
+    let dir = tempfile_dir("outside-failures");
+    // A 2 x 1 rectangle: the walk [(0,0), (1,0)] mills it (length 2, turns 4).
+    let good = r#"printf '{"cycles": [[[0, 0], [1, 0]]]}' > "$1""#;
+    let scripts = [
+        ("good", good),
+        ("crash", "echo 'something broke' >&2; exit 3"),
+        ("slow", "sleep 30"),
+        ("garbled", r#"printf '{"cycles": [[[0, 0], [1' > "$1""#),
+        ("wrong", r#"printf '{"cycles": [[[0, 0]]]}' > "$1""#),
+        ("silent", "exit 0"),
+    ];
+    let mut config = String::from("name = \"outside\"\nseed = 1\n");
+    for (name, body) in scripts {
+        write(&dir.join(format!("{name}.sh")), body);
+        config += &format!(
+            "[[algorithm]]\nname = \"{name}\"\ncommand = [\"sh\", \"{name}.sh\", \"{{tour_out}}\"]\n\
+             objectives = [\"length\"]\nguarantee = {{ objective = \"length\", factor = \"1\" }}\n\
+             time_limit = 1\n"
+        );
+    }
+    config += "[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 1\nalgorithms = [\"good\", \"crash\", \"slow\", \"garbled\", \"wrong\", \"silent\"]\n\
+               [[exact]]\nobjective = \"length\"\nmax_n = 10\ntime_limit = 20\n";
+    let cfg = dir.join("suite.toml");
+    write(&cfg, &config);
+    let out = dir.join("run");
+    let o = mowmill(&[
+        "bench",
+        "--config",
+        cfg.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--jobs",
+        "1",
+    ]);
+    assert!(
+        o.status.code().is_some(),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let (algo, valid, error, within, value, opt) = (
+        column(&out, "algorithm"),
+        column(&out, "valid"),
+        column(&out, "error"),
+        column(&out, "within_guarantee"),
+        column(&out, "value"),
+        column(&out, "opt"),
+    );
+    let rows = rows(&out);
+    let row = |name: &str| {
+        rows.iter()
+            .find(|r| &r[algo] == name)
+            .unwrap_or_else(|| panic!("no row for {name}"))
+    };
+    // The good walk is checked, divided by the exact optimum and its claim decided.
+    let g = row("good");
+    assert_eq!((&g[valid], &g[error], &g[value], &g[opt]), ("true", "", "2", "2"));
+    assert_eq!(&g[within], "true");
+    let expect_error = [
+        ("crash", "something broke"),
+        ("slow", "time limit"),
+        ("garbled", "malformed tour"),
+        ("silent", "wrote no tour file"),
+    ];
+    for (name, needle) in expect_error {
+        let r = row(name);
+        assert!(r[error].contains(needle), "{name}: {:?}", &r[error]);
+        assert_eq!(&r[valid], "", "{name}: no walk, no validity");
+    }
+    // A walk that misses a pixel is a row with valid = false, never a lost row.
+    let w = row("wrong");
+    assert_eq!(&w[valid], "false");
+    assert!(!w[error].is_empty());
+}
+
+#[test]
+fn a_bad_outside_declaration_is_refused_with_the_key() {
+    let dir = tempfile_dir("outside-bad");
+    let cfg = dir.join("bad.toml");
+    write(
+        &cfg,
+        "name = \"x\"\n[[algorithm]]\nname = \"a\"\ncommand = [\"sh\", \"{instance}\"]\n\
+         objectives = [\"length\"]\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n",
+    );
+    let o = mowmill(&["bench", "--config", cfg.to_str().unwrap(), "--out", "/nonexistent/x"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("algorithm[0]") && err.contains("{tour_out}"), "{err}");
+}
+
+#[test]
+fn solve_runs_the_python_example() {
+    if Command::new("python3").arg("--version").output().is_err() {
+        eprintln!("python3 is not installed: the Python example is not run (the sh tests are)");
+        return;
+    }
+    let dir = tempfile_dir("outside-solve");
+    let tour = dir.join("tour.json");
+    let o = mowmill(&[
+        "solve",
+        "instances/fixtures/dumbbell.grid",
+        "--command",
+        "python3 examples/outside/dfs_tour.py {instance} {tour_out}",
+        "--objective",
+        "length",
+        "--exact",
+        "--json",
+        "--tour-out",
+        tour.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["valid"], true);
+    assert_eq!(v["opt_status"], "optimal");
+    // The doubled DFS tree has length 2(N - 1).
+    assert_eq!(v["length"], 2 * (v["n"].as_u64().unwrap() - 1));
+    let check = mowmill(&[
+        "validate",
+        "instances/fixtures/dumbbell.grid",
+        "--tour",
+        tour.to_str().unwrap(),
+    ]);
+    assert_eq!(check.status.code(), Some(0));
+}
+
+fn tempfile_dir(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("mowmill-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
