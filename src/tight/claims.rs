@@ -68,7 +68,9 @@ fn claim<'r>(theorem: &'static Theorem, registry: &'r [Algorithm]) -> Claim<'r> 
 
 /// The `implementation` column: `paper` when every claiming algorithm is the paper's, else
 /// `reading: ` and the notes of our readings.
-fn implementation_text(implementation: &std::result::Result<Vec<Implementation>, String>) -> String {
+fn implementation_text(
+    implementation: &std::result::Result<Vec<Implementation>, String>,
+) -> String {
     match implementation {
         Err(note) => format!("none: {note}"),
         Ok(list) => {
@@ -752,4 +754,145 @@ pub fn save_findings(
         }
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algorithms::theorems::{self, Claim as AlgoClaim, Tight, is_declared};
+
+    #[test]
+    fn every_theorem_an_algorithm_references_is_declared() {
+        for a in REGISTRY {
+            for g in a.guarantees {
+                assert!(
+                    is_declared(g.theorem),
+                    "{}: guarantee {g} names {}, which is not in THEOREMS",
+                    a.name,
+                    g.theorem.cite()
+                );
+                assert!(
+                    g.source.contains(g.theorem.paper.title()),
+                    "{}: guarantee {g} cites another paper than its theorem {}",
+                    a.name,
+                    g.theorem.cite()
+                );
+                assert!(a.objectives.contains(&g.objective), "{}: {g}", a.name);
+            }
+            for c in a.claims {
+                assert!(
+                    is_declared(c.theorem),
+                    "{}: claims {}, which is not in THEOREMS",
+                    a.name,
+                    c.theorem.cite()
+                );
+                assert!(
+                    matches!(c.theorem.realized, Realized::ByAlgorithms),
+                    "{}: claims {}, which is declared as realized elsewhere or not at all",
+                    a.name,
+                    c.theorem.cite()
+                );
+                assert!(
+                    c.objectives.iter().all(|o| a.objectives.contains(o)),
+                    "{}: claims {} on an objective it does not report",
+                    a.name,
+                    c.theorem.cite()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_claims_row_comes_from_the_registry() {
+        let table = table(&[], &[]);
+        assert_eq!(table.len(), THEOREMS.len());
+        for (row, t) in table.iter().zip(THEOREMS) {
+            assert_eq!(
+                (
+                    row.paper.as_str(),
+                    row.claim.as_str(),
+                    row.statement.as_str()
+                ),
+                (t.paper.title(), t.id, t.statement)
+            );
+            assert_eq!(row.factor, t.factor);
+            // The algorithms column: exactly the registered algorithms claiming the theorem.
+            let claiming: Vec<&str> = REGISTRY
+                .iter()
+                .filter(|a| a.claims.iter().any(|c| std::ptr::eq(c.theorem, *t)))
+                .map(|a| a.name)
+                .collect();
+            assert_eq!(row.algorithms, claiming.join(" "), "{}", t.id);
+            // Without rows nothing is decided: implemented claims are untested.
+            let expected = match t.realized {
+                Realized::Not(_) => "not implemented",
+                _ => "untested",
+            };
+            assert_eq!(row.verdict, expected, "{}", t.id);
+            assert_eq!(row.decided, 0);
+        }
+    }
+
+    #[test]
+    fn a_theorem_no_algorithm_claims_is_not_implemented() {
+        static UNCLAIMED: Theorem = Theorem {
+            paper: Paper::Milling,
+            id: "Theorem 99",
+            statement: "a theorem that no registered algorithm claims",
+            factor: "OPT",
+            measure: Measure::Bound(theorems::Bound {
+                quantity: Quantity::Value,
+                num: 1,
+                den: 1,
+                add: 0,
+                against: Against::Opt,
+            }),
+            when: When::Always,
+            realized: Realized::ByAlgorithms,
+            tight: Some(Tight {
+                family: "band",
+                quantities: &["tsp65_length"],
+            }),
+        };
+        let [row] = &table_of(&[&UNCLAIMED], REGISTRY, &[], &[])[..] else {
+            panic!("one theorem, one row");
+        };
+        assert_eq!(row.verdict, "not implemented");
+        assert_eq!(
+            row.implementation,
+            "none: no registered algorithm claims it"
+        );
+        assert_eq!(row.algorithms, "");
+        // The same theorem claimed by an algorithm is implemented (untested without rows).
+        static CLAIMS: [AlgoClaim; 1] = [AlgoClaim::paper(&UNCLAIMED, &[Objective::Length])];
+        let claimed = [Algorithm {
+            claims: &CLAIMS,
+            ..crate::algorithms::tsp65::ALGORITHM
+        }];
+        let [row] = &table_of(&[&UNCLAIMED], &claimed, &[], &[])[..] else {
+            panic!("one theorem, one row");
+        };
+        assert_eq!(
+            (row.verdict.as_str(), row.implementation.as_str()),
+            ("untested", "paper")
+        );
+        assert_eq!(row.algorithms, crate::algorithms::tsp65::ALGORITHM.name);
+    }
+
+    #[test]
+    fn readings_are_reported_with_their_notes() {
+        let table = table(&[], &[]);
+        let row = |id: &str| table.iter().find(|r| r.claim == id).unwrap();
+        assert!(
+            row(theorems::MILLING_THM_4.id)
+                .implementation
+                .starts_with("reading: ")
+        );
+        assert_eq!(row(theorems::MILLING_THM_5.id).implementation, "paper");
+        assert!(
+            row(theorems::MILLING_COR_4.id)
+                .implementation
+                .starts_with("none: ")
+        );
+    }
 }
