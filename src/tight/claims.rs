@@ -4,6 +4,10 @@
 //! them decide it, the largest N decided and the families, the largest measured ratio, the
 //! tight family's value, and a verdict.
 //!
+//! Nothing here lists theorems or algorithms: the rows are the entries of
+//! [`THEOREMS`](crate::algorithms::theorems::THEOREMS) in order, each with the registered
+//! algorithms whose `claims` name it ([`REGISTRY`](crate::algorithms::REGISTRY)).
+//!
 //! # Verdicts
 //! - `holds`: decided on `decided` instances, none violated.
 //! - `tight reproduced`: holds, and the tight family meets every claimed value.
@@ -13,8 +17,9 @@
 //!   contradicted) or our reading of its proof (`reading`: a finding about our reading, never
 //!   printed as the paper being contradicted). The violating instances are listed in
 //!   `findings` and saved by `mowmill claims --findings DIR` with their tours and figures.
-//! - `not implemented`: no registered algorithm realizes the claim (e.g. Corollary 4 of the
-//!   milling paper, which is about polygons with non-integral vertices).
+//! - `not implemented`: nothing realizes the claim: the theorem is declared
+//!   [`Realized::Not`](crate::algorithms::theorems::Realized::Not), or no registered algorithm
+//!   claims it.
 //! - `untested`: implemented, but no row decides it.
 //!
 //! A claim against OPT is decided on a row when the exact optimum is known, or when the value is
