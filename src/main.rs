@@ -3,7 +3,6 @@
 
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
-use mowmill::algorithms::{self};
 use mowmill::checker::{self, Mode};
 use mowmill::draw::{self, DrawOptions};
 use mowmill::error::Error;
@@ -15,7 +14,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 mod cli;
-use cli::{bench::*, exact::*, generate::*, solve::*, tight::*};
+use cli::{algos::*, bench::*, exact::*, generate::*, solve::*, tight::*};
 
 #[derive(Parser)]
 #[command(
@@ -55,11 +54,8 @@ enum Command {
     },
     /// Run a registered approximation algorithm; its outputs go through the checker.
     Solve(SolveArgs),
-    /// List the registered algorithms with their objectives and guarantees.
-    Algos {
-        #[arg(long)]
-        json: bool,
-    },
+    /// List the registered algorithms with their objectives, guarantees and theorems.
+    Algos(AlgosArgs),
     /// Solve an instance exactly (MILP with HiGHS) with a proven lower bound.
     Exact(ExactArgs),
     /// Run a benchmark suite: instances x algorithms x exact objectives -> CSV, stats, plots.
@@ -244,30 +240,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 ExitCode::from(1)
             })
         }
-        Command::Algos { json } => {
-            let list: Vec<serde_json::Value> = algorithms::REGISTRY
-                .iter()
-                .map(|a| {
-                    serde_json::json!({
-                        "name": a.name,
-                        "summary": a.summary,
-                        "objectives": a.objectives,
-                        "guarantees": a.guarantees.iter().map(ToString::to_string).collect::<Vec<_>>(),
-                    })
-                })
-                .collect();
-            if json {
-                println!("{}", serde_json::to_string_pretty(&list)?);
-            } else {
-                for a in algorithms::REGISTRY {
-                    println!("{:<18} {}", a.name, a.summary);
-                    for g in a.guarantees {
-                        println!("{:<18}   guarantee: {g}", "");
-                    }
-                }
-            }
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Algos(a) => algos_command(a),
         Command::Draw {
             file,
             tour,

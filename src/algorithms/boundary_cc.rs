@@ -275,7 +275,14 @@ pub const ALGORITHM: Algorithm = Algorithm {
         against: Against::Opt,
         when: super::When::Always,
         source: "Theorem 4.1 of Optimal covering tours with turn costs",
+        theorem: &crate::algorithms::theorems::TURNS_THM_4_1,
     }],
+    claims: &[crate::algorithms::theorems::Claim::reading(
+        &crate::algorithms::theorems::TURNS_THM_4_1,
+        &[crate::algorithms::Objective::CcTurns],
+        "boundary links on pixels, collinear links sharing a pixel united (module docs of boundary_cc)",
+    )],
+    requires: "every pixel a boundary pixel (several components allowed)",
     precondition,
     run,
 };

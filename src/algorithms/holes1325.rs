@@ -198,7 +198,13 @@ pub const ALGORITHM: Algorithm = Algorithm {
         against: Against::N,
         when: super::When::Always,
         source: "Theorem 7 of Lawn mowing and milling",
+        theorem: &crate::algorithms::theorems::MILLING_THM_7,
     }],
+    claims: &[crate::algorithms::theorems::Claim::paper(
+        &crate::algorithms::theorems::MILLING_THM_7,
+        &[crate::algorithms::Objective::Length],
+    )],
+    requires: "a connected region without local cut vertices",
     precondition,
     run: |region, _| holes1325(region),
 };

@@ -853,7 +853,13 @@ pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     Ok(s)
 }
 
-const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guarantee {
+const fn rectilinear(
+    num: i64,
+    den: i64,
+    add: i64,
+    theorem: &'static super::theorems::Theorem,
+    source: &'static str,
+) -> Guarantee {
     Guarantee {
         objective: Objective::LawnLength,
         quantity: crate::algorithms::Quantity::Value,
@@ -863,6 +869,7 @@ const fn rectilinear(num: i64, den: i64, add: i64, source: &'static str) -> Guar
         against: Against::Opt,
         when: super::When::Always,
         source,
+        theorem,
     }
 }
 
@@ -875,8 +882,15 @@ pub const LAWN_MST: Algorithm = Algorithm {
         6,
         1,
         12,
+        &crate::algorithms::theorems::MILLING_THM_2,
         "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear",
     )],
+    claims: &[crate::algorithms::theorems::Claim::reading(
+        &crate::algorithms::theorems::MILLING_THM_2,
+        &[crate::algorithms::Objective::LawnLength],
+        "alpha_TSP = 2 (doubled MST; 2-opt starts from it), square cutter, rectilinear motion",
+    )],
+    requires: "some grass",
     precondition,
     run: lawn_mst,
 };
@@ -889,8 +903,14 @@ pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
         9,
         2,
         18,
+        &crate::algorithms::theorems::MILLING_THM_2_CHRISTOFIDES,
         "Theorem 2 of Lawn mowing and milling, square cutter, rectilinear",
     )],
+    claims: &[crate::algorithms::theorems::Claim::paper(
+        &crate::algorithms::theorems::MILLING_THM_2_CHRISTOFIDES,
+        &[crate::algorithms::Objective::LawnLength],
+    )],
+    requires: "some grass",
     precondition,
     run: lawn_christofides,
 };
@@ -903,8 +923,15 @@ pub const LAWN_TWO_OPT: Algorithm = Algorithm {
         6,
         1,
         12,
+        &crate::algorithms::theorems::MILLING_THM_2,
         "Theorem 2 of Lawn mowing and milling (its start), square, rectilinear",
     )],
+    claims: &[crate::algorithms::theorems::Claim::reading(
+        &crate::algorithms::theorems::MILLING_THM_2,
+        &[crate::algorithms::Objective::LawnLength],
+        "alpha_TSP = 2 (doubled MST; 2-opt starts from it), square cutter, rectilinear motion",
+    )],
+    requires: "some grass",
     precondition,
     run: lawn_two_opt,
 };
@@ -917,8 +944,14 @@ pub const LAWN_BOX: Algorithm = Algorithm {
         99,
         20,
         0,
+        &crate::algorithms::theorems::MILLING_THM_3,
         "Section 4 of Lawn mowing and milling (3 alpha + alpha 3/10, alpha = 3/2), square, rectilinear",
     )],
+    claims: &[crate::algorithms::theorems::Claim::paper(
+        &crate::algorithms::theorems::MILLING_THM_3,
+        &[crate::algorithms::Objective::LawnLength],
+    )],
+    requires: "some grass",
     precondition,
     run: lawn_box,
 };

@@ -455,7 +455,14 @@ pub const ALGORITHM: super::Algorithm = super::Algorithm {
         against: super::Against::N,
         when: super::When::Always,
         source: "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
+        theorem: &crate::algorithms::theorems::MILLING_THM_4,
     }],
+    claims: &[crate::algorithms::theorems::Claim::reading(
+        &crate::algorithms::theorems::MILLING_THM_4,
+        &[crate::algorithms::Objective::Length],
+        "contours and strips on pixels: L_dB <= OPT and L_str <= OPT fail on one-pixel-thick parts (module docs of milling25)",
+    )],
+    requires: "a connected region",
     precondition,
     run: |region, _| milling25(region),
 };

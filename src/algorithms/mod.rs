@@ -15,6 +15,7 @@ use crate::tour::CycleCover;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt;
+use theorems::{Claim, Paper, Theorem};
 
 pub mod contour;
 pub mod euler;
@@ -30,6 +31,7 @@ pub mod merge;
 pub mod star_cover;
 pub mod strips_double;
 pub mod strips_matching;
+pub mod theorems;
 pub mod thin;
 pub mod thin_euler;
 pub mod turn_distance;
@@ -184,13 +186,27 @@ pub struct Guarantee {
     pub add: i64,
     pub against: Against,
     pub when: When,
-    /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling".
+    /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling" (the text of the
+    /// results' `guarantee` column; it may add the detail of our proof on pixels).
     pub source: &'static str,
+    /// The theorem it comes from (the one [`source`](Self::source) cites).
+    #[serde(serialize_with = "cite")]
+    pub theorem: &'static Theorem,
+}
+
+fn cite<S: serde::Serializer>(t: &&'static Theorem, s: S) -> std::result::Result<S::Ok, S::Error> {
+    s.serialize_str(&t.cite())
 }
 
 impl Guarantee {
     /// `value ≤ num/den · OPT` on every instance the algorithm accepts.
-    pub const fn vs_opt(objective: Objective, num: i64, den: i64, source: &'static str) -> Self {
+    pub const fn vs_opt(
+        objective: Objective,
+        num: i64,
+        den: i64,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
         Guarantee {
             objective,
             quantity: Quantity::Value,
@@ -200,11 +216,17 @@ impl Guarantee {
             against: Against::Opt,
             when: When::Always,
             source,
+            theorem,
         }
     }
 
     /// Every pixel visited at most `max` times by the outputs of `objective`.
-    pub const fn max_coverage(objective: Objective, max: i64, source: &'static str) -> Self {
+    pub const fn max_coverage(
+        objective: Objective,
+        max: i64,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
         Guarantee {
             objective,
             quantity: Quantity::MaxCoverage,
@@ -214,12 +236,18 @@ impl Guarantee {
             against: Against::One,
             when: When::Always,
             source,
+            theorem,
         }
     }
 
     /// The walks of `objective` have length at most `factor · N` (hence at most `factor` times
     /// the optimal milling length, which is at least N for N ≥ 2).
-    pub const fn length_vs_n(objective: Objective, factor: i64, source: &'static str) -> Self {
+    pub const fn length_vs_n(
+        objective: Objective,
+        factor: i64,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
         Guarantee {
             objective,
             quantity: Quantity::Length,
@@ -229,6 +257,7 @@ impl Guarantee {
             against: Against::N,
             when: When::Always,
             source,
+            theorem,
         }
     }
 
@@ -423,11 +452,29 @@ pub struct Algorithm {
     pub summary: &'static str,
     /// The objectives it reports, in output order.
     pub objectives: &'static [Objective],
-    /// Its proven guarantees (possibly several objectives).
+    /// Its proven guarantees (possibly several objectives), each naming its theorem.
     pub guarantees: &'static [Guarantee],
+    /// The theorems of [`theorems::THEOREMS`] its outputs are measured against in the claims
+    /// table, and how faithfully it realizes each.
+    pub claims: &'static [Claim],
+    /// The preconditions [`precondition`](Self::precondition) checks, in a few words.
+    pub requires: &'static str,
     /// Checks the theorem's preconditions; the error says which one fails.
     pub precondition: fn(&Region) -> Result<()>,
     pub run: fn(&Region, &Options) -> Result<Solution>,
+}
+
+impl Algorithm {
+    /// The paper it comes from: that of its guarantees' and claims' theorems.
+    pub fn paper(&self) -> Paper {
+        self.guarantees
+            .iter()
+            .map(|g| g.theorem)
+            .chain(self.claims.iter().map(|c| c.theorem))
+            .map(|t| t.paper)
+            .next()
+            .expect("a registered algorithm has a guarantee or a claim")
+    }
 }
 
 impl fmt::Debug for Algorithm {
@@ -482,6 +529,7 @@ mod tests {
             against: Against::N,
             when: When::Always,
             source: "Theorem 5",
+            theorem: &theorems::MILLING_THM_5,
         };
         // N = 9: (54 - 4) / 5 = 10.
         assert!(g.holds(10, 9));

@@ -135,35 +135,71 @@ pub const ALGORITHM: Algorithm = Algorithm {
             Objective::CcTurns,
             10,
             1,
+            &crate::algorithms::theorems::TURNS_THM_5_1,
             "Theorem 5.1 / Corollary 5.2 of Optimal covering tours with turn costs",
         ),
         Guarantee::vs_opt(
             Objective::Turns,
             12,
             1,
+            &crate::algorithms::theorems::TURNS_COR_5_2,
             "Corollary 5.2 of Optimal covering tours with turn costs",
         ),
         Guarantee::max_coverage(
             Objective::CcTurns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_1,
             "Theorem 5.1 (coverage mu = 4) of Optimal covering tours with turn costs",
         ),
         Guarantee::length_vs_n(
             Objective::CcTurns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_1,
             "Theorem 5.1 (length delta = 4; N <= OPT length) of Optimal covering tours with turn costs",
         ),
         Guarantee::max_coverage(
             Objective::Turns,
             4,
+            &crate::algorithms::theorems::TURNS_COR_5_2_COVERAGE,
             "Corollary 5.2 (coverage) of Optimal covering tours with turn costs",
         ),
         Guarantee::length_vs_n(
             Objective::Turns,
             4,
+            &crate::algorithms::theorems::TURNS_COR_5_2_LENGTH,
             "Corollary 5.2 (length; N <= OPT length) of Optimal covering tours with turn costs",
         ),
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_4_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_4_1,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_1,
+            &[crate::algorithms::Objective::CcTurns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_5_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_5_2_COVERAGE,
+            &[
+                crate::algorithms::Objective::Turns,
+                crate::algorithms::Objective::CcTurns,
+            ],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_5_2_LENGTH,
+            &[crate::algorithms::Objective::Turns],
+        ),
+    ],
+    requires: "a connected region",
     precondition: crate::algorithms::merge::connected,
     run,
 };

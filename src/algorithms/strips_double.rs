@@ -94,35 +94,60 @@ pub const ALGORITHM: Algorithm = Algorithm {
             Objective::CcTurns,
             4,
             1,
+            &crate::algorithms::theorems::TURNS_THM_5_4,
             "Theorem 5.4 of Optimal covering tours with turn costs (4 turns per strip, Lemma 4.2)",
         ),
         Guarantee::vs_opt(
             Objective::Turns,
             6,
             1,
+            &crate::algorithms::theorems::TURNS_THM_5_4,
             "Theorem 5.4 of Optimal covering tours with turn costs",
         ),
         Guarantee::max_coverage(
             Objective::CcTurns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_4,
             "Theorem 5.4 (its cycle cover: two visits per strip) of Optimal covering tours with turn costs",
         ),
         Guarantee::length_vs_n(
             Objective::CcTurns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_4_LENGTH,
             "Theorem 5.4 (its cycle cover; N <= OPT length) of Optimal covering tours with turn costs",
         ),
         Guarantee::max_coverage(
             Objective::Turns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_4,
             "Theorem 5.4 (coverage, our merge) of Optimal covering tours with turn costs",
         ),
         Guarantee::length_vs_n(
             Objective::Turns,
             4,
+            &crate::algorithms::theorems::TURNS_THM_5_4_LENGTH,
             "Theorem 5.4 (length; N <= OPT length) of Optimal covering tours with turn costs",
         ),
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_4_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_4_1,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_4,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_4_LENGTH,
+            &[crate::algorithms::Objective::Turns],
+        ),
+    ],
+    requires: "a connected region",
     precondition: crate::algorithms::merge::connected,
     run,
 };

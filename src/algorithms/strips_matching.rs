@@ -167,6 +167,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Theorem 5.5 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_THM_5_5,
         },
         Guarantee {
             objective: Objective::Turns,
@@ -177,8 +178,28 @@ pub const ALGORITHM: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
         },
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_4_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_4_1,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_5,
+            &[crate::algorithms::Objective::CcTurns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
+            &[crate::algorithms::Objective::Turns],
+        ),
+    ],
+    requires: "a connected region",
     precondition: crate::algorithms::merge::connected,
     run,
 };

@@ -160,6 +160,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
         },
         Guarantee {
             objective: Objective::Turns,
@@ -170,8 +171,29 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
         },
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_4_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_4_1,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_COR_5_3,
+            &[crate::algorithms::Objective::CcTurns],
+            "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
+            &[crate::algorithms::Objective::Turns],
+        ),
+    ],
+    requires: "a connected thin region (no 2x2 block)",
     precondition,
     run: run_cc,
 };
@@ -191,6 +213,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
         },
         Guarantee {
             objective: Objective::Turns,
@@ -201,8 +224,29 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Theorem 5.9 of Optimal covering tours with turn costs",
+            theorem: &crate::algorithms::theorems::TURNS_THM_5_9,
         },
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_4_2,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_COR_4_1,
+            &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_COR_5_3,
+            &[crate::algorithms::Objective::CcTurns],
+            "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::TURNS_THM_5_9,
+            &[crate::algorithms::Objective::Turns],
+        ),
+    ],
+    requires: "a connected thin region (no 2x2 block)",
     precondition,
     run: run_merge,
 };

@@ -137,7 +137,13 @@ pub const ALGORITHM: Algorithm = Algorithm {
         against: Against::Opt,
         when: super::When::Always,
         source: "Theorem 5.8 of Optimal covering tours with turn costs",
+        theorem: &crate::algorithms::theorems::TURNS_THM_5_8,
     }],
+    claims: &[crate::algorithms::theorems::Claim::paper(
+        &crate::algorithms::theorems::TURNS_THM_5_8,
+        &[crate::algorithms::Objective::Turns],
+    )],
+    requires: "a connected thin region whose pixels all have even degree",
     precondition,
     run,
 };

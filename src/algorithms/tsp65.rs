@@ -744,6 +744,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             against: Against::Opt,
             when: super::When::Always,
             source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
+            theorem: &crate::algorithms::theorems::MILLING_COR_3,
         },
         Guarantee {
             objective: Objective::Length,
@@ -754,8 +755,20 @@ pub const ALGORITHM: Algorithm = Algorithm {
             against: Against::N,
             when: super::When::Biconnected,
             source: "Theorem 5 of Lawn mowing and milling",
+            theorem: &crate::algorithms::theorems::MILLING_THM_5,
         },
     ],
+    claims: &[
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::MILLING_THM_5,
+            &[crate::algorithms::Objective::Length],
+        ),
+        crate::algorithms::theorems::Claim::paper(
+            &crate::algorithms::theorems::MILLING_COR_3,
+            &[crate::algorithms::Objective::Length],
+        ),
+    ],
+    requires: "a connected region without holes",
     precondition,
     run: |region, _| tsp65(region),
 };

@@ -4,6 +4,10 @@
 //! them decide it, the largest N decided and the families, the largest measured ratio, the
 //! tight family's value, and a verdict.
 //!
+//! Nothing here lists theorems or algorithms: the rows are the entries of
+//! [`THEOREMS`](crate::algorithms::theorems::THEOREMS) in order, each with the registered
+//! algorithms whose `claims` name it ([`REGISTRY`](crate::algorithms::REGISTRY)).
+//!
 //! # Verdicts
 //! - `holds`: decided on `decided` instances, none violated.
 //! - `tight reproduced`: holds, and the tight family meets every claimed value.
@@ -13,8 +17,9 @@
 //!   contradicted) or our reading of its proof (`reading`: a finding about our reading, never
 //!   printed as the paper being contradicted). The violating instances are listed in
 //!   `findings` and saved by `mowmill claims --findings DIR` with their tours and figures.
-//! - `not implemented`: no registered algorithm realizes the claim (e.g. Corollary 4 of the
-//!   milling paper, which is about polygons with non-integral vertices).
+//! - `not implemented`: nothing realizes the claim: the theorem is declared
+//!   [`Realized::Not`](crate::algorithms::theorems::Realized::Not), or no registered algorithm
+//!   claims it.
 //! - `untested`: implemented, but no row decides it.
 //!
 //! A claim against OPT is decided on a row when the exact optimum is known, or when the value is
@@ -22,464 +27,73 @@
 //! undecided, never counted as holding.
 
 use super::{Standing, TightRow};
-use crate::algorithms::{Against, Quantity, When};
+use crate::algorithms::theorems::{Implementation, Measure, Paper, Realized, THEOREMS, Theorem};
+use crate::algorithms::{Against, Algorithm, Objective, Quantity, REGISTRY, When};
 use crate::error::{Error, Result};
 use crate::harness::rows::{EXACT, Row};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// A claimed upper bound `q ≤ (num · X + add) / den` on a quantity of a row.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Bound {
-    quantity: Quantity,
-    num: i64,
-    den: i64,
-    add: i64,
-    against: Against,
+/// One claim of the table: a declared theorem and the registered algorithms claiming it.
+struct Claim<'r> {
+    theorem: &'static Theorem,
+    /// The (algorithm, objective) pairs whose rows exercise it, in registry order.
+    rows: Vec<(&'r str, &'static str)>,
+    /// How faithfully it is realized; `Err(note)` when nothing realizes it.
+    implementation: std::result::Result<Vec<Implementation>, String>,
 }
 
-const fn bound(quantity: Quantity, num: i64, den: i64, add: i64, against: Against) -> Bound {
-    Bound {
-        quantity,
-        num,
-        den,
-        add,
-        against,
+/// The claim of `theorem` over `registry`: every algorithm whose claims name it.
+fn claim<'r>(theorem: &'static Theorem, registry: &'r [Algorithm]) -> Claim<'r> {
+    let mut rows = Vec::new();
+    let mut implementations = Vec::new();
+    for a in registry {
+        for c in a.claims.iter().filter(|c| std::ptr::eq(c.theorem, theorem)) {
+            rows.extend(c.objectives.iter().map(|o| (a.name, o.name())));
+            if !implementations.contains(&c.implementation) {
+                implementations.push(c.implementation);
+            }
+        }
+    }
+    let implementation = match theorem.realized {
+        Realized::Not(note) => Err(note.to_string()),
+        Realized::Elsewhere(i) => Ok(vec![i]),
+        Realized::ByAlgorithms if implementations.is_empty() => {
+            Err("no registered algorithm claims it".to_string())
+        }
+        Realized::ByAlgorithms => Ok(implementations),
+    };
+    Claim {
+        theorem,
+        rows,
+        implementation,
     }
 }
 
-impl Bound {
-    fn holds(&self, q: u64, x: u64) -> bool {
-        i128::from(self.den) * i128::from(q)
-            <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+/// The `implementation` column: `paper` when every claiming algorithm is the paper's, else
+/// `reading: ` and the notes of our readings.
+fn implementation_text(
+    implementation: &std::result::Result<Vec<Implementation>, String>,
+) -> String {
+    match implementation {
+        Err(note) => format!("none: {note}"),
+        Ok(list) => {
+            let notes: Vec<&str> = list
+                .iter()
+                .filter_map(|i| match i {
+                    Implementation::Reading(note) => Some(*note),
+                    Implementation::Paper => None,
+                })
+                .collect();
+            if notes.is_empty() {
+                "paper".to_string()
+            } else {
+                format!("reading: {}", notes.join("; "))
+            }
+        }
     }
 }
-
-/// How a claim is measured on result rows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Measure {
-    /// The paper's bound, on each row of the claim's (algorithm, objective) pairs.
-    Bound(Bound),
-    /// Lemma 4.4: the strip cover bound s ≤ OPT (ratio s / OPT on exact turn rows).
-    StripBound,
-    /// Theorem 4.2: merged tour turns ≤ t + 2c − 2 of the algorithm's cycle cover.
-    Merge,
-    /// Corollary 4.1: merged tour turns ≤ 3/2 · t of the algorithm's cycle cover.
-    MergeHalf,
-    /// Only the tight families measure it (no result rows carry it).
-    TightOnly,
-    /// Nothing measures it: the claim is not implemented.
-    Nothing,
-}
-
-/// How faithfully the registered algorithms realize a claim.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Implementation {
-    /// The paper's algorithm, as the paper states it (on the paper's own setting).
-    Paper,
-    /// Our reading of the paper's proof on pixels; the note says where it departs.
-    Reading(&'static str),
-    /// No registered algorithm realizes it; the note says why.
-    None(&'static str),
-}
-
-/// One claim of the table.
-struct Claim {
-    paper: &'static str,
-    id: &'static str,
-    statement: &'static str,
-    /// The claimed factor, as the paper states it.
-    factor: &'static str,
-    /// The (algorithm, objective) pairs whose rows exercise it.
-    rows: &'static [(&'static str, &'static str)],
-    measure: Measure,
-    /// The instances the claim is stated for, beyond the algorithm's preconditions. A row
-    /// applies when the harness recorded (in its `guarantee` column) the algorithm's registered
-    /// guarantee with the same condition, i.e. the condition held on the instance.
-    when: When,
-    implementation: Implementation,
-    /// The tight family and the quantities of `tight.csv` that carry its value.
-    tight: Option<(&'static str, &'static [&'static str])>,
-}
-
-const MILLING: &str = "Lawn mowing and milling";
-const TURNS: &str = "Optimal covering tours with turn costs";
-const MERGED: &[(&str, &str)] = &[
-    ("star-cover", "turns"),
-    ("strips-double", "turns"),
-    ("strips-matching", "turns"),
-    ("thin-cc", "turns"),
-    ("thin-merge", "turns"),
-];
-const V: Quantity = Quantity::Value;
-const OPT: Against = Against::Opt;
-
-const CLAIMS: &[Claim] = &[
-    Claim {
-        paper: MILLING,
-        id: "Theorem 2",
-        statement: "a TSP tour of the pixel centres is a lawn mowing tour within alpha_TSP (3 l* + 6); decided only where the area bound suffices (no exact lawn optimum)",
-        factor: "alpha_TSP (3 OPT + 6)",
-        rows: &[("lawn-mst", "lawn-length"), ("lawn-2opt", "lawn-length")],
-        measure: Measure::Bound(bound(V, 6, 1, 12, OPT)),
-        when: When::Always,
-        implementation: Implementation::Reading(
-            "alpha_TSP = 2 (doubled MST; 2-opt starts from it), square cutter, rectilinear motion",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: MILLING,
-        id: "Theorem 2 (Christofides)",
-        statement: "Theorem 2 with Christofides, alpha_TSP = 3/2",
-        factor: "3/2 (3 OPT + 6)",
-        rows: &[("lawn-christofides", "lawn-length")],
-        measure: Measure::Bound(bound(V, 9, 2, 18, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: MILLING,
-        id: "Theorem 3",
-        statement: "constant-factor lawn mowing without the additive term: the shorter of the bounding-box tour and Christofides",
-        factor: "3 alpha_TSP + alpha_TSP 3/10 = 99/20 OPT",
-        rows: &[("lawn-box", "lawn-length")],
-        measure: Measure::Bound(bound(V, 99, 20, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: MILLING,
-        id: "Theorem 4",
-        statement: "milling tour of length at most 2.5 OPT (regions with holes)",
-        factor: "5/2 OPT",
-        rows: &[("milling25", "length")],
-        measure: Measure::Bound(bound(V, 5, 2, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Reading(
-            "contours and strips on pixels: L_dB <= OPT and L_str <= OPT fail on one-pixel-thick parts (module docs of milling25)",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: MILLING,
-        id: "Theorem 5",
-        statement: "a tour of a simple grid graph without cut vertices of length at most (6N - 4)/5",
-        factor: "(6 N - 4)/5",
-        rows: &[("tsp65", "length")],
-        measure: Measure::Bound(bound(V, 6, 5, -4, Against::N)),
-        when: When::Biconnected,
-        implementation: Implementation::Paper,
-        tight: Some(("band", &["tsp65_length", "opt_length"])),
-    },
-    Claim {
-        paper: MILLING,
-        id: "Corollary 3",
-        statement: "milling simple integral rectilinear polygons within 6/5",
-        factor: "6/5 OPT",
-        rows: &[("tsp65", "length")],
-        measure: Measure::Bound(bound(V, 6, 5, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("band", &["ratio_tsp65_opt", "ratio_opt_n"])),
-    },
-    Claim {
-        paper: MILLING,
-        id: "Corollary 4",
-        statement: "milling simple rectilinear polygons (arbitrary vertices) within 11/5",
-        factor: "11/5 OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "needs polygons with non-integral vertices and the contour tour; mowmill reads integral regions only",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: MILLING,
-        id: "Theorem 7",
-        statement: "a tour of a grid graph without local cut vertices of length at most 1.325 N",
-        factor: "53/40 N",
-        rows: &[("holes1325", "length")],
-        measure: Measure::Bound(bound(V, 53, 40, 0, Against::N)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Lemma 4.4",
-        statement: "minimum strip cover = maximum rook placement, a lower bound s <= OPT on turns",
-        factor: "s <= OPT",
-        rows: &[],
-        measure: Measure::StripBound,
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("donut", &["strip_cover", "opt_cc_turns"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 4.1",
-        statement: "a min-turn cycle cover of the boundary in polynomial time (optimal when every pixel is a boundary pixel)",
-        factor: "OPT (exact on the boundary)",
-        rows: &[("boundary-cc", "cc-turns")],
-        measure: Measure::Bound(bound(V, 1, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Reading(
-            "boundary links on pixels, collinear links sharing a pixel united (module docs of boundary_cc)",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 4.2",
-        statement: "a cycle cover with t turns and c cycles merges into a tour with at most t + 2c - 2 turns",
-        factor: "t + 2c - 2",
-        rows: MERGED,
-        measure: Measure::Merge,
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("thin43", &["gadget_naive_turns"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 4.1",
-        statement: "a cycle cover with t turns of a connected region merges into a tour with at most 3/2 t turns",
-        factor: "3/2 t",
-        rows: MERGED,
-        measure: Measure::MergeHalf,
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.1",
-        statement: "star cover: a linear-time (rho + 2 delta) cycle cover, here 10 OPT",
-        factor: "10 OPT",
-        rows: &[("star-cover", "cc-turns")],
-        measure: Measure::Bound(bound(V, 10, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.2",
-        statement: "a linear-time 12-approximation on turns (star cover, merged)",
-        factor: "12 OPT",
-        rows: &[("star-cover", "turns")],
-        measure: Measure::Bound(bound(V, 12, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.2 (coverage)",
-        statement: "the star-cover tour covers each pixel at most 4 times",
-        factor: "coverage <= 4",
-        rows: &[("star-cover", "turns"), ("star-cover", "cc-turns")],
-        measure: Measure::Bound(bound(Quantity::MaxCoverage, 4, 1, 0, Against::One)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.2 (length)",
-        statement: "the star-cover tour is a 4-approximation on length",
-        factor: "length <= 4 OPT_length",
-        rows: &[("star-cover", "turns")],
-        measure: Measure::Bound(bound(Quantity::Length, 4, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.4",
-        statement: "doubled optimal strip cover, merged: at most 6 OPT turns",
-        factor: "6 OPT",
-        rows: &[("strips-double", "turns")],
-        measure: Measure::Bound(bound(V, 6, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.4 (length)",
-        statement: "the doubled strip cover tour has length within 4 times the optimal",
-        factor: "length <= 4 OPT_length",
-        rows: &[("strips-double", "turns")],
-        measure: Measure::Bound(bound(Quantity::Length, 4, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.5",
-        statement: "strips + minimum matching: cycle cover 2.5 OPT",
-        factor: "5/2 OPT_cc",
-        rows: &[("strips-matching", "cc-turns")],
-        measure: Measure::Bound(bound(V, 5, 2, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("donut", &["ratio_cc"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.5 (tour)",
-        statement: "strips + minimum matching, merged: tour 3.75 OPT",
-        factor: "15/4 OPT",
-        rows: &[("strips-matching", "turns")],
-        measure: Measure::Bound(bound(V, 15, 4, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("donut", &["ratio_naive", "ratio_crossing"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Table 1 (length 4, coverage 4)",
-        statement: "integral orthogonal and thin rows: the tours rewritten by Theorem 5.6 are 4-approximations on length and cover each pixel at most 4 times",
-        factor: "length <= 4 OPT_length, coverage <= 4",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "realized by --coverage4 (strips-matching, thin-cc, thin-merge), which bench configs cannot select yet (issue 13); without it strips-matching tours reach coverage 18 and thin-cc cycle covers 5; Theorem 5.6 is measured on the tight donuts",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.6",
-        statement: "any tour rewrites into one with the same turns covering each pixel at most 4 times",
-        factor: "coverage <= 4, same turns",
-        rows: &[],
-        measure: Measure::TightOnly,
-        when: When::Always,
-        implementation: Implementation::Reading(
-            "the paper proves it in outline; --coverage4 is our construction of the local modifications",
-        ),
-        tight: Some(("donut", &["coverage4_turns", "coverage4_max_coverage"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.3",
-        statement: "thin pockets: a min-turn cycle cover in polynomial time",
-        factor: "OPT_cc (exact)",
-        rows: &[("thin-cc", "cc-turns"), ("thin-merge", "cc-turns")],
-        measure: Measure::Bound(bound(V, 1, 1, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Reading(
-            "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.3 (tour)",
-        statement: "thin pockets: a 1.5-approximation for min-turn tours",
-        factor: "3/2 OPT",
-        rows: &[("thin-cc", "turns")],
-        measure: Measure::Bound(bound(V, 3, 2, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.8",
-        statement: "thin Eulerian pockets: a linear-time 6/5-approximation",
-        factor: "6/5 OPT",
-        rows: &[("thin-euler", "turns")],
-        measure: Measure::Bound(bound(V, 6, 5, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.9",
-        statement: "thin pockets: optimal cycle cover merged into a tour of at most 4/3 OPT turns",
-        factor: "4/3 OPT",
-        rows: &[("thin-merge", "turns")],
-        measure: Measure::Bound(bound(V, 4, 3, 0, OPT)),
-        when: When::Always,
-        implementation: Implementation::Paper,
-        tight: Some(("thin43", &["gadget_naive_turns", "ratio_gadget_naive"])),
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.2",
-        statement: "restricted-direction milling (d directions, e.g. 3-D): 5d cycle cover, 5d + 2 tour, coverage 2d",
-        factor: "5d OPT_cc, (5d + 2) OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "mowmill has no instances beyond the square grid (issue 17)",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Corollary 5.1",
-        statement: "discrete milling: (rho + 2 delta + 2) tour, coverage mu",
-        factor: "(rho + 2 delta + 2) OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "mowmill has no discrete (graph) instances (issue 17)",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.3",
-        statement: "regions bounded by n integral segments, implicit encoding: 10 cycle cover, 12 tour in O(n log n)",
-        factor: "10 OPT_cc, 12 OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "mowmill's star-cover runs on the pixels (Theorem 5.1), not on the n-segment encoding",
-        ),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.7",
-        statement: "nonintegral orthogonal milling: 4.5 cycle cover, 6.25 tour",
-        factor: "9/2 OPT_cc, 25/4 OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None("needs non-integral orthogonal polygons (issue 18)"),
-        tight: None,
-    },
-    Claim {
-        paper: TURNS,
-        id: "Theorem 5.10",
-        statement: "PTAS for length plus C times turns, O(2^h N^O(C))",
-        factor: "(1 + eps) OPT",
-        rows: &[],
-        measure: Measure::Nothing,
-        when: When::Always,
-        implementation: Implementation::None(
-            "not implemented (exponential in the number of holes)",
-        ),
-        tight: None,
-    },
-];
 
 /// One line of the claims table.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -576,13 +190,14 @@ impl<'a> Measured<'a> {
 }
 
 fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
+    let theorem = claim.theorem;
     let mut m = Measured::default();
     let applies = |r: &Row| {
-        claim.when == When::Always
+        theorem.when == When::Always
             || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
                 a.guarantees
                     .iter()
-                    .filter(|g| g.when == claim.when)
+                    .filter(|g| g.when == theorem.when)
                     .any(|g| r.guarantee.contains(&g.to_string()))
             })
     };
@@ -601,7 +216,7 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
         .iter()
         .filter(|r| r.error.is_empty() || r.valid == Some(false))
         .filter(|r| {
-            if claim.measure == Measure::StripBound {
+            if theorem.measure == Measure::StripBound {
                 r.lb_source.contains("strip cover") && r.algorithm != EXACT
             } else {
                 of_claim(r)
@@ -619,7 +234,7 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
             m.instances.insert(r.instance.as_str());
         }
     }
-    match claim.measure {
+    match theorem.measure {
         Measure::Bound(b) => {
             m.ratio_of = match (b.against, b.quantity) {
                 (Against::N, _) => "the bound in N (value / bound)".to_string(),
@@ -644,7 +259,9 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                     (Against::N, _) => (Some(r.n), None),
                     (Against::One, _) => (Some(1), None),
                     (Against::Opt, Quantity::Length) => (
-                        exact_opt.get(&(r.instance.as_str(), "length")).copied(),
+                        exact_opt
+                            .get(&(r.instance.as_str(), Objective::Length.name()))
+                            .copied(),
                         Some(r.n),
                     ),
                     (Against::Opt, _) => (r.opt, r.lower_bound),
@@ -692,14 +309,14 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
             }
         }
         Measure::Merge | Measure::MergeHalf => {
-            m.ratio_of = match claim.measure {
+            m.ratio_of = match theorem.measure {
                 Measure::Merge => "t + 2c - 2 of the algorithm's cycle cover",
                 _ => "3/2 t of the algorithm's cycle cover",
             }
             .to_string();
             let cc: BTreeMap<(&str, &str), &Row> = rows
                 .iter()
-                .filter(|r| r.objective == "cc-turns" && r.error.is_empty())
+                .filter(|r| r.objective == Objective::CcTurns.name() && r.error.is_empty())
                 .map(|r| ((r.instance.as_str(), r.algorithm.as_str()), r))
                 .collect();
             for r in &picked {
@@ -712,7 +329,7 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                 };
                 if let (Some(tour), Some(t), Some(cycles)) = (r.turns, c.turns, c.cycles) {
                     // Both bounds doubled to stay in integers.
-                    let (bound2, ok) = match claim.measure {
+                    let (bound2, ok) = match theorem.measure {
                         Measure::Merge => {
                             let b = (t + 2 * cycles).saturating_sub(2);
                             (2 * b, tour <= b)
@@ -802,22 +419,37 @@ fn tight_value(family: &str, quantities: &[&str], tight: &[TightRow]) -> (String
 
 /// The claims table from result rows and (optionally) a tight run's rows.
 pub fn table(rows: &[Row], tight: &[TightRow]) -> Vec<ClaimRow> {
-    CLAIMS
+    table_of(THEOREMS, REGISTRY, rows, tight)
+}
+
+/// The claims table of `theorems` as the algorithms of `registry` claim them: one row per
+/// theorem, in order.
+fn table_of(
+    theorems: &[&'static Theorem],
+    registry: &[Algorithm],
+    rows: &[Row],
+    tight: &[TightRow],
+) -> Vec<ClaimRow> {
+    theorems
         .iter()
-        .map(|c| {
-            let m = measure(c, rows);
-            let (tight_family, (tv, tight_ok, tight_bad)) = match c.tight {
-                Some((family, qs)) => (family.to_string(), tight_value(family, qs, tight)),
+        .map(|&t| {
+            let c = claim(t, registry);
+            let m = measure(&c, rows);
+            let (tight_family, (tv, tight_ok, tight_bad)) = match t.tight {
+                Some(tf) => (
+                    tf.family.to_string(),
+                    tight_value(tf.family, tf.quantities, tight),
+                ),
                 None => (String::new(), (String::new(), false, false)),
             };
             let decided = m.decided.len();
-            let verdict = if let Implementation::None(_) = c.implementation {
+            let verdict = if c.implementation.is_err() {
                 "not implemented"
             } else if m.violations > 0 || tight_bad {
                 "violated"
-            } else if tight_ok && c.measure != Measure::TightOnly && decided > 0 {
+            } else if tight_ok && t.measure != Measure::TightOnly && decided > 0 {
                 "tight reproduced"
-            } else if decided > 0 || (c.measure == Measure::TightOnly && !tv.is_empty()) {
+            } else if decided > 0 || (t.measure == Measure::TightOnly && !tv.is_empty()) {
                 "holds"
             } else {
                 "untested"
@@ -833,10 +465,10 @@ pub fn table(rows: &[Row], tight: &[TightRow]) -> Vec<ClaimRow> {
             findings.dedup();
             findings.truncate(FINDINGS_LISTED);
             ClaimRow {
-                paper: c.paper.to_string(),
-                claim: c.id.to_string(),
-                statement: c.statement.to_string(),
-                factor: c.factor.to_string(),
+                paper: t.paper.title().to_string(),
+                claim: t.id.to_string(),
+                statement: t.statement.to_string(),
+                factor: t.factor.to_string(),
                 algorithms: algos.join(" "),
                 instances: m.instances.len(),
                 decided,
@@ -846,11 +478,7 @@ pub fn table(rows: &[Row], tight: &[TightRow]) -> Vec<ClaimRow> {
                 tight_family,
                 tight_value: tv,
                 verdict: verdict.to_string(),
-                implementation: match c.implementation {
-                    Implementation::Paper => "paper".to_string(),
-                    Implementation::Reading(note) => format!("reading: {note}"),
-                    Implementation::None(note) => format!("none: {note}"),
-                },
+                implementation: implementation_text(&c.implementation),
                 max_n_decided: m.decided.values().map(|v| v.0).max(),
                 families: families.into_iter().collect::<Vec<_>>().join(" "),
                 errors: m.errors,
@@ -972,10 +600,9 @@ pub fn markdown(table: &[ClaimRow], source: &str) -> String {
     out.push_str("| paper | claim | factor | algorithms | impl. | instances | decided | max N | families | max ratio (of) | violations | tight family | verdict |\n");
     out.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for c in table {
-        let paper = if c.paper == MILLING {
-            "milling"
-        } else {
-            "turn-cost"
+        let paper: &str = match Paper::ALL.into_iter().find(|p| p.title() == c.paper) {
+            Some(p) => p.short(),
+            None => &c.paper,
         };
         let ratio = c
             .max_ratio
@@ -1132,4 +759,145 @@ pub fn save_findings(
         }
     }
     Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algorithms::theorems::{self, Claim as AlgoClaim, Tight, is_declared};
+
+    #[test]
+    fn every_theorem_an_algorithm_references_is_declared() {
+        for a in REGISTRY {
+            for g in a.guarantees {
+                assert!(
+                    is_declared(g.theorem),
+                    "{}: guarantee {g} names {}, which is not in THEOREMS",
+                    a.name,
+                    g.theorem.cite()
+                );
+                assert!(
+                    g.source.contains(g.theorem.paper.title()),
+                    "{}: guarantee {g} cites another paper than its theorem {}",
+                    a.name,
+                    g.theorem.cite()
+                );
+                assert!(a.objectives.contains(&g.objective), "{}: {g}", a.name);
+            }
+            for c in a.claims {
+                assert!(
+                    is_declared(c.theorem),
+                    "{}: claims {}, which is not in THEOREMS",
+                    a.name,
+                    c.theorem.cite()
+                );
+                assert!(
+                    matches!(c.theorem.realized, Realized::ByAlgorithms),
+                    "{}: claims {}, which is declared as realized elsewhere or not at all",
+                    a.name,
+                    c.theorem.cite()
+                );
+                assert!(
+                    c.objectives.iter().all(|o| a.objectives.contains(o)),
+                    "{}: claims {} on an objective it does not report",
+                    a.name,
+                    c.theorem.cite()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn every_claims_row_comes_from_the_registry() {
+        let table = table(&[], &[]);
+        assert_eq!(table.len(), THEOREMS.len());
+        for (row, t) in table.iter().zip(THEOREMS) {
+            assert_eq!(
+                (
+                    row.paper.as_str(),
+                    row.claim.as_str(),
+                    row.statement.as_str()
+                ),
+                (t.paper.title(), t.id, t.statement)
+            );
+            assert_eq!(row.factor, t.factor);
+            // The algorithms column: exactly the registered algorithms claiming the theorem.
+            let claiming: Vec<&str> = REGISTRY
+                .iter()
+                .filter(|a| a.claims.iter().any(|c| std::ptr::eq(c.theorem, *t)))
+                .map(|a| a.name)
+                .collect();
+            assert_eq!(row.algorithms, claiming.join(" "), "{}", t.id);
+            // Without rows nothing is decided: implemented claims are untested.
+            let expected = match t.realized {
+                Realized::Not(_) => "not implemented",
+                _ => "untested",
+            };
+            assert_eq!(row.verdict, expected, "{}", t.id);
+            assert_eq!(row.decided, 0);
+        }
+    }
+
+    #[test]
+    fn a_theorem_no_algorithm_claims_is_not_implemented() {
+        static UNCLAIMED: Theorem = Theorem {
+            paper: Paper::Milling,
+            id: "Theorem 99",
+            statement: "a theorem that no registered algorithm claims",
+            factor: "OPT",
+            measure: Measure::Bound(theorems::Bound {
+                quantity: Quantity::Value,
+                num: 1,
+                den: 1,
+                add: 0,
+                against: Against::Opt,
+            }),
+            when: When::Always,
+            realized: Realized::ByAlgorithms,
+            tight: Some(Tight {
+                family: "band",
+                quantities: &["tsp65_length"],
+            }),
+        };
+        let [row] = &table_of(&[&UNCLAIMED], REGISTRY, &[], &[])[..] else {
+            panic!("one theorem, one row");
+        };
+        assert_eq!(row.verdict, "not implemented");
+        assert_eq!(
+            row.implementation,
+            "none: no registered algorithm claims it"
+        );
+        assert_eq!(row.algorithms, "");
+        // The same theorem claimed by an algorithm is implemented (untested without rows).
+        static CLAIMS: [AlgoClaim; 1] = [AlgoClaim::paper(&UNCLAIMED, &[Objective::Length])];
+        let claimed = [Algorithm {
+            claims: &CLAIMS,
+            ..crate::algorithms::tsp65::ALGORITHM
+        }];
+        let [row] = &table_of(&[&UNCLAIMED], &claimed, &[], &[])[..] else {
+            panic!("one theorem, one row");
+        };
+        assert_eq!(
+            (row.verdict.as_str(), row.implementation.as_str()),
+            ("untested", "paper")
+        );
+        assert_eq!(row.algorithms, crate::algorithms::tsp65::ALGORITHM.name);
+    }
+
+    #[test]
+    fn readings_are_reported_with_their_notes() {
+        let table = table(&[], &[]);
+        let row = |id: &str| table.iter().find(|r| r.claim == id).unwrap();
+        assert!(
+            row(theorems::MILLING_THM_4.id)
+                .implementation
+                .starts_with("reading: ")
+        );
+        assert_eq!(row(theorems::MILLING_THM_5.id).implementation, "paper");
+        assert!(
+            row(theorems::MILLING_COR_4.id)
+                .implementation
+                .starts_with("none: ")
+        );
+    }
 }

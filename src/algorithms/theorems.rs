@@ -1,0 +1,626 @@
+//! The theorems of the two papers, declared once: what each states, the paper's bound as data,
+//! how it is measured on result rows, and whether anything realizes it.
+//!
+//! Registered algorithms point here: every [`Guarantee`](super::Guarantee) names the theorem it
+//! comes from, and every [`Algorithm`](super::Algorithm) lists the [`Claim`]s its outputs are
+//! measured against (which theorem, on which objectives, and whether it is the paper's
+//! algorithm or our reading of its proof on pixels). The claims table
+//! ([`crate::tight::claims`]) has one row per entry of [`THEOREMS`] and takes the row's
+//! algorithms from the registry; a theorem that no algorithm claims is "not implemented".
+//!
+//! An entry is one claim of a theorem: a theorem with several bounds (a cycle cover and a tour,
+//! turns and length) has one entry per bound, e.g. "Theorem 5.5" and "Theorem 5.5 (tour)".
+
+use super::{Against, Objective, Quantity, When};
+use serde::Serialize;
+
+/// The two papers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Paper {
+    /// E. M. Arkin, S. P. Fekete, J. S. B. Mitchell, *Approximation algorithms for lawn mowing
+    /// and milling*.
+    Milling,
+    /// E. M. Arkin, M. A. Bender, E. D. Demaine, S. P. Fekete, J. S. B. Mitchell, S. Sethia,
+    /// *Optimal covering tours with turn costs*.
+    TurnCost,
+}
+
+impl Paper {
+    pub const ALL: [Paper; 2] = [Paper::Milling, Paper::TurnCost];
+
+    /// The title as sources and the claims table cite it.
+    pub fn title(self) -> &'static str {
+        match self {
+            Paper::Milling => "Lawn mowing and milling",
+            Paper::TurnCost => "Optimal covering tours with turn costs",
+        }
+    }
+
+    /// The short name of the claims table's Markdown.
+    pub fn short(self) -> &'static str {
+        match self {
+            Paper::Milling => "milling",
+            Paper::TurnCost => "turn-cost",
+        }
+    }
+}
+
+/// A claimed upper bound `q ≤ (num · X + add) / den` on a quantity of a row, X being OPT (of
+/// the row's objective; of length for [`Quantity::Length`]), N or 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Bound {
+    pub quantity: Quantity,
+    pub num: i64,
+    pub den: i64,
+    pub add: i64,
+    pub against: Against,
+}
+
+impl Bound {
+    /// Whether `q ≤ (num · x + add) / den`, in exact integer arithmetic.
+    pub fn holds(&self, q: u64, x: u64) -> bool {
+        i128::from(self.den) * i128::from(q)
+            <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+    }
+}
+
+const fn bound(quantity: Quantity, num: i64, den: i64, add: i64, against: Against) -> Bound {
+    Bound {
+        quantity,
+        num,
+        den,
+        add,
+        against,
+    }
+}
+
+/// How a theorem is measured on result rows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Measure {
+    /// The paper's bound, on each row of the claiming (algorithm, objective) pairs.
+    Bound(Bound),
+    /// Lemma 4.4: the strip cover bound s ≤ OPT (ratio s / OPT on exact turn rows).
+    StripBound,
+    /// Theorem 4.2: merged tour turns ≤ t + 2c − 2 of the algorithm's cycle cover.
+    Merge,
+    /// Corollary 4.1: merged tour turns ≤ 3/2 · t of the algorithm's cycle cover.
+    MergeHalf,
+    /// Only the tight families measure it (no result rows carry it).
+    TightOnly,
+    /// Nothing measures it: the theorem is not implemented.
+    Nothing,
+}
+
+/// How faithfully something realizes a theorem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Implementation {
+    /// The paper's algorithm, as the paper states it (on the paper's own setting).
+    Paper,
+    /// Our reading of the paper's proof on pixels; the note says where it departs.
+    Reading(&'static str),
+}
+
+/// What realizes a theorem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Realized {
+    /// The registered algorithms whose [`Claim`]s name it; none: not implemented.
+    ByAlgorithms,
+    /// Something other than an algorithm (a lower bound, an option of `solve`).
+    Elsewhere(Implementation),
+    /// Nothing; the note says why.
+    Not(&'static str),
+}
+
+/// The tight family of a theorem and the quantities of `tight.csv` that carry its value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Tight {
+    pub family: &'static str,
+    pub quantities: &'static [&'static str],
+}
+
+/// One claim of a paper: a theorem, corollary or lemma (or one of its bounds).
+#[derive(Debug, PartialEq, Eq, Serialize)]
+pub struct Theorem {
+    pub paper: Paper,
+    /// As the paper numbers it, e.g. "Theorem 5.5"; a suffix names one of several bounds.
+    pub id: &'static str,
+    pub statement: &'static str,
+    /// The claimed factor, as the paper states it.
+    pub factor: &'static str,
+    pub measure: Measure,
+    /// The instances the claim is stated for, beyond the algorithm's preconditions. A row
+    /// applies when the harness recorded (in its `guarantee` column) the algorithm's registered
+    /// guarantee with the same condition, i.e. the condition held on the instance.
+    pub when: When,
+    pub realized: Realized,
+    pub tight: Option<Tight>,
+}
+
+impl Theorem {
+    /// "Theorem 5 of Lawn mowing and milling".
+    pub fn cite(&self) -> String {
+        format!("{} of {}", self.id, self.paper.title())
+    }
+}
+
+/// An algorithm's claim to realize a theorem: its outputs of `objectives` are measured against
+/// the theorem's bound in the claims table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Claim {
+    pub theorem: &'static Theorem,
+    pub objectives: &'static [Objective],
+    pub implementation: Implementation,
+}
+
+impl Claim {
+    /// A claim realized exactly as the paper states it.
+    pub const fn paper(theorem: &'static Theorem, objectives: &'static [Objective]) -> Self {
+        Claim {
+            theorem,
+            objectives,
+            implementation: Implementation::Paper,
+        }
+    }
+
+    /// A claim realized by our reading of the paper's proof; `note` says where it departs.
+    pub const fn reading(
+        theorem: &'static Theorem,
+        objectives: &'static [Objective],
+        note: &'static str,
+    ) -> Self {
+        Claim {
+            theorem,
+            objectives,
+            implementation: Implementation::Reading(note),
+        }
+    }
+}
+
+use Against::{N, One, Opt};
+use Paper::{Milling, TurnCost};
+use Quantity::{Length, MaxCoverage, Value};
+
+pub static MILLING_THM_2: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 2",
+    statement: "a TSP tour of the pixel centres is a lawn mowing tour within alpha_TSP (3 l* + 6); decided only where the area bound suffices (no exact lawn optimum)",
+    factor: "alpha_TSP (3 OPT + 6)",
+    measure: Measure::Bound(bound(Value, 6, 1, 12, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static MILLING_THM_2_CHRISTOFIDES: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 2 (Christofides)",
+    statement: "Theorem 2 with Christofides, alpha_TSP = 3/2",
+    factor: "3/2 (3 OPT + 6)",
+    measure: Measure::Bound(bound(Value, 9, 2, 18, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static MILLING_THM_3: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 3",
+    statement: "constant-factor lawn mowing without the additive term: the shorter of the bounding-box tour and Christofides",
+    factor: "3 alpha_TSP + alpha_TSP 3/10 = 99/20 OPT",
+    measure: Measure::Bound(bound(Value, 99, 20, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static MILLING_THM_4: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 4",
+    statement: "milling tour of length at most 2.5 OPT (regions with holes)",
+    factor: "5/2 OPT",
+    measure: Measure::Bound(bound(Value, 5, 2, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static MILLING_THM_5: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 5",
+    statement: "a tour of a simple grid graph without cut vertices of length at most (6N - 4)/5",
+    factor: "(6 N - 4)/5",
+    measure: Measure::Bound(bound(Value, 6, 5, -4, N)),
+    when: When::Biconnected,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "band",
+        quantities: &["tsp65_length", "opt_length"],
+    }),
+};
+
+pub static MILLING_COR_3: Theorem = Theorem {
+    paper: Milling,
+    id: "Corollary 3",
+    statement: "milling simple integral rectilinear polygons within 6/5",
+    factor: "6/5 OPT",
+    measure: Measure::Bound(bound(Value, 6, 5, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "band",
+        quantities: &["ratio_tsp65_opt", "ratio_opt_n"],
+    }),
+};
+
+pub static MILLING_COR_4: Theorem = Theorem {
+    paper: Milling,
+    id: "Corollary 4",
+    statement: "milling simple rectilinear polygons (arbitrary vertices) within 11/5",
+    factor: "11/5 OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not(
+        "needs polygons with non-integral vertices and the contour tour; mowmill reads integral regions only",
+    ),
+    tight: None,
+};
+
+pub static MILLING_THM_7: Theorem = Theorem {
+    paper: Milling,
+    id: "Theorem 7",
+    statement: "a tour of a grid graph without local cut vertices of length at most 1.325 N",
+    factor: "53/40 N",
+    measure: Measure::Bound(bound(Value, 53, 40, 0, N)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_LEMMA_4_4: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Lemma 4.4",
+    statement: "minimum strip cover = maximum rook placement, a lower bound s <= OPT on turns",
+    factor: "s <= OPT",
+    measure: Measure::StripBound,
+    when: When::Always,
+    // The lower bound of every turn row (`lb_source` "min strip cover"), not an algorithm.
+    realized: Realized::Elsewhere(Implementation::Paper),
+    tight: Some(Tight {
+        family: "donut",
+        quantities: &["strip_cover", "opt_cc_turns"],
+    }),
+};
+
+pub static TURNS_THM_4_1: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 4.1",
+    statement: "a min-turn cycle cover of the boundary in polynomial time (optimal when every pixel is a boundary pixel)",
+    factor: "OPT (exact on the boundary)",
+    measure: Measure::Bound(bound(Value, 1, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_4_2: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 4.2",
+    statement: "a cycle cover with t turns and c cycles merges into a tour with at most t + 2c - 2 turns",
+    factor: "t + 2c - 2",
+    measure: Measure::Merge,
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "thin43",
+        quantities: &["gadget_naive_turns"],
+    }),
+};
+
+pub static TURNS_COR_4_1: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 4.1",
+    statement: "a cycle cover with t turns of a connected region merges into a tour with at most 3/2 t turns",
+    factor: "3/2 t",
+    measure: Measure::MergeHalf,
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_1: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.1",
+    statement: "star cover: a linear-time (rho + 2 delta) cycle cover, here 10 OPT",
+    factor: "10 OPT",
+    measure: Measure::Bound(bound(Value, 10, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_2: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.2",
+    statement: "a linear-time 12-approximation on turns (star cover, merged)",
+    factor: "12 OPT",
+    measure: Measure::Bound(bound(Value, 12, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_2_COVERAGE: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.2 (coverage)",
+    statement: "the star-cover tour covers each pixel at most 4 times",
+    factor: "coverage <= 4",
+    measure: Measure::Bound(bound(MaxCoverage, 4, 1, 0, One)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_2_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.2 (length)",
+    statement: "the star-cover tour is a 4-approximation on length",
+    factor: "length <= 4 OPT_length",
+    measure: Measure::Bound(bound(Length, 4, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_4: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.4",
+    statement: "doubled optimal strip cover, merged: at most 6 OPT turns",
+    factor: "6 OPT",
+    measure: Measure::Bound(bound(Value, 6, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_4_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.4 (length)",
+    statement: "the doubled strip cover tour has length within 4 times the optimal",
+    factor: "length <= 4 OPT_length",
+    measure: Measure::Bound(bound(Length, 4, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_5: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.5",
+    statement: "strips + minimum matching: cycle cover 2.5 OPT",
+    factor: "5/2 OPT_cc",
+    measure: Measure::Bound(bound(Value, 5, 2, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "donut",
+        quantities: &["ratio_cc"],
+    }),
+};
+
+pub static TURNS_THM_5_5_TOUR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.5 (tour)",
+    statement: "strips + minimum matching, merged: tour 3.75 OPT",
+    factor: "15/4 OPT",
+    measure: Measure::Bound(bound(Value, 15, 4, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "donut",
+        quantities: &["ratio_naive", "ratio_crossing"],
+    }),
+};
+
+pub static TURNS_TABLE_1: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Table 1 (length 4, coverage 4)",
+    statement: "integral orthogonal and thin rows: the tours rewritten by Theorem 5.6 are 4-approximations on length and cover each pixel at most 4 times",
+    factor: "length <= 4 OPT_length, coverage <= 4",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not(
+        "realized by --coverage4 (strips-matching, thin-cc, thin-merge), which bench configs cannot select yet (issue 13); without it strips-matching tours reach coverage 18 and thin-cc cycle covers 5; Theorem 5.6 is measured on the tight donuts",
+    ),
+    tight: None,
+};
+
+pub static TURNS_THM_5_6: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.6",
+    statement: "any tour rewrites into one with the same turns covering each pixel at most 4 times",
+    factor: "coverage <= 4, same turns",
+    measure: Measure::TightOnly,
+    when: When::Always,
+    // `solve --coverage4`, an option rather than a registered algorithm.
+    realized: Realized::Elsewhere(Implementation::Reading(
+        "the paper proves it in outline; --coverage4 is our construction of the local modifications",
+    )),
+    tight: Some(Tight {
+        family: "donut",
+        quantities: &["coverage4_turns", "coverage4_max_coverage"],
+    }),
+};
+
+pub static TURNS_COR_5_3: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.3",
+    statement: "thin pockets: a min-turn cycle cover in polynomial time",
+    factor: "OPT_cc (exact)",
+    measure: Measure::Bound(bound(Value, 1, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_3_TOUR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.3 (tour)",
+    statement: "thin pockets: a 1.5-approximation for min-turn tours",
+    factor: "3/2 OPT",
+    measure: Measure::Bound(bound(Value, 3, 2, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_8: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.8",
+    statement: "thin Eulerian pockets: a linear-time 6/5-approximation",
+    factor: "6/5 OPT",
+    measure: Measure::Bound(bound(Value, 6, 5, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_9: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.9",
+    statement: "thin pockets: optimal cycle cover merged into a tour of at most 4/3 OPT turns",
+    factor: "4/3 OPT",
+    measure: Measure::Bound(bound(Value, 4, 3, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: Some(Tight {
+        family: "thin43",
+        quantities: &["gadget_naive_turns", "ratio_gadget_naive"],
+    }),
+};
+
+pub static TURNS_THM_5_2: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.2",
+    statement: "restricted-direction milling (d directions, e.g. 3-D): 5d cycle cover, 5d + 2 tour, coverage 2d",
+    factor: "5d OPT_cc, (5d + 2) OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not("mowmill has no instances beyond the square grid (issue 17)"),
+    tight: None,
+};
+
+pub static TURNS_COR_5_1: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.1",
+    statement: "discrete milling: (rho + 2 delta + 2) tour, coverage mu",
+    factor: "(rho + 2 delta + 2) OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not("mowmill has no discrete (graph) instances (issue 17)"),
+    tight: None,
+};
+
+pub static TURNS_THM_5_3: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.3",
+    statement: "regions bounded by n integral segments, implicit encoding: 10 cycle cover, 12 tour in O(n log n)",
+    factor: "10 OPT_cc, 12 OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not(
+        "mowmill's star-cover runs on the pixels (Theorem 5.1), not on the n-segment encoding",
+    ),
+    tight: None,
+};
+
+pub static TURNS_THM_5_7: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.7",
+    statement: "nonintegral orthogonal milling: 4.5 cycle cover, 6.25 tour",
+    factor: "9/2 OPT_cc, 25/4 OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not("needs non-integral orthogonal polygons (issue 18)"),
+    tight: None,
+};
+
+pub static TURNS_THM_5_10: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.10",
+    statement: "PTAS for length plus C times turns, O(2^h N^O(C))",
+    factor: "(1 + eps) OPT",
+    measure: Measure::Nothing,
+    when: When::Always,
+    realized: Realized::Not("not implemented (exponential in the number of holes)"),
+    tight: None,
+};
+
+/// Every declared theorem, in the order of the claims table.
+pub static THEOREMS: &[&Theorem] = &[
+    &MILLING_THM_2,
+    &MILLING_THM_2_CHRISTOFIDES,
+    &MILLING_THM_3,
+    &MILLING_THM_4,
+    &MILLING_THM_5,
+    &MILLING_COR_3,
+    &MILLING_COR_4,
+    &MILLING_THM_7,
+    &TURNS_LEMMA_4_4,
+    &TURNS_THM_4_1,
+    &TURNS_THM_4_2,
+    &TURNS_COR_4_1,
+    &TURNS_THM_5_1,
+    &TURNS_COR_5_2,
+    &TURNS_COR_5_2_COVERAGE,
+    &TURNS_COR_5_2_LENGTH,
+    &TURNS_THM_5_4,
+    &TURNS_THM_5_4_LENGTH,
+    &TURNS_THM_5_5,
+    &TURNS_THM_5_5_TOUR,
+    &TURNS_TABLE_1,
+    &TURNS_THM_5_6,
+    &TURNS_COR_5_3,
+    &TURNS_COR_5_3_TOUR,
+    &TURNS_THM_5_8,
+    &TURNS_THM_5_9,
+    &TURNS_THM_5_2,
+    &TURNS_COR_5_1,
+    &TURNS_THM_5_3,
+    &TURNS_THM_5_7,
+    &TURNS_THM_5_10,
+];
+
+/// Whether `theorem` is one of [`THEOREMS`] (by address: every entry is a `static`).
+pub fn is_declared(theorem: &Theorem) -> bool {
+    THEOREMS.iter().any(|t| std::ptr::eq(*t, theorem))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_are_unique_per_paper() {
+        let mut keys: Vec<(Paper, &str)> = THEOREMS.iter().map(|t| (t.paper, t.id)).collect();
+        let n = keys.len();
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), n, "two theorems share a paper and an id");
+    }
+
+    #[test]
+    fn unmeasured_theorems_are_exactly_the_unrealized_ones() {
+        for t in THEOREMS {
+            assert_eq!(
+                t.measure == Measure::Nothing,
+                matches!(t.realized, Realized::Not(_)),
+                "{}: Measure::Nothing if and only if Realized::Not",
+                t.cite()
+            );
+        }
+    }
+}
