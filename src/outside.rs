@@ -23,6 +23,7 @@
 //!   (with its process group) and becomes an error row. A missing, oversized or malformed
 //!   tour file is an error row; a walk the checker rejects is a row with `valid = false`.
 
+use crate::algorithms::theorems::{Bound, Measure, Paper, Realized, Theorem};
 use crate::algorithms::{Against, Guarantee, Objective, Output, Quantity, Solution, When};
 use crate::error::{Error, Result};
 use crate::gridfile::GridFile;
@@ -144,10 +145,27 @@ impl OutsideAlgorithm {
                     ));
                 }
             };
-            // Leaked once per declared algorithm: guarantees carry a 'static source text.
-            let source: &'static str =
-                Box::leak(format!("claimed in the config of {}", spec.name).into_boxed_str());
+            // Leaked once per declared algorithm: guarantees carry 'static texts and theorems.
+            let leak = |s: String| -> &'static str { Box::leak(s.into_boxed_str()) };
+            let source = leak(format!("claimed in the config of {}", spec.name));
+            let theorem: &'static Theorem = Box::leak(Box::new(Theorem {
+                paper: Paper::Outside,
+                id: leak(format!("claim of {}", spec.name)),
+                statement: leak(format!("{objective} <= {} {}", g.factor, g.against)),
+                factor: leak(g.factor.clone()),
+                measure: Measure::Bound(Bound {
+                    quantity: Quantity::Value,
+                    num,
+                    den,
+                    add: 0,
+                    against,
+                }),
+                when: When::Always,
+                realized: Realized::ByAlgorithms,
+                tight: None,
+            }));
             guarantees.push(Guarantee {
+                theorem,
                 objective,
                 quantity: Quantity::Value,
                 num,

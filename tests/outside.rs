@@ -83,7 +83,10 @@ fn every_failure_of_an_outside_program_is_a_row() {
     };
     // The good walk is checked, divided by the exact optimum and its claim decided.
     let g = row("good");
-    assert_eq!((&g[valid], &g[error], &g[value], &g[opt]), ("true", "", "2", "2"));
+    assert_eq!(
+        (&g[valid], &g[error], &g[value], &g[opt]),
+        ("true", "", "2", "2")
+    );
     assert_eq!(&g[within], "true");
     let expect_error = [
         ("crash", "something broke"),
@@ -111,10 +114,19 @@ fn a_bad_outside_declaration_is_refused_with_the_key() {
         "name = \"x\"\n[[algorithm]]\nname = \"a\"\ncommand = [\"sh\", \"{instance}\"]\n\
          objectives = [\"length\"]\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n",
     );
-    let o = mowmill(&["bench", "--config", cfg.to_str().unwrap(), "--out", "/nonexistent/x"]);
+    let o = mowmill(&[
+        "bench",
+        "--config",
+        cfg.to_str().unwrap(),
+        "--out",
+        "/nonexistent/x",
+    ]);
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("algorithm[0]") && err.contains("{tour_out}"), "{err}");
+    assert!(
+        err.contains("algorithm[0]") && err.contains("{tour_out}"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -137,7 +149,12 @@ fn solve_runs_the_python_example() {
         "--tour-out",
         tour.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["valid"], true);
     assert_eq!(v["opt_status"], "optimal");

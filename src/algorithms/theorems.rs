@@ -24,6 +24,8 @@ pub enum Paper {
     /// E. M. Arkin, M. A. Bender, E. D. Demaine, S. P. Fekete, J. S. B. Mitchell, S. Sethia,
     /// *Optimal covering tours with turn costs*.
     TurnCost,
+    /// Not a paper: the claim a config makes for an outside algorithm (`[[algorithm]]`).
+    Outside,
 }
 
 impl Paper {
@@ -34,6 +36,7 @@ impl Paper {
         match self {
             Paper::Milling => "Lawn mowing and milling",
             Paper::TurnCost => "Optimal covering tours with turn costs",
+            Paper::Outside => "a config's claim",
         }
     }
 
@@ -42,6 +45,7 @@ impl Paper {
         match self {
             Paper::Milling => "milling",
             Paper::TurnCost => "turn-cost",
+            Paper::Outside => "outside",
         }
     }
 }

@@ -419,7 +419,92 @@ fn tight_value(family: &str, quantities: &[&str], tight: &[TightRow]) -> (String
 
 /// The claims table from result rows and (optionally) a tight run's rows.
 pub fn table(rows: &[Row], tight: &[TightRow]) -> Vec<ClaimRow> {
-    table_of(THEOREMS, REGISTRY, rows, tight)
+    let mut table = table_of(THEOREMS, REGISTRY, rows, tight);
+    table.extend(outside_claims(rows));
+    table
+}
+
+/// The marker the harness writes into the `guarantee` column of an outside algorithm's rows
+/// (see [`crate::outside`]).
+const OUTSIDE_MARK: &str = "claimed in the config of ";
+
+/// One row per claim a config made for an outside algorithm, decided from the rows' own
+/// verdicts (`within_guarantee`, computed by the evaluation pipeline against the proven optimum
+/// or a lower bound).
+fn outside_claims(rows: &[Row]) -> Vec<ClaimRow> {
+    let mut by_claim: BTreeMap<(String, String), Vec<&Row>> = BTreeMap::new();
+    for r in rows {
+        if r.guarantee.contains(OUTSIDE_MARK) {
+            by_claim
+                .entry((r.algorithm.clone(), r.guarantee.clone()))
+                .or_default()
+                .push(r);
+        }
+    }
+    by_claim
+        .into_iter()
+        .map(|((algorithm, statement), rs)| {
+            let valid: Vec<&&Row> = rs.iter().filter(|r| r.valid == Some(true)).collect();
+            let decided: Vec<&&Row> = valid
+                .iter()
+                .filter(|r| r.within_guarantee.is_some())
+                .copied()
+                .collect();
+            let violating: Vec<&&Row> = rs
+                .iter()
+                .filter(|r| r.within_guarantee == Some(false) || r.valid == Some(false))
+                .collect();
+            let verdict = if !violating.is_empty() {
+                "violated"
+            } else if !decided.is_empty() {
+                "holds"
+            } else {
+                "untested"
+            };
+            let instances: BTreeSet<&str> = valid.iter().map(|r| r.instance.as_str()).collect();
+            let families: BTreeSet<&str> = decided.iter().map(|r| r.family.as_str()).collect();
+            let mut findings: Vec<String> = violating
+                .iter()
+                .map(|r| format!("{}:{}", r.algorithm, r.instance))
+                .collect();
+            findings.dedup();
+            findings.truncate(FINDINGS_LISTED);
+            ClaimRow {
+                paper: Paper::Outside.title().to_string(),
+                claim: format!("claim of {algorithm}"),
+                statement: statement.clone(),
+                factor: String::new(),
+                algorithms: algorithm.clone(),
+                instances: instances.len(),
+                decided: decided
+                    .iter()
+                    .map(|r| &r.instance)
+                    .collect::<BTreeSet<_>>()
+                    .len(),
+                max_ratio: decided
+                    .iter()
+                    .filter_map(|r| r.ratio_opt.or(r.ratio_lb).map(|x| x.0))
+                    .fold(None, |m: Option<f64>, x| Some(m.map_or(x, |m| m.max(x)))),
+                ratio_of: "OPT (else the lower bound)".into(),
+                violations: violating.len(),
+                tight_family: String::new(),
+                tight_value: String::new(),
+                verdict: verdict.into(),
+                implementation: "outside".into(),
+                max_n_decided: decided.iter().map(|r| r.n).max(),
+                families: families.into_iter().collect::<Vec<_>>().join(" "),
+                errors: rs
+                    .iter()
+                    .filter(|r| !r.error.is_empty() && r.valid.is_none())
+                    .count(),
+                findings: findings.join(" "),
+                violating: violating
+                    .iter()
+                    .map(|r| (r.algorithm.clone(), r.objective.clone(), r.instance.clone()))
+                    .collect(),
+            }
+        })
+        .collect()
 }
 
 /// The claims table of `theorems` as the algorithms of `registry` claim them: one row per
