@@ -1,35 +1,12 @@
 //! End-to-end tests of the `mowmill` binary on the hand fixtures in `instances/fixtures/`.
 
+mod common;
+
+use common::{json, mowmill, temp_dir};
 use serde_json::Value;
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn mowmill(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_mowmill"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run mowmill")
-}
-
-fn json(out: &Output) -> Value {
-    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
-        panic!(
-            "not JSON ({e}): {}\n{}",
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        )
-    })
-}
 
 fn fixture(name: &str) -> String {
     format!("instances/fixtures/{name}")
-}
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("mowmill-cli-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 #[test]

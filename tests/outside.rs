@@ -2,15 +2,11 @@
 //! time limit, malformed tour, invalid walk) becomes a row, and a good walk is judged like a
 //! registered algorithm's (checker, exact optimum, claimed guarantee).
 
+mod common;
+
+use common::{mowmill, temp_dir};
 use std::path::Path;
 use std::process::Command;
-
-fn mowmill(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_mowmill"))
-        .args(args)
-        .output()
-        .expect("run mowmill")
-}
 
 fn write(path: &Path, text: &str) {
     std::fs::write(path, text).unwrap();
@@ -28,7 +24,7 @@ fn column(dir: &Path, name: &str) -> usize {
 
 #[test]
 fn every_failure_of_an_outside_program_is_a_row() {
-    let dir = tempfile_dir("outside-failures");
+    let dir = temp_dir("outside-failures");
     // A 2 x 1 rectangle: the walk [(0,0), (1,0)] mills it (length 2, turns 4).
     let good = r#"printf '{"cycles": [[[0, 0], [1, 0]]]}' > "$1""#;
     let scripts = [
@@ -107,7 +103,7 @@ fn every_failure_of_an_outside_program_is_a_row() {
 
 #[test]
 fn a_bad_outside_declaration_is_refused_with_the_key() {
-    let dir = tempfile_dir("outside-bad");
+    let dir = temp_dir("outside-bad");
     let cfg = dir.join("bad.toml");
     write(
         &cfg,
@@ -135,7 +131,7 @@ fn solve_runs_the_python_example() {
         eprintln!("python3 is not installed: the Python example is not run (the sh tests are)");
         return;
     }
-    let dir = tempfile_dir("outside-solve");
+    let dir = temp_dir("outside-solve");
     let tour = dir.join("tour.json");
     let o = mowmill(&[
         "solve",
@@ -167,11 +163,4 @@ fn solve_runs_the_python_example() {
         tour.to_str().unwrap(),
     ]);
     assert_eq!(check.status.code(), Some(0));
-}
-
-fn tempfile_dir(tag: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("mowmill-test-{tag}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }

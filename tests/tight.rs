@@ -5,7 +5,9 @@
 use mowmill::checker::{Mode, check};
 use mowmill::generate::{Family, GenParams, generate};
 use mowmill::tight::{self, Member, Standing, TightOptions};
-use std::process::Command;
+mod common;
+
+use common::mowmill;
 
 fn opts() -> TightOptions {
     TightOptions {
@@ -160,14 +162,6 @@ fn thin43_small_members_reproduce_the_numbers_of_issue_7() {
         // Theorem 5.9 for the registered thin-merge.
         assert!(3 * measured(&m, "thin_merge_turns") <= 4 * (12 * s + 32));
     }
-}
-
-fn mowmill(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_mowmill"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run mowmill")
 }
 
 #[test]

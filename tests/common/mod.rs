@@ -1,0 +1,36 @@
+//! Helpers shared by the integration tests: run the binary, read its JSON, scratch folders.
+//! Include with `mod common;` (each test binary uses a subset, hence the allow).
+#![allow(dead_code)]
+
+pub mod brute;
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// Runs the `mowmill` binary from the repository root.
+pub fn mowmill(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_mowmill"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run mowmill")
+}
+
+/// Its stdout as JSON; the panic shows stdout and stderr.
+pub fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "not JSON ({e}): {}\n{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        )
+    })
+}
+
+/// A fresh scratch folder for one test (emptied first).
+pub fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("mowmill-test-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
