@@ -3,7 +3,38 @@
 //! Arkin, Bender, Demaine, Fekete, Mitchell, Sethia, *Optimal covering tours with turn costs*.
 //!
 //! Data flows one way: instance file → [`Region`] → algorithm → [`CycleCover`] →
-//! [`checker`] → result row → statistics → CSV and plots.
+//! [`checker`] → result row → statistics → CSV and plots. [`evaluate`] is the one place that
+//! runs an algorithm and judges its output; the command line, the benchmark runner and the
+//! tight families all call it.
+//!
+//! # Example
+//!
+//! Read a region, run a registered algorithm through the evaluation pipeline, and look at the
+//! checker's recount and the guarantee's verdict:
+//!
+//! ```
+//! use mowmill::algorithms::{self, Objective, Options};
+//! use mowmill::evaluate::{evaluate, Reference, Subject};
+//! use mowmill::gridfile::GridFile;
+//!
+//! let file = GridFile::parse("####\n####\n###.\n", "example.grid")?;
+//! let tsp65 = algorithms::find("tsp65").expect("registered");
+//! let eval = evaluate(
+//!     Subject::Registered(tsp65),
+//!     &file.region,
+//!     &Options::default(),
+//!     &[Objective::Length],
+//!     &Reference::default(),
+//! );
+//! let tour = eval.output(Objective::Length).expect("tsp65 reports a length tour");
+//! assert!(tour.valid);
+//! // Theorem 5 of the milling paper: length <= (6N - 4)/5, decided against N.
+//! assert_eq!(tour.within_guarantee, Some(true));
+//! // The checker is independent of the algorithm: recount the walk directly.
+//! let report = mowmill::checker::check(&file.region, &tour.cover, mowmill::checker::Mode::Milling);
+//! assert_eq!(report.length, tour.length);
+//! # Ok::<(), mowmill::Error>(())
+//! ```
 
 pub mod algorithms;
 pub mod bounds;
