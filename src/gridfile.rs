@@ -4,14 +4,15 @@
 //! carry metadata (`; family: donut`, `; seed: 7`). Every other line is one row of pixels: the
 //! first row is the highest y and the last row is y = 0; `#` is a pixel of the region and `.`
 //! an empty cell; x is the column index from 0, and rows may differ in length (missing cells
-//! are empty). A trailing `\r` is ignored, so files edited on Windows read the same.
+//! are empty). A trailing `\r` is ignored, so files edited on Windows read the same. A file
+//! with more than [`MAX_PIXELS`] pixels is refused before its pixels are collected.
 //!
 //! Writing puts the comments first, then every row from the highest y down to y = 0, each
 //! padded with `.` to the width of the bounding box, so files the generator writes read back
 //! and write again byte for byte.
 
 use crate::error::{Error, Result};
-use crate::region::{Pixel, Region};
+use crate::region::{MAX_PIXELS, Pixel, Region};
 use std::path::Path;
 
 /// A parsed `.grid` file: its comment lines (the text after `;`, verbatim) and its region.
@@ -57,13 +58,45 @@ impl GridFile {
                 None => rows.push((k + 1, line)),
             }
         }
+        // Refuse an over-large region before allocating anything proportional to it.
+        let mut count = 0usize;
+        for (line_no, row) in &rows {
+            let in_row = row.bytes().filter(|&b| b == b'#').count();
+            if count + in_row > MAX_PIXELS {
+                let column = row
+                    .char_indices()
+                    .filter(|&(_, c)| c == '#')
+                    .nth(MAX_PIXELS - count)
+                    .map_or(1, |(k, _)| row[..k].chars().count() + 1);
+                return Err(Error::parse(
+                    file,
+                    *line_no,
+                    column,
+                    format!(
+                        "more than {MAX_PIXELS} pixels; expected at most {MAX_PIXELS} '#' (the \
+                         pixel limit)"
+                    ),
+                ));
+            }
+            count += in_row;
+        }
         let h = rows.len();
-        let mut pixels = Vec::new();
+        let mut pixels = Vec::with_capacity(count);
         for (r, (line_no, row)) in rows.iter().enumerate() {
             let y = (h - 1 - r) as i32;
             for (col, c) in row.chars().enumerate() {
                 match c {
-                    '#' => pixels.push(Pixel::new(col as i32, y)),
+                    '#' => {
+                        let x = i32::try_from(col).map_err(|_| {
+                            Error::parse(
+                                file,
+                                *line_no,
+                                col + 1,
+                                format!("column beyond {}; expected a narrower row", i32::MAX),
+                            )
+                        })?;
+                        pixels.push(Pixel::new(x, y));
+                    }
                     '.' => {}
                     other => {
                         return Err(Error::parse(
