@@ -4,14 +4,15 @@
 //! carry metadata (`; family: donut`, `; seed: 7`). Every other line is one row of pixels: the
 //! first row is the highest y and the last row is y = 0; `#` is a pixel of the region and `.`
 //! an empty cell; x is the column index from 0, and rows may differ in length (missing cells
-//! are empty). A trailing `\r` is ignored, so files edited on Windows read the same.
+//! are empty). A trailing `\r` is ignored, so files edited on Windows read the same. A file
+//! with more than [`MAX_PIXELS`] pixels is refused before its pixels are collected.
 //!
 //! Writing puts the comments first, then every row from the highest y down to y = 0, each
 //! padded with `.` to the width of the bounding box, so files the generator writes read back
 //! and write again byte for byte.
 
 use crate::error::{Error, Result};
-use crate::region::{Pixel, Region};
+use crate::region::{MAX_PIXELS, Pixel, Region};
 use std::path::Path;
 
 /// A parsed `.grid` file: its comment lines (the text after `;`, verbatim) and its region.
@@ -57,26 +58,58 @@ impl GridFile {
                 None => rows.push((k + 1, line)),
             }
         }
-        let h = rows.len();
-        let mut pixels = Vec::new();
-        for (r, (line_no, row)) in rows.iter().enumerate() {
-            let y = (h - 1 - r) as i32;
-            for (col, c) in row.chars().enumerate() {
-                match c {
-                    '#' => pixels.push(Pixel::new(col as i32, y)),
-                    '.' => {}
-                    other => {
-                        return Err(Error::parse(
-                            file,
-                            *line_no,
-                            col + 1,
-                            format!(
-                                "unexpected character {other:?}: expected '#' (pixel), '.' (empty) \
-                                 or a comment line starting with ';'"
-                            ),
-                        ));
-                    }
-                }
+        // Check every character and refuse an over-large region before allocating anything
+        // proportional to it.
+        let mut count = 0usize;
+        for (line_no, row) in &rows {
+            if let Some(k) = row.bytes().position(|b| b != b'#' && b != b'.') {
+                // Every byte before k is ASCII, so k + 1 is the character column.
+                let other = row[k..].chars().next().unwrap_or(' ');
+                return Err(Error::parse(
+                    file,
+                    *line_no,
+                    k + 1,
+                    format!(
+                        "unexpected character {other:?}: expected '#' (pixel), '.' (empty) or a \
+                         comment line starting with ';'"
+                    ),
+                ));
+            }
+            let in_row = row.bytes().filter(|&b| b == b'#').count();
+            if count + in_row > MAX_PIXELS {
+                let column = row
+                    .bytes()
+                    .enumerate()
+                    .filter(|&(_, b)| b == b'#')
+                    .nth(MAX_PIXELS - count)
+                    .map_or(1, |(k, _)| k + 1);
+                return Err(Error::parse(
+                    file,
+                    *line_no,
+                    column,
+                    format!(
+                        "more than {MAX_PIXELS} pixels; expected at most {MAX_PIXELS} '#' (the \
+                         pixel limit)"
+                    ),
+                ));
+            }
+            count += in_row;
+        }
+        // Bottom row first, so that the pixels come in index order.
+        let mut pixels = Vec::with_capacity(count);
+        for (y, (line_no, row)) in rows.iter().rev().enumerate() {
+            let y = i32::try_from(y)
+                .map_err(|_| Error::parse(file, *line_no, 1, "more rows than an i32 can number"))?;
+            for (col, _) in row.bytes().enumerate().filter(|&(_, b)| b == b'#') {
+                let x = i32::try_from(col).map_err(|_| {
+                    Error::parse(
+                        file,
+                        *line_no,
+                        col + 1,
+                        format!("column beyond {}; expected a narrower row", i32::MAX),
+                    )
+                })?;
+                pixels.push(Pixel::new(x, y));
             }
         }
         if pixels.is_empty() {
@@ -95,19 +128,19 @@ impl GridFile {
     /// Reads a `.grid` file.
     pub fn read(path: &Path) -> Result<GridFile> {
         let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
-        let name = path.display().to_string();
+        GridFile::from_bytes(bytes, &path.display().to_string())
+    }
+
+    /// Parses the bytes of a `.grid` file (which must be UTF-8); `name` names the source in
+    /// error messages.
+    pub fn from_bytes(bytes: Vec<u8>, name: &str) -> Result<GridFile> {
         let text = String::from_utf8(bytes).map_err(|e| {
             let upto = &e.as_bytes()[..e.utf8_error().valid_up_to()];
             let line = upto.iter().filter(|&&b| b == b'\n').count() + 1;
             let col = upto.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-            Error::parse(
-                &name,
-                line,
-                col,
-                "invalid UTF-8: expected a UTF-8 text file",
-            )
+            Error::parse(name, line, col, "invalid UTF-8: expected a UTF-8 text file")
         })?;
-        GridFile::parse(&text, &name)
+        GridFile::parse(&text, name)
     }
 
     /// The file's text. Fails when the region has pixels at negative coordinates (translate it

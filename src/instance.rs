@@ -48,7 +48,7 @@ impl Instance {
                 meta: Vec::new(),
             });
         }
-        let grid = GridFile::read(path)?;
+        let grid = GridFile::from_bytes(bytes, &file)?;
         let meta = grid.meta_pairs();
         Ok(Instance {
             name,

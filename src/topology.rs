@@ -6,7 +6,8 @@
 //! bounded 8-connected component of the complement. Boundary and internal pixels follow
 //! Section 6 of the milling paper (a boundary pixel shares a side with the region's boundary;
 //! an internal pixel has all 4 neighbours). Local cut vertices follow Definition 6 of the
-//! milling paper. Everything here runs in linear time in the size of the bounding box.
+//! milling paper. Everything here runs in time and space proportional to N (the number of
+//! pixels), never to the area of the bounding box.
 
 use crate::region::{Dir, Pixel, Region};
 use serde::Serialize;
@@ -31,10 +32,10 @@ pub struct Summary {
 /// Computes every count of [`Summary`] for `region`.
 ///
 /// # Complexity
-/// O(N + area of the bounding box) time and space.
+/// O(N α(N)) time and O(N) space.
 pub fn summary(region: &Region) -> Summary {
     let cut = cut_vertices(region);
-    let local = local_cut_vertices_with(region, &cut);
+    let local = local_cut_vertices(region);
     let (black, white) = colour_counts(region);
     let boundary = (0..region.len())
         .filter(|&i| is_boundary(region, i))
@@ -64,7 +65,12 @@ pub struct Labels {
     pub count: usize,
 }
 
-/// The connected components of the grid graph; labels indexed by pixel index.
+/// The connected components of the grid graph; labels indexed by pixel index, components
+/// numbered in the order of their first pixel. The crate's one component labelling: callers
+/// use this rather than a search of their own.
+///
+/// # Complexity
+/// O(N) time and space.
 pub fn components(region: &Region) -> Labels {
     let n = region.len();
     let mut label = vec![u32::MAX; n];
@@ -92,99 +98,204 @@ pub fn components(region: &Region) -> Labels {
     }
 }
 
-/// The complement of a region inside its bounding box grown by one cell on every side,
-/// labelled into 8-connected components. Component 0 is the unbounded outside (it contains
-/// the frame); every other component is a hole.
+/// The holes of a region: the bounded 8-connected components of its complement, found from
+/// the gaps between the runs of each row (never from the cells of the bounding box).
 #[derive(Clone, Debug)]
 pub struct Holes {
     /// Number of holes (bounded 8-connected components of the complement).
     pub count: usize,
-    origin: Pixel,
-    width: usize,
-    height: usize,
-    /// Label per frame cell, `u32::MAX` on region pixels.
-    label: Vec<u32>,
+    /// The y of every non-empty row of the region, ascending.
+    row_y: Vec<i32>,
+    /// Leftmost and rightmost pixel of each row.
+    row_span: Vec<(i32, i32)>,
+    /// The gaps of row `r` are `gaps[row_gap[r]..row_gap[r + 1]]`.
+    row_gap: Vec<u32>,
+    gaps: Vec<Gap>,
+}
+
+/// The empty cells `x0..=x1` between two runs of a row, and their complement component.
+#[derive(Clone, Copy, Debug)]
+struct Gap {
+    x0: i32,
+    x1: i32,
+    label: u32,
 }
 
 impl Holes {
     /// The complement component of cell `p`: `Some(0)` outside, `Some(h)` for hole `h` (1-based),
     /// `None` for a pixel of the region.
+    ///
+    /// # Complexity
+    /// O(log rows + log r) for r runs in the row of `p`.
     pub fn label_at(&self, p: Pixel) -> Option<u32> {
-        let (dx, dy) = (p.x - self.origin.x, p.y - self.origin.y);
-        if dx < 0 || dy < 0 || dx as usize >= self.width || dy as usize >= self.height {
+        let Ok(r) = self.row_y.binary_search(&p.y) else {
+            return Some(0);
+        };
+        let (lo, hi) = self.row_span[r];
+        if p.x < lo || p.x > hi {
             return Some(0);
         }
-        match self.label[dy as usize * self.width + dx as usize] {
-            u32::MAX => None,
-            l => Some(l),
-        }
+        let gaps = &self.gaps[self.row_gap[r] as usize..self.row_gap[r + 1] as usize];
+        let k = gaps.partition_point(|g| g.x1 < p.x);
+        gaps.get(k).filter(|g| g.x0 <= p.x).map(|g| g.label)
     }
 
-    /// The cells of each hole, indexed by hole number − 1.
+    /// The cells of each hole, indexed by hole number − 1, each in row-major order (y, then x).
+    ///
+    /// # Complexity
+    /// O(number of gaps + total area of the holes).
     pub fn hole_cells(&self) -> Vec<Vec<Pixel>> {
         let mut cells = vec![Vec::new(); self.count];
-        for (k, &l) in self.label.iter().enumerate() {
-            if l != u32::MAX && l > 0 {
-                let (x, y) = ((k % self.width) as i32, (k / self.width) as i32);
-                cells[l as usize - 1].push(Pixel::new(self.origin.x + x, self.origin.y + y));
+        for (r, &y) in self.row_y.iter().enumerate() {
+            for g in &self.gaps[self.row_gap[r] as usize..self.row_gap[r + 1] as usize] {
+                if g.label > 0 {
+                    cells[g.label as usize - 1].extend((g.x0..=g.x1).map(|x| Pixel::new(x, y)));
+                }
             }
         }
         cells
     }
 }
 
-/// The holes of a region: bounded 8-connected components of its complement.
-pub fn holes(region: &Region) -> Holes {
-    if region.is_empty() {
-        return Holes {
-            count: 0,
-            origin: Pixel::new(0, 0),
-            width: 0,
-            height: 0,
-            label: vec![],
-        };
-    }
-    let b = region.bbox();
-    let origin = Pixel::new(b.min_x - 1, b.min_y - 1);
-    let (width, height) = (b.width() + 2, b.height() + 2);
-    let mut label = vec![u32::MAX - 1; width * height];
-    for p in region.pixels() {
-        label[(p.y - origin.y) as usize * width + (p.x - origin.x) as usize] = u32::MAX;
-    }
-    const UNSEEN: u32 = u32::MAX - 1;
-    let mut next = 0u32;
-    let mut stack = Vec::new();
-    // Cell 0 is a frame corner, so the outside gets label 0.
-    for s in 0..label.len() {
-        if label[s] != UNSEEN {
-            continue;
+/// Union-find by size with path halving over `0..n`.
+struct DisjointSets {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl DisjointSets {
+    fn new(n: usize) -> DisjointSets {
+        DisjointSets {
+            parent: (0..n as u32).collect(),
+            size: vec![1; n],
         }
-        label[s] = next;
-        stack.push(s);
-        while let Some(k) = stack.pop() {
-            let (x, y) = ((k % width) as i64, (k / width) as i64);
-            for dy in -1..=1 {
-                for dx in -1..=1 {
-                    let (nx, ny) = (x + dx, y + dy);
-                    if nx < 0 || ny < 0 || nx >= width as i64 || ny >= height as i64 {
-                        continue;
-                    }
-                    let m = ny as usize * width + nx as usize;
-                    if label[m] == UNSEEN {
-                        label[m] = next;
-                        stack.push(m);
-                    }
+    }
+
+    fn find(&mut self, mut a: u32) -> u32 {
+        while self.parent[a as usize] != a {
+            let up = self.parent[self.parent[a as usize] as usize];
+            self.parent[a as usize] = up;
+            a = up;
+        }
+        a
+    }
+
+    fn union(&mut self, a: u32, b: u32) {
+        let (mut ra, mut rb) = (self.find(a), self.find(b));
+        if ra == rb {
+            return;
+        }
+        if self.size[ra as usize] < self.size[rb as usize] {
+            (ra, rb) = (rb, ra);
+        }
+        self.parent[rb as usize] = ra;
+        self.size[ra as usize] += self.size[rb as usize];
+    }
+}
+
+/// The holes of a region: bounded 8-connected components of its complement.
+///
+/// In every row the empty cells between two runs of pixels form a gap; the cells left of the
+/// first run and right of the last one, and every row without pixels, belong to the outside.
+/// Two gaps of adjacent rows are 8-connected when their x ranges overlap or touch diagonally,
+/// so a union-find over the gaps of each pair of adjacent rows (a merge of two sorted lists)
+/// labels the complement. Holes are numbered by their lowest, then leftmost, cell.
+///
+/// # Complexity
+/// O(N α(N)) time and O(rows + runs) extra space.
+pub fn holes(region: &Region) -> Holes {
+    let rows = region.row_count();
+    let mut row_y = Vec::with_capacity(rows);
+    let mut row_span = Vec::with_capacity(rows);
+    let mut row_gap = Vec::with_capacity(rows + 1);
+    let mut gaps: Vec<Gap> = Vec::new();
+    for r in 0..rows {
+        let (y, runs) = region.row_runs(r);
+        row_y.push(y);
+        row_gap.push(gaps.len() as u32);
+        let mut span: Option<(i32, i32)> = None;
+        for (x0, x1, _) in runs {
+            if let Some((_, last)) = span {
+                gaps.push(Gap {
+                    x0: last + 1,
+                    x1: x0 - 1,
+                    label: 0,
+                });
+            }
+            span = Some((span.map_or(x0, |s| s.0), x1));
+        }
+        row_span.push(span.unwrap_or((0, -1)));
+    }
+    row_gap.push(gaps.len() as u32);
+
+    // Node 0 is the outside, node k + 1 the gap k.
+    let mut sets = DisjointSets::new(gaps.len() + 1);
+    // Row r's gaps with the outer cells on both ends, as (x0, x1, node), in i64 so that the
+    // outer ends can be infinite.
+    let extended = |r: usize| {
+        let (lo, hi) = row_span[r];
+        let inner = (row_gap[r]..row_gap[r + 1]).map(|k| {
+            (
+                i64::from(gaps[k as usize].x0),
+                i64::from(gaps[k as usize].x1),
+                k + 1,
+            )
+        });
+        std::iter::once((i64::MIN, i64::from(lo) - 1, 0))
+            .chain(inner)
+            .chain(std::iter::once((i64::from(hi) + 1, i64::MAX, 0)))
+    };
+    for r in 0..rows {
+        let inner = row_gap[r] + 1..row_gap[r + 1] + 1;
+        let adjacent = |s: usize| row_y[s] - 1 == row_y[s - 1];
+        // A row with no pixels below or above: its gaps open onto an empty row, the outside.
+        if r == 0 || !adjacent(r) || r + 1 == rows || !adjacent(r + 1) {
+            for node in inner {
+                sets.union(node, 0);
+            }
+        }
+        if r + 1 < rows && adjacent(r + 1) {
+            // Cells of rows y and y + 1 are 8-adjacent when their x differ by at most 1: widen
+            // the lower row's intervals by one cell on each side and merge by right ends.
+            let lower: Vec<(i64, i64, u32)> = extended(r)
+                .map(|(x0, x1, node)| (x0.saturating_sub(1), x1.saturating_add(1), node))
+                .collect();
+            let upper: Vec<(i64, i64, u32)> = extended(r + 1).collect();
+            let (mut a, mut b) = (0, 0);
+            while a < lower.len() && b < upper.len() {
+                let (la, ua) = (lower[a], upper[b]);
+                if la.0 <= ua.1 && ua.0 <= la.1 {
+                    sets.union(la.2, ua.2);
+                }
+                // Widened intervals may touch their neighbours, so ties advance the lower row.
+                if la.1 <= ua.1 {
+                    a += 1;
+                } else {
+                    b += 1;
                 }
             }
         }
-        next += 1;
+    }
+    // Number the holes in gap order: by lowest, then leftmost, cell.
+    let outside = sets.find(0);
+    let mut hole_of_root = vec![0u32; gaps.len() + 1];
+    let mut count = 0;
+    for (k, gap) in gaps.iter_mut().enumerate() {
+        let root = sets.find(k as u32 + 1) as usize;
+        if root != outside as usize {
+            if hole_of_root[root] == 0 {
+                count += 1;
+                hole_of_root[root] = count;
+            }
+            gap.label = hole_of_root[root];
+        }
     }
     Holes {
-        count: next as usize - 1,
-        origin,
-        width,
-        height,
-        label,
+        count: count as usize,
+        row_y,
+        row_span,
+        row_gap,
+        gaps,
     }
 }
 
@@ -195,7 +306,11 @@ pub fn is_boundary(region: &Region, i: usize) -> bool {
 }
 
 /// Articulation points of the grid graph (removal increases the number of components), by
-/// an iterative Tarjan depth-first search.
+/// an iterative Tarjan depth-first search: `cut[i]` tells whether pixel `i` is one. The
+/// crate's one cut-vertex search: callers use this rather than a copy of their own.
+///
+/// # Complexity
+/// O(N) time and space (no recursion, so no stack overflow on large regions).
 pub fn cut_vertices(region: &Region) -> Vec<bool> {
     let n = region.len();
     let mut disc = vec![u32::MAX; n];
@@ -251,32 +366,39 @@ pub fn cut_vertices(region: &Region) -> Vec<bool> {
 ///
 /// Removing pixel v merges the complement components among its eight neighbours into one, so
 /// it reduces the number of holes exactly when those neighbours touch two or more distinct
-/// complement components.
+/// complement components; with the cut vertices, these are the pixels whose 8-neighbourhood
+/// holds two or more 4-connected arcs of the region, that is whose Yokoi
+/// [`connectivity_number`] is at least 2 (a closed path through two arcs separates the
+/// complement cells between them). That local test needs no global pass.
+///
+/// # Complexity
+/// O(N) time.
 pub fn local_cut_vertices(region: &Region) -> Vec<bool> {
-    local_cut_vertices_with(region, &cut_vertices(region))
+    (0..region.len())
+        .map(|i| connectivity_number(ring_occupancy(region, i)) >= 2)
+        .collect()
 }
 
-fn local_cut_vertices_with(region: &Region, cut: &[bool]) -> Vec<bool> {
-    let holes = holes(region);
-    (0..region.len())
-        .map(|i| {
-            if cut[i] {
-                return true;
-            }
-            let p = region.pixel(i);
-            let mut first: Option<u32> = None;
-            for q in ring(p) {
-                if let Some(l) = holes.label_at(q) {
-                    match first {
-                        None => first = Some(l),
-                        Some(f) if f != l => return true,
-                        _ => {}
-                    }
-                }
-            }
-            false
-        })
-        .collect()
+/// Which of the eight neighbours of pixel `i`, in the order of [`ring`], are in the region.
+///
+/// # Complexity
+/// O(1) when pixel `i` has a side neighbour next to each diagonal, else O(log r) for r runs in
+/// the row of that diagonal.
+pub fn ring_occupancy(region: &Region, i: usize) -> [bool; 8] {
+    let side = Dir::ALL.map(|d| region.neighbor(i, d));
+    let p = region.pixel(i);
+    let mut occupied = [false; 8];
+    for k in 0..4 {
+        let (d, next) = (Dir::from_index(k), Dir::from_index(k + 1));
+        occupied[2 * k] = side[k].is_some();
+        // The diagonal between sides d and next is next's neighbour of side d, or d's of next.
+        occupied[2 * k + 1] = match (side[k], side[(k + 1) % 4]) {
+            (Some(a), _) => region.neighbor(a, next).is_some(),
+            (None, Some(b)) => region.neighbor(b, d).is_some(),
+            (None, None) => region.contains(p.step(d).step(next)),
+        };
+    }
+    occupied
 }
 
 /// The eight neighbours of `p` in counter-clockwise order starting east:
@@ -325,10 +447,16 @@ pub fn colour_counts(region: &Region) -> (usize, usize) {
 }
 
 /// A region is thin when it contains no 2×2 block of pixels (turn-cost paper, Section 5.5).
+///
+/// # Complexity
+/// O(N) time.
 pub fn is_thin(region: &Region) -> bool {
-    !region.pixels().iter().any(|&p| {
-        [Dir::E, Dir::N].iter().all(|&d| region.contains(p.step(d)))
-            && region.contains(Pixel::new(p.x + 1, p.y + 1))
+    !(0..region.len()).any(|i| {
+        region.neighbor(i, Dir::N).is_some()
+            && region
+                .neighbor(i, Dir::E)
+                .and_then(|e| region.neighbor(e, Dir::N))
+                .is_some()
     })
 }
 
@@ -538,7 +666,140 @@ mod tests {
         disconnects || holes(&rest).count < holes(r).count
     }
 
+    /// The bounded 8-connected components of the complement by flood fill over the bounding
+    /// box grown by one cell: the simple dense reference for [`holes`].
+    fn reference_hole_cells(r: &Region) -> Vec<Vec<Pixel>> {
+        let b = r.bbox();
+        let (x0, y0) = (b.min_x - 1, b.min_y - 1);
+        let (w, h) = (b.width() as i32 + 2, b.height() as i32 + 2);
+        let mut label = vec![u32::MAX; (w * h) as usize];
+        let at = |x: i32, y: i32| ((y - y0) * w + (x - x0)) as usize;
+        let mut next = 0;
+        let mut cells: Vec<Vec<Pixel>> = Vec::new();
+        for y in y0..y0 + h {
+            for x in x0..x0 + w {
+                if label[at(x, y)] != u32::MAX || r.contains(Pixel::new(x, y)) {
+                    continue;
+                }
+                let mut component = vec![];
+                let mut stack = vec![Pixel::new(x, y)];
+                label[at(x, y)] = next;
+                while let Some(p) = stack.pop() {
+                    component.push(p);
+                    for q in ring(p) {
+                        let inside = q.x >= x0 && q.y >= y0 && q.x < x0 + w && q.y < y0 + h;
+                        if inside && label[at(q.x, q.y)] == u32::MAX && !r.contains(q) {
+                            label[at(q.x, q.y)] = next;
+                            stack.push(q);
+                        }
+                    }
+                }
+                component.sort_by_key(|p| (p.y, p.x));
+                cells.push(component);
+                next += 1;
+            }
+        }
+        // Component 0 holds the frame's corner: the outside.
+        cells.remove(0);
+        cells
+    }
+
+    /// Components by breadth-first search over a hash set of pixels.
+    fn reference_component_count(r: &Region) -> usize {
+        let mut unseen: std::collections::HashSet<Pixel> = r.pixels().iter().copied().collect();
+        let mut count = 0;
+        while let Some(&s) = unseen.iter().next() {
+            unseen.remove(&s);
+            let mut stack = vec![s];
+            while let Some(p) = stack.pop() {
+                for d in Dir::ALL {
+                    if unseen.remove(&p.step(d)) {
+                        stack.push(p.step(d));
+                    }
+                }
+            }
+            count += 1;
+        }
+        count
+    }
+
+    /// Euler characteristic V − E + F of the pixel complex (pixels, 4-adjacent pairs and 2×2
+    /// blocks); with a 4-connected region and an 8-connected complement it equals
+    /// components − holes.
+    fn euler_characteristic(r: &Region) -> i64 {
+        let has = |p: Pixel| r.contains(p);
+        let (mut v, mut e, mut f) = (0i64, 0i64, 0i64);
+        for &p in r.pixels() {
+            v += 1;
+            e += i64::from(has(p.step(Dir::E))) + i64::from(has(p.step(Dir::N)));
+            f += i64::from(
+                has(p.step(Dir::E)) && has(p.step(Dir::N)) && has(Pixel::new(p.x + 1, p.y + 1)),
+            );
+        }
+        v - e + f
+    }
+
+    /// Regions up to 24 × 24 with any density, placed anywhere (far from the origin too).
+    fn wide_random_region() -> impl Strategy<Value = Region> {
+        (
+            1usize..24,
+            1usize..24,
+            0.2f64..0.95,
+            -1000i32..1000,
+            -1000i32..1000,
+        )
+            .prop_flat_map(|(w, h, density, dx, dy)| {
+                proptest::collection::vec(proptest::bool::weighted(density), w * h).prop_map(
+                    move |bits| {
+                        Region::from_pixels(
+                            bits.iter()
+                                .enumerate()
+                                .filter(|(_, b)| **b)
+                                .map(|(k, _)| Pixel::new((k % w) as i32 + dx, (k / w) as i32 + dy)),
+                        )
+                        .unwrap()
+                    },
+                )
+            })
+            .prop_filter("non-empty", |r| !r.is_empty())
+    }
+
     proptest! {
+        #[test]
+        fn holes_and_components_match_the_references(r in wide_random_region()) {
+            let h = holes(&r);
+            let cells = reference_hole_cells(&r);
+            prop_assert_eq!(h.count, cells.len());
+            prop_assert_eq!(h.hole_cells(), cells.clone());
+            let c = components(&r).count;
+            prop_assert_eq!(c, reference_component_count(&r));
+            prop_assert_eq!(c as i64 - h.count as i64, euler_characteristic(&r));
+            // Every cell of the box grown by one gets its complement component.
+            let b = r.bbox();
+            for y in b.min_y - 1..=b.max_y + 1 {
+                for x in b.min_x - 1..=b.max_x + 1 {
+                    let p = Pixel::new(x, y);
+                    let expect = if r.contains(p) {
+                        None
+                    } else {
+                        Some(cells.iter().position(|c| c.contains(&p)).map_or(0, |k| k as u32 + 1))
+                    };
+                    prop_assert_eq!(h.label_at(p), expect, "cell {}", p);
+                }
+            }
+        }
+
+        #[test]
+        fn thinness_and_ring_occupancy_match_lookups(r in wide_random_region()) {
+            for i in 0..r.len() {
+                prop_assert_eq!(ring_occupancy(&r, i), ring(r.pixel(i)).map(|q| r.contains(q)));
+            }
+            let blocks = r.pixels().iter().any(|p| {
+                [(1, 0), (0, 1), (1, 1)].iter().all(|&(dx, dy)| r.contains(Pixel::new(p.x + dx, p.y + dy)))
+            });
+            prop_assert_eq!(is_thin(&r), !blocks);
+        }
+
         #[test]
         fn local_cut_matches_definition_and_yokoi(r in random_region()) {
             let local = local_cut_vertices(&r);
