@@ -62,7 +62,11 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
                 .with_context(|| format!("parsing {}", path.display()))?;
             let toml_text =
                 toml::to_string(&v["config"]).context("re-encoding the recorded config")?;
-            Config::parse(&toml_text, &path.display().to_string())?
+            let mut config = Config::parse(&toml_text, &path.display().to_string())?;
+            if let Some(d) = v["config_dir"].as_str() {
+                config.dir = PathBuf::from(d);
+            }
+            config
         }
         (None, None) => Config::parse(harness::DEFAULT_CONFIG, "built-in default suite")?,
     };

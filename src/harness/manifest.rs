@@ -66,6 +66,8 @@ pub fn write(
             "arch": std::env::consts::ARCH,
         },
         "config": config,
+        // Outside algorithms run here; a resumed run runs them here again.
+        "config_dir": std::fs::canonicalize(&config.dir).unwrap_or_else(|_| config.dir.clone()),
         "jobs": opts.jobs,
         "shard": opts.shard.map(|(i, n)| format!("{i}/{n}")),
         "start": start,
