@@ -21,9 +21,9 @@
 //! not use the bottleneck decomposition of Lemma 5, which Section 7 does not mention.
 
 use super::contour::contour_walks;
-use super::euler::GridMultigraph;
 use super::tsp65::{LinkStats, link_internal_nodes};
-use super::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
@@ -196,7 +196,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 40,
         add: 0,
         against: Against::N,
-        when: super::When::Always,
+        when: crate::algorithms::When::Always,
         source: "Theorem 7 of Lawn mowing and milling",
     }],
     precondition,

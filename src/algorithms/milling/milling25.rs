@@ -88,8 +88,8 @@
 //! hence fat parts, while many holes need thin ones, but we have not proven a trade-off.
 
 use super::contour::{ContourWalk, contour_walks};
-use super::euler::GridMultigraph;
-use super::{Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
@@ -207,7 +207,7 @@ pub fn milling25(region: &Region) -> Result<Solution> {
     let walk = graph.into_walk(region, contours[0].walk[0]);
     let mut solution = Solution::default();
     solution.outputs.push(Output {
-        objective: super::Objective::Length,
+        objective: crate::algorithms::Objective::Length,
         cover: CycleCover::tour(walk),
     });
     let cert = &mut solution.certificates;
@@ -440,20 +440,20 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
 }
 
 /// The registry entry.
-pub const ALGORITHM: super::Algorithm = super::Algorithm {
+pub const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Algorithm {
     name: "milling25",
     summary: "contours + strips + shorter matchings, Euler tour (Theorem 4, milling paper)",
-    objectives: &[super::Objective::Length],
+    objectives: &[crate::algorithms::Objective::Length],
     // What the grid reading provably meets (module docs, "Guarantee"): the paper's 5/2 is
     // measured as a claim, not registered, since L_δB ≤ OPT fails on pixels.
-    guarantees: &[super::Guarantee {
-        objective: super::Objective::Length,
+    guarantees: &[crate::algorithms::Guarantee {
+        objective: crate::algorithms::Objective::Length,
         quantity: crate::algorithms::Quantity::Value,
         num: 17,
         den: 3,
         add: -17,
-        against: super::Against::N,
-        when: super::When::Always,
+        against: crate::algorithms::Against::N,
+        when: crate::algorithms::When::Always,
         source: "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
     }],
     precondition,

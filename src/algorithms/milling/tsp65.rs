@@ -3,7 +3,7 @@
 //! rectilinear polygons with a unit square (Corollary 3).
 //!
 //! The construction of Section 6, as a connected multigraph with even degrees walked by
-//! Hierholzer ([`super::euler`]):
+//! Hierholzer ([`crate::algorithms::euler`]):
 //!
 //! 1. The contour C: the [contour walk](super::contour) of the block, a simple cycle through
 //!    the boundary nodes. Grid reading: a boundary node is a pixel with a side *or a corner* on
@@ -45,8 +45,8 @@
 //! disjoint and meet at cut vertices, one Euler circuit of their union splices the tours.
 
 use super::contour::contour_walks;
-use super::euler::GridMultigraph;
-use super::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology;
@@ -742,7 +742,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 5,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
         },
         Guarantee {
@@ -752,7 +752,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 5,
             add: -4,
             against: Against::N,
-            when: super::When::Biconnected,
+            when: crate::algorithms::When::Biconnected,
             source: "Theorem 5 of Lawn mowing and milling",
         },
     ],

@@ -45,7 +45,11 @@
 //!
 //! `MOWMILL_MATCHING_LOG=1` prints the LP rounds to stderr.
 
-use crate::algorithms::turn_distance::{Port, TurnSearch, bit, cheapest_sources};
+pub mod join;
+pub mod turn_distance;
+
+pub use join::join_links;
+
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use fusion_blossom::dual_module::DualNodeClass;
@@ -55,6 +59,7 @@ use highs::{ColProblem, HighsModelStatus, Model, Sense};
 use rustworkx_core::max_weight_matching::max_weight_matching;
 use rustworkx_core::petgraph::graph::UnGraph;
 use std::collections::HashMap;
+use turn_distance::{Port, TurnSearch, bit, cheapest_sources};
 
 /// Up to this many endpoints, the candidate graph is complete (the matching is exact).
 pub const COMPLETE_LIMIT: usize = 600;
@@ -187,6 +192,21 @@ pub struct PortMatching {
     pub lower_bound: u64,
     /// The number of candidate pairs at the end.
     pub candidates: usize,
+}
+
+impl PortMatching {
+    /// The certificates every algorithm built on a port matching reports:
+    /// `matching_complete`, `matching_optimal`, `matching_lower_bound`, `matching_candidates`.
+    pub fn certificates(&self) -> impl Iterator<Item = (String, i64)> + use<> {
+        [
+            ("matching_complete", i64::from(self.complete)),
+            ("matching_optimal", i64::from(self.optimal)),
+            ("matching_lower_bound", self.lower_bound as i64),
+            ("matching_candidates", self.candidates as i64),
+        ]
+        .into_iter()
+        .map(|(name, value)| (name.to_string(), value))
+    }
 }
 
 /// How candidate pairs are chosen.
