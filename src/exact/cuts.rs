@@ -6,61 +6,24 @@
 //! maximum flows, Dinic's algorithm), keeping every tree cut lighter than 2. The graphs here
 //! have at most a few thousand nodes, so exact separation is cheap next to an LP re-solve.
 
-/// Disjoint sets with path halving and union by size.
-#[derive(Clone, Debug)]
-pub(crate) struct UnionFind {
-    parent: Vec<u32>,
-    size: Vec<u32>,
-}
+use petgraph::unionfind::UnionFind;
 
-impl UnionFind {
-    pub fn new(n: usize) -> UnionFind {
-        UnionFind {
-            parent: (0..n as u32).collect(),
-            size: vec![1; n],
-        }
-    }
-
-    pub fn find(&mut self, mut a: usize) -> usize {
-        while self.parent[a] as usize != a {
-            let p = self.parent[a] as usize;
-            self.parent[a] = self.parent[p];
-            a = p;
-        }
-        a
-    }
-
-    /// Joins the sets of `a` and `b`; false when they were already one.
-    pub fn union(&mut self, a: usize, b: usize) -> bool {
-        let (mut a, mut b) = (self.find(a), self.find(b));
-        if a == b {
-            return false;
-        }
-        if self.size[a] < self.size[b] {
-            std::mem::swap(&mut a, &mut b);
-        }
-        self.parent[b] = a as u32;
-        self.size[a] += self.size[b];
-        true
-    }
-
-    /// Component label in `0..count` for every element, and the count.
-    pub fn labels(&mut self) -> (Vec<u32>, usize) {
-        let n = self.parent.len();
-        let mut label = vec![u32::MAX; n];
-        let mut count = 0u32;
-        let out = (0..n)
-            .map(|v| {
-                let r = self.find(v);
-                if label[r] == u32::MAX {
-                    label[r] = count;
-                    count += 1;
-                }
-                label[r]
-            })
-            .collect();
-        (out, count as usize)
-    }
+/// Component label in `0..count` for every element of `uf` (`n` elements), numbered in order
+/// of first appearance, and the count.
+pub(crate) fn labels(uf: &mut UnionFind<usize>, n: usize) -> (Vec<u32>, usize) {
+    let mut label = vec![u32::MAX; n];
+    let mut count = 0u32;
+    let out = (0..n)
+        .map(|v| {
+            let r = uf.find_mut(v);
+            if label[r] == u32::MAX {
+                label[r] = count;
+                count += 1;
+            }
+            label[r]
+        })
+        .collect();
+    (out, count as usize)
 }
 
 /// Connected components of a graph on `n` nodes given by its edges.
@@ -72,7 +35,7 @@ pub(crate) fn components(
     for (a, b) in edges {
         uf.union(a, b);
     }
-    uf.labels()
+    labels(&mut uf, n)
 }
 
 /// Maximum flow by Dinic's algorithm on an undirected graph with real capacities.

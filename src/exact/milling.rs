@@ -8,7 +8,8 @@
 //! `x(δ(S)) >= 2` (connectivity, separated by minimum cuts). Minimize `Σ x_e`. A feasible `x`
 //! is a connected Eulerian multigraph on all pixels; its Euler tour (Hierholzer) is the walk.
 
-use super::cuts::{UnionFind, components, violated_cuts};
+use super::cuts::{components, labels, violated_cuts};
+use petgraph::unionfind::UnionFind;
 use super::driver::CutModel;
 use super::lp::{Formulation, Row};
 use super::walks::euler_walk;
@@ -182,7 +183,7 @@ impl<'a> MillingModel<'a> {
             for (&(a, b), _) in self.edges.iter().zip(mult.iter()).filter(|&(_, &m)| m > 0) {
                 uf.union(a, b);
             }
-            if uf.labels().1 != 1 {
+            if labels(&mut uf, self.region.len()).1 != 1 {
                 mult[k] = 2;
             }
         }

@@ -33,7 +33,8 @@
 //! of whole pixels (plain `x(δ(S)) >= 2`) are separated exactly by minimum cuts; cuts between
 //! side components (crossing walks) from the components of the support.
 
-use super::cuts::{UnionFind, violated_cuts};
+use super::cuts::{labels, violated_cuts};
+use petgraph::unionfind::UnionFind;
 use super::driver::CutModel;
 use super::lp::{Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
@@ -201,7 +202,7 @@ impl<'a> PassageModel<'a> {
                 uf.union(v * 4 + d as usize, w * 4 + ((d + 2) % 4) as usize);
             }
         }
-        let (raw, _) = uf.labels();
+        let (raw, _) = labels(&mut uf, 4 * n);
         let mut map = std::collections::HashMap::new();
         let label = (0..4 * n)
             .map(|i| {

@@ -2,23 +2,21 @@
 //! connected component.
 
 use super::*;
+use petgraph::unionfind::UnionFind;
 
 /// A minimum-weight perfect matching of the graph on `0..n` with weighted `edges` (each
 /// pair at most once), solved per connected component; `None` when none is perfect.
 pub fn min_weight_perfect_matching(n: usize, edges: &[(usize, usize, u32)]) -> Option<Vec<usize>> {
     // Connected components by union-find.
-    let mut root: Vec<usize> = (0..n).collect();
+    let mut uf = UnionFind::<usize>::new(n);
     for &(a, b, _) in edges {
-        let (ra, rb) = (find(&mut root, a), find(&mut root, b));
-        if ra != rb {
-            root[ra] = rb;
-        }
+        uf.union(a, b);
     }
     let mut piece_of_root: HashMap<usize, usize> = HashMap::new();
     let mut local = vec![0usize; n];
     let mut pieces: Vec<Vec<usize>> = Vec::new();
     for (v, slot) in local.iter_mut().enumerate() {
-        let r = find(&mut root, v);
+        let r = uf.find_mut(v);
         let k = *piece_of_root.entry(r).or_insert_with(|| {
             pieces.push(Vec::new());
             pieces.len() - 1
@@ -29,7 +27,7 @@ pub fn min_weight_perfect_matching(n: usize, edges: &[(usize, usize, u32)]) -> O
     let mut piece_edges: Vec<Vec<(u32, u32, i128)>> = vec![Vec::new(); pieces.len()];
     let big = i128::from(edges.iter().map(|e| e.2).max().unwrap_or(0)) + 1;
     for &(a, b, w) in edges {
-        let k = piece_of_root[&find(&mut root, a)];
+        let k = piece_of_root[&uf.find_mut(a)];
         piece_edges[k].push((local[a] as u32, local[b] as u32, big - i128::from(w)));
     }
     let mut mate = vec![usize::MAX; n];

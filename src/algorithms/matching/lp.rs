@@ -3,6 +3,7 @@
 //! where integral, repaired by blossom where not.
 
 use super::*;
+use petgraph::unionfind::UnionFind;
 use highs::{Col, ColProblem, HighsModelStatus, Model, Row, Sense};
 
 /// Pricing keeps, per endpoint, this many cheapest absent partners per round.
@@ -448,24 +449,21 @@ pub(super) fn repair(
         }
     }
     // First each component of the fractional edges alone, over the candidate pairs inside it.
-    let mut root: Vec<usize> = (0..p).collect();
+    let mut uf = UnionFind::<usize>::new(p);
     for (k, &(a, b, _)) in edges.iter().enumerate() {
         if x[k] > TOL && x[k] < 1.0 - TOL {
-            let (ra, rb) = (find(&mut root, a), find(&mut root, b));
-            if ra != rb {
-                root[ra] = rb;
-            }
+            uf.union(a, b);
         }
     }
     let mut inside: HashMap<usize, Vec<(usize, usize, u32)>> = HashMap::new();
     let mut members: HashMap<usize, Vec<usize>> = HashMap::new();
     for v in (0..p).filter(|&v| fixed[v] == usize::MAX) {
-        let r = find(&mut root, v);
+        let r = uf.find_mut(v);
         members.entry(r).or_default().push(v);
     }
     for &(a, b, w) in edges {
         if fixed[a] == usize::MAX && fixed[b] == usize::MAX {
-            let (ra, rb) = (find(&mut root, a), find(&mut root, b));
+            let (ra, rb) = (uf.find_mut(a), uf.find_mut(b));
             if ra == rb {
                 inside.entry(ra).or_default().push((a, b, w));
             }
@@ -515,24 +513,21 @@ pub(super) fn repair(
         if open.is_empty() {
             return Some(fixed);
         }
-        let mut root: Vec<usize> = (0..p).collect();
+        let mut uf = UnionFind::<usize>::new(p);
         let mut sub: HashMap<usize, Vec<(usize, usize, u32)>> = HashMap::new();
         for &(a, b, _) in edges {
             if fixed[a] == usize::MAX && fixed[b] == usize::MAX {
-                let (ra, rb) = (find(&mut root, a), find(&mut root, b));
-                if ra != rb {
-                    root[ra] = rb;
-                }
+                uf.union(a, b);
             }
         }
         let mut pieces: HashMap<usize, Vec<usize>> = HashMap::new();
         for &v in &open {
-            let r = find(&mut root, v);
+            let r = uf.find_mut(v);
             pieces.entry(r).or_default().push(v);
         }
         for &(a, b, w) in edges {
             if fixed[a] == usize::MAX && fixed[b] == usize::MAX {
-                let r = find(&mut root, a);
+                let r = uf.find_mut(a);
                 sub.entry(r).or_default().push((a, b, w));
             }
         }

@@ -2,6 +2,7 @@
 //! (Padberg–Rao: minimum odd cuts of a Gomory–Hu tree per fractional component).
 
 use super::*;
+use petgraph::unionfind::UnionFind;
 
 /// Fractional components up to this size are separated exactly (Gomory–Hu).
 pub(super) const GOMORY_HU_LIMIT: usize = 400;
@@ -12,22 +13,19 @@ pub(super) const GOMORY_HU_LIMIT: usize = 400;
 /// violated, one of those is). A vertex of C has no edge at 1, so x(δ(S)) for S ⊆ C counts
 /// only edges inside C, and a violated odd set anywhere has a violated odd part in one C.
 pub(super) fn violated_odd_sets(p: usize, edges: &[(usize, usize, u32)], x: &[f64]) -> Vec<Vec<usize>> {
-    let mut root: Vec<usize> = (0..p).collect();
+    let mut uf = UnionFind::<usize>::new(p);
     let fractional: Vec<usize> = (0..edges.len())
         .filter(|&k| x[k] > TOL && x[k] < 1.0 - TOL)
         .collect();
     for &k in &fractional {
         let (a, b, _) = edges[k];
-        let (ra, rb) = (find(&mut root, a), find(&mut root, b));
-        if ra != rb {
-            root[ra] = rb;
-        }
+        uf.union(a, b);
     }
     let mut members: HashMap<usize, Vec<usize>> = HashMap::new();
     let mut arcs: HashMap<usize, Vec<(usize, usize, f64)>> = HashMap::new();
     for &k in &fractional {
         let (a, b, _) = edges[k];
-        let r = find(&mut root, a);
+        let r = uf.find_mut(a);
         arcs.entry(r).or_default().push((a, b, x[k]));
         for v in [a, b] {
             members.entry(r).or_default().push(v);
@@ -161,12 +159,4 @@ pub(super) fn min_cut(adj: &[Vec<(usize, f64)>], s: usize, t: usize) -> (f64, Ve
         }
         flow += push;
     }
-}
-
-pub(super) fn find(root: &mut [usize], mut x: usize) -> usize {
-    while root[x] != x {
-        root[x] = root[root[x]];
-        x = root[x];
-    }
-    x
 }

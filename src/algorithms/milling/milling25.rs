@@ -89,6 +89,7 @@
 
 use super::contour::{ContourWalk, contour_walks};
 use crate::algorithms::euler::GridMultigraph;
+use petgraph::unionfind::UnionFind;
 use crate::algorithms::{Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
@@ -226,34 +227,24 @@ pub fn milling25(region: &Region) -> Result<Solution> {
 /// Joins the components of the multigraph by doubled grid edges; returns the moves added.
 fn connect_components(region: &Region, graph: &mut GridMultigraph) -> u64 {
     let n = region.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
+    let mut uf = UnionFind::new(n);
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
             if graph.count(i, d) > 0 {
                 let j = region.neighbor(i, d).expect("edges join region pixels");
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                parent[a] = b;
+                uf.union(i, j);
             }
         }
     }
     let mut added = 0;
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
-            if let Some(j) = region.neighbor(i, d) {
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                if a != b {
-                    parent[a] = b;
-                    graph.add(i, j, d);
-                    graph.add(i, j, d);
-                    added += 2;
-                }
+            if let Some(j) = region.neighbor(i, d)
+                && uf.union(i, j)
+            {
+                graph.add(i, j, d);
+                graph.add(i, j, d);
+                added += 2;
             }
         }
     }
