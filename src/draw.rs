@@ -571,8 +571,9 @@ const TITLE_COLOUR: RGBColor = RGBColor(0x1a, 0x1a, 0x1a);
 const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
 
 /// Walk colours: the Okabe–Ito colour-blind-safe palette without its yellow and black (too
-/// faint and too close to the outline), then two more; cycled when there are more walks.
-const PALETTE: [RGBColor; 8] = [
+/// faint and too close to the outline), then two more; cycled when there are more walks. The
+/// plots of `harness::plots` use it too.
+pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0x00, 0x72, 0xb2), // blue
     RGBColor(0xd5, 0x5e, 0x00), // vermillion
     RGBColor(0x00, 0x9e, 0x73), // bluish green

@@ -11,6 +11,7 @@ pub mod checker;
 pub mod draw;
 pub mod error;
 pub mod exact;
+pub mod flow;
 pub mod generate;
 pub mod gridfile;
 pub mod harness;

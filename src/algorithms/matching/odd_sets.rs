@@ -2,6 +2,7 @@
 //! (Padberg–Rao: minimum odd cuts of a Gomory–Hu tree per fractional component).
 
 use super::*;
+use crate::flow::FlowGraph;
 use petgraph::unionfind::UnionFind;
 
 /// Fractional components up to this size are separated exactly (Gomory–Hu).
@@ -54,17 +55,17 @@ pub(super) fn violated_odd_sets(p: usize, edges: &[(usize, usize, u32)], x: &[f6
 pub(super) fn odd_min_cuts(vertices: &[usize], arcs: &[(usize, usize, f64)]) -> Vec<Vec<usize>> {
     let n = vertices.len();
     let local = |v: usize| vertices.binary_search(&v).expect("a member");
-    let mut adj: Vec<Vec<(usize, f64)>> = vec![Vec::new(); n];
-    for &(a, b, c) in arcs {
-        let (a, b) = (local(a), local(b));
-        adj[a].push((b, c));
-        adj[b].push((a, c));
-    }
+    let local_arcs: Vec<(usize, usize, f64)> = arcs
+        .iter()
+        .map(|&(a, b, c)| (local(a), local(b), c))
+        .collect();
+    let mut graph = FlowGraph::new(n, &local_arcs);
+    let mut side = vec![false; n];
     let mut parent = vec![0usize; n];
     let mut value = vec![0.0f64; n];
     for s in 1..n {
         let t = parent[s];
-        let (f, side) = min_cut(&adj, s, t);
+        let f = graph.max_flow(s, t, f64::INFINITY, &mut side);
         value[s] = f;
         for i in 0..n {
             if i != s && side[i] && parent[i] == t {
@@ -116,47 +117,4 @@ pub(super) fn odd_min_cuts(vertices: &[usize], arcs: &[(usize, usize, f64)]) -> 
         }
     }
     found
-}
-
-/// A minimum s-t cut (Edmonds–Karp on a small graph): its value and the source side.
-pub(super) fn min_cut(adj: &[Vec<(usize, f64)>], s: usize, t: usize) -> (f64, Vec<bool>) {
-    let n = adj.len();
-    // Residual capacities, keyed by ordered vertex pair.
-    let mut residual: HashMap<(usize, usize), f64> = HashMap::new();
-    for (a, list) in adj.iter().enumerate() {
-        for &(b, c) in list {
-            *residual.entry((a, b)).or_insert(0.0) += c;
-        }
-    }
-    let mut flow = 0.0;
-    loop {
-        let mut prev = vec![usize::MAX; n];
-        prev[s] = s;
-        let mut queue = std::collections::VecDeque::from([s]);
-        while let Some(a) = queue.pop_front() {
-            for &(b, _) in &adj[a] {
-                if prev[b] == usize::MAX && residual[&(a, b)] > 1e-9 {
-                    prev[b] = a;
-                    queue.push_back(b);
-                }
-            }
-        }
-        if prev[t] == usize::MAX {
-            let side = prev.iter().map(|&q| q != usize::MAX).collect();
-            return (flow, side);
-        }
-        let mut push = f64::INFINITY;
-        let mut b = t;
-        while b != s {
-            push = push.min(residual[&(prev[b], b)]);
-            b = prev[b];
-        }
-        let mut b = t;
-        while b != s {
-            *residual.get_mut(&(prev[b], b)).expect("an arc") -= push;
-            *residual.get_mut(&(b, prev[b])).expect("an arc") += push;
-            b = prev[b];
-        }
-        flow += push;
-    }
 }
