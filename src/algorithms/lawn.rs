@@ -27,12 +27,12 @@
 //! by [`crate::lawn_check`] with Euclidean lengths in milli-units.
 
 use super::euler::GridMultigraph;
-use petgraph::unionfind::UnionFind;
 use super::{Against, Algorithm, Cutter, Guarantee, Objective, Options, Output, Solution};
 use crate::error::{Error, Result};
 use crate::lawn_check::{centre, distance, required_cells};
 use crate::region::{Pixel, Region};
 use crate::tour::{CycleCover, Walk};
+use petgraph::unionfind::UnionFind;
 use std::collections::HashMap;
 
 /// Above this many points `lawn-2opt` starts from the MST tour only (the blossom matching is

@@ -7,37 +7,7 @@
 //! have at most a few thousand nodes, so exact separation is cheap next to an LP re-solve.
 
 use crate::flow::FlowGraph;
-use petgraph::unionfind::UnionFind;
-
-/// Component label in `0..count` for every element of `uf` (`n` elements), numbered in order
-/// of first appearance, and the count.
-pub(crate) fn labels(uf: &mut UnionFind<usize>, n: usize) -> (Vec<u32>, usize) {
-    let mut label = vec![u32::MAX; n];
-    let mut count = 0u32;
-    let out = (0..n)
-        .map(|v| {
-            let r = uf.find_mut(v);
-            if label[r] == u32::MAX {
-                label[r] = count;
-                count += 1;
-            }
-            label[r]
-        })
-        .collect();
-    (out, count as usize)
-}
-
-/// Connected components of a graph on `n` nodes given by its edges.
-pub(crate) fn components(
-    n: usize,
-    edges: impl IntoIterator<Item = (usize, usize)>,
-) -> (Vec<u32>, usize) {
-    let mut uf = UnionFind::new(n);
-    for (a, b) in edges {
-        uf.union(a, b);
-    }
-    labels(&mut uf, n)
-}
+use crate::topology::graph_components;
 
 /// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
 /// weight is below `threshold`, for a graph on `n` nodes with weighted edges.
@@ -54,7 +24,7 @@ pub(crate) fn violated_cuts(
         return Vec::new();
     }
     let support: Vec<(usize, usize, f64)> = edges.iter().copied().filter(|e| e.2 > 1e-9).collect();
-    let (label, count) = components(n, support.iter().map(|&(a, b, _)| (a, b)));
+    let (label, count) = graph_components(n, support.iter().map(|&(a, b, _)| (a, b)));
     let mut out: Vec<Vec<bool>> = Vec::new();
     if count > 1 {
         for c in 0..count as u32 {

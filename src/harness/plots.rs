@@ -14,8 +14,8 @@
 
 use super::rows::{EXACT, Row};
 use crate::algorithms::{self, Against, Guarantee, Quantity};
-use crate::draw::{FONT_FAMILY, ensure_fonts};
 use crate::draw::PALETTE;
+use crate::draw::{FONT_FAMILY, ensure_fonts};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;

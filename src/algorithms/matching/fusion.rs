@@ -100,7 +100,9 @@ pub(super) fn solve_graph_matching(
 /// every vertex whose extent meets the cut line; edges join vertices whose extents meet, so
 /// none joins the two sides.
 #[allow(clippy::type_complexity)]
-pub(super) fn bisection(extent: &[Extent]) -> (Vec<usize>, Vec<(usize, usize)>, Vec<(usize, usize)>) {
+pub(super) fn bisection(
+    extent: &[Extent],
+) -> (Vec<usize>, Vec<(usize, usize)>, Vec<(usize, usize)>) {
     enum Tree {
         Leaf(usize, usize),
         Node(Box<Tree>, Box<Tree>),

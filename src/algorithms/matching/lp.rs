@@ -3,8 +3,8 @@
 //! where integral, repaired by blossom where not.
 
 use super::*;
-use petgraph::unionfind::UnionFind;
 use highs::{Col, ColProblem, HighsModelStatus, Model, Row, Sense};
+use petgraph::unionfind::UnionFind;
 
 /// Pricing keeps, per endpoint, this many cheapest absent partners per round.
 pub(super) const PRICE_K: usize = 8;
@@ -111,7 +111,10 @@ impl MatchingLp {
             return Ok(());
         }
         let mut rows = vec![(self.degree_rows[a], 1.0), (self.degree_rows[b], 1.0)];
-        rows.extend(self.crossing(a, b).map(|c| (self.cut_rows[c as usize], 1.0)));
+        rows.extend(
+            self.crossing(a, b)
+                .map(|c| (self.cut_rows[c as usize], 1.0)),
+        );
         let model = self.model.as_mut().expect("the model is alive");
         let col = model
             .try_add_column(f64::from(w), 0.0.., rows)
@@ -415,7 +418,11 @@ pub(super) fn price(
 }
 
 /// The LP's matching, when x is integral.
-pub(super) fn lp_matching(p: usize, edges: &[(usize, usize, u32)], x: &[f64]) -> Option<Vec<usize>> {
+pub(super) fn lp_matching(
+    p: usize,
+    edges: &[(usize, usize, u32)],
+    x: &[f64],
+) -> Option<Vec<usize>> {
     let mut mate = vec![usize::MAX; p];
     for (k, &(a, b, _)) in edges.iter().enumerate() {
         if x[k] > TOL && x[k] < 1.0 - TOL {

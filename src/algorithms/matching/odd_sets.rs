@@ -13,7 +13,11 @@ pub(super) const GOMORY_HU_LIMIT: usize = 400;
 /// minimum cuts of a Gomory–Hu tree of C (Padberg–Rao: if some odd set inside C is
 /// violated, one of those is). A vertex of C has no edge at 1, so x(δ(S)) for S ⊆ C counts
 /// only edges inside C, and a violated odd set anywhere has a violated odd part in one C.
-pub(super) fn violated_odd_sets(p: usize, edges: &[(usize, usize, u32)], x: &[f64]) -> Vec<Vec<usize>> {
+pub(super) fn violated_odd_sets(
+    p: usize,
+    edges: &[(usize, usize, u32)],
+    x: &[f64],
+) -> Vec<Vec<usize>> {
     let mut uf = UnionFind::<usize>::new(p);
     let fractional: Vec<usize> = (0..edges.len())
         .filter(|&k| x[k] > TOL && x[k] < 1.0 - TOL)

@@ -22,13 +22,13 @@
 
 use super::contour::contour_walks;
 use super::tsp65::{LinkStats, link_internal_nodes};
-use petgraph::unionfind::UnionFind;
 use crate::algorithms::euler::GridMultigraph;
 use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
 use crate::tour::CycleCover;
+use petgraph::unionfind::UnionFind;
 
 /// Theorem 7 needs a connected grid graph without local cut vertices.
 pub fn precondition(region: &Region) -> Result<()> {

@@ -89,12 +89,12 @@
 
 use super::contour::{ContourWalk, contour_walks};
 use crate::algorithms::euler::GridMultigraph;
-use petgraph::unionfind::UnionFind;
 use crate::algorithms::{Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
 use crate::tour::CycleCover;
+use petgraph::unionfind::UnionFind;
 use rustworkx_core::max_weight_matching::max_weight_matching;
 use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 
