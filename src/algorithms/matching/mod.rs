@@ -327,7 +327,7 @@ mod tests {
     #[test]
     #[ignore = "a measurement, takes a minute"]
     fn priced_matching_gap() {
-        use crate::algorithms::strips_matching::strip_ports;
+        use crate::algorithms::strips_matching::{strip_floors, strip_ports};
         use crate::generate::{Family, GenParams, generate};
         for (family, n) in [(Family::RandomSimple, 6000), (Family::RandomHoled, 4000)] {
             let mut params = GenParams::new(family, 3);
@@ -336,15 +336,7 @@ mod tests {
             let cover = crate::strip_cover::strip_cover(&region);
             let (links, ports) = strip_ports(&region, &cover.strips);
             let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
-            let floor: Vec<u32> = (0..ports.len())
-                .map(|i| {
-                    if links[i / 2].0 == links[i / 2].1 {
-                        2
-                    } else {
-                        0
-                    }
-                })
-                .collect();
+            let floor = strip_floors(&links);
             let priced =
                 match_ports_with(&region, &ports, &partner, &floor, Candidates::Priced).unwrap();
             let full =

@@ -57,6 +57,20 @@ pub fn strip_ports(region: &Region, strips: &[Strip]) -> (Vec<(usize, usize)>, V
     (links, ports)
 }
 
+/// The least turn distance of every strip end to its partner (the other end of its strip): a
+/// one-pixel strip closed on itself is a still walk of 4 turns, 2 for the strip and 2 here.
+pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
+    (0..2 * links.len())
+        .map(|i| {
+            if links[i / 2].0 == links[i / 2].1 {
+                2
+            } else {
+                0
+            }
+        })
+        .collect()
+}
+
 /// Computes the strips-matching cycle cover of Theorem 5.5.
 ///
 /// # Complexity
@@ -66,16 +80,7 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
     let cover = strip_cover(region);
     let (links, ports) = strip_ports(region, &cover.strips);
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
-    // A one-pixel strip closed on itself is a still walk of 4 turns: 2 for the strip, 2 here.
-    let floor: Vec<u32> = (0..ports.len())
-        .map(|i| {
-            if links[i / 2].0 == links[i / 2].1 {
-                2
-            } else {
-                0
-            }
-        })
-        .collect();
+    let floor = strip_floors(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     let cc = join_links(region, &links, &ports, &matching)?;
     Ok(StripMatchingCover {
