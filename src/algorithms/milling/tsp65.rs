@@ -686,7 +686,7 @@ mod tests {
     fn blocks_of_two_squares_and_a_bridge() {
         // Two 2×2 squares joined by a one-pixel corridor: blocks 2×2, three bridges, 2×2.
         let r = Region::from_ascii("##..##\n######\n");
-        let blocks = biconnected_blocks(&r);
+        let blocks = crate::topology::biconnected_blocks(&r);
         let mut sizes: Vec<usize> = blocks.iter().map(Vec::len).collect();
         sizes.sort_unstable();
         assert_eq!(sizes, vec![2, 2, 2, 4, 4]);
