@@ -14,11 +14,11 @@
 //!   every closed walk turns through at least 360°, which is 4 turns (a U-turn is 2), so each
 //!   component costs at least 4.
 //!
-//! The LP relaxations of the exact models (with all their connectivity cuts) are stronger and
-//! cost an LP solve: [`lp_lower_bound`]. [`best_lower_bound`] takes the largest and says which
-//! bound it used.
+//! The bound for an exact objective ([`exact::cheap_lower_bound`](crate::exact::cheap_lower_bound))
+//! and the LP relaxations of the exact models (with all their connectivity cuts, stronger and
+//! costing an LP solve: [`exact::lp_lower_bound`](crate::exact::lp_lower_bound)) live with the
+//! exact models, which use the bounds here.
 
-use crate::exact::{self, Objective};
 use crate::region::Region;
 use crate::strip_cover::strip_cover;
 use crate::topology::{colour_counts, components};
@@ -32,7 +32,7 @@ pub struct Bound {
 }
 
 impl Bound {
-    fn new(value: u64, source: &'static str) -> Bound {
+    pub fn new(value: u64, source: &'static str) -> Bound {
         Bound { value, source }
     }
 
@@ -105,49 +105,6 @@ pub fn turn_lower_bound(region: &Region) -> Bound {
         )
     } else {
         Bound::new(total, "min strip cover (Lemma 4.2)")
-    }
-}
-
-/// The best cheap bound for an objective (no LP).
-pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
-    match objective {
-        Objective::Length => length_lower_bound(region),
-        Objective::CcTurns | Objective::TourTurns => turn_lower_bound(region),
-        Objective::Weighted { turn_cost } => {
-            // Both bounds hold for the same tour.
-            let l = length_lower_bound(region).value;
-            let t = turn_lower_bound(region).value;
-            Bound::new(
-                l + u64::from(turn_cost) * t,
-                "length bound + C * turn bound",
-            )
-        }
-        Objective::LawnTsp => lawn_tsp_lower_bound(region),
-    }
-}
-
-/// The LP relaxation of the exact model with all its connectivity cuts, rounded up to even;
-/// `None` if it did not converge within `time_limit` seconds (or the problem is infeasible).
-pub fn lp_lower_bound(
-    region: &Region,
-    objective: Objective,
-    time_limit: Option<f64>,
-) -> Option<Bound> {
-    exact::lp_relaxation_bound(region, objective, time_limit)
-        .map(|v| Bound::new(v, "lp relaxation with cuts"))
-}
-
-/// The largest available bound: the cheap ones and, when `lp_time_limit` is given, the LP
-/// relaxation.
-pub fn best_lower_bound(
-    region: &Region,
-    objective: Objective,
-    lp_time_limit: Option<f64>,
-) -> Bound {
-    let cheap = cheap_lower_bound(region, objective);
-    match lp_time_limit.and_then(|t| lp_lower_bound(region, objective, Some(t))) {
-        Some(lp) => cheap.max(lp),
-        None => cheap,
     }
 }
 

@@ -146,7 +146,7 @@ pub fn draw(
         } else {
             Vec::new()
         },
-        contours: boundary_contours(region),
+        contours: crate::topology::boundary_polygons(region),
         walks,
         detailed,
         mark_turns: opts.mark_turns,
@@ -331,71 +331,6 @@ fn grid_segments(region: &Region) -> Vec<[(i32, i32); 2]> {
     segments
 }
 
-/// The region's boundary as closed lattice polygons (corners only, the first not repeated),
-/// traced with the region on the left: outer boundaries counter-clockwise, holes clockwise.
-///
-/// Where two region pixels touch only at a corner, the tracing turns left (towards the
-/// region), so they end up on separate contours, as 4-adjacency has it.
-fn boundary_contours(region: &Region) -> Vec<Vec<(i32, i32)>> {
-    if region.is_empty() {
-        return Vec::new();
-    }
-    let b = region.bbox();
-    let (w1, h1) = (b.width() + 1, b.height() + 1);
-    let vertex = |x: i32, y: i32| (y - b.min_y) as usize * w1 + (x - b.min_x) as usize;
-    // out[v]: bit d set when a boundary edge leaves lattice point v in direction d.
-    let mut out = vec![0u8; w1 * h1];
-    let mut edges = 0usize;
-    for &p in region.pixels() {
-        let (x, y) = (p.x, p.y);
-        for (side, start, d) in [
-            (Dir::S, (x, y), Dir::E),
-            (Dir::E, (x + 1, y), Dir::N),
-            (Dir::N, (x + 1, y + 1), Dir::W),
-            (Dir::W, (x, y + 1), Dir::S),
-        ] {
-            if !region.contains(p.step(side)) {
-                out[vertex(start.0, start.1)] |= 1 << d.index();
-                edges += 1;
-            }
-        }
-    }
-    let next_dir = |v: usize, arriving: Dir| {
-        [arriving.left(), arriving, arriving.right()]
-            .into_iter()
-            .find(|d| out[v] & (1 << d.index()) != 0)
-    };
-    let mut left = out.clone();
-    let mut contours = Vec::new();
-    for v0 in 0..left.len() {
-        while left[v0] != 0 {
-            let d0 = Dir::from_index(left[v0].trailing_zeros() as usize);
-            let mut steps: Vec<(usize, Dir)> = Vec::new();
-            let (mut v, mut d) = (v0, d0);
-            loop {
-                steps.push((v, d));
-                left[v] &= !(1 << d.index());
-                let (x, y) = ((v % w1) as i32, (v / w1) as i32);
-                let (dx, dy) = d.delta();
-                v = (y + dy) as usize * w1 + (x + dx) as usize;
-                match next_dir(v, d) {
-                    Some(nd) if (v, nd) != (v0, d0) && steps.len() <= edges => d = nd,
-                    _ => break,
-                }
-            }
-            let corners = (0..steps.len())
-                .filter(|&i| steps[(i + steps.len() - 1) % steps.len()].1 != steps[i].1)
-                .map(|i| {
-                    let v = steps[i].0;
-                    ((v % w1) as i32 + b.min_x, (v / w1) as i32 + b.min_y)
-                })
-                .collect();
-            contours.push(corners);
-        }
-    }
-    contours
-}
-
 /// Sideways distance between two strands of an edge traversed more than once, in grid units.
 const STRAND_GAP: f64 = 0.2;
 /// The widest the strands of one edge may spread, in grid units.
@@ -571,8 +506,9 @@ const TITLE_COLOUR: RGBColor = RGBColor(0x1a, 0x1a, 0x1a);
 const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
 
 /// Walk colours: the Okabe–Ito colour-blind-safe palette without its yellow and black (too
-/// faint and too close to the outline), then two more; cycled when there are more walks.
-const PALETTE: [RGBColor; 8] = [
+/// faint and too close to the outline), then two more; cycled when there are more walks. The
+/// plots of `harness::plots` use it too.
+pub const PALETTE: [RGBColor; 8] = [
     RGBColor(0x00, 0x72, 0xb2), // blue
     RGBColor(0xd5, 0x5e, 0x00), // vermillion
     RGBColor(0x00, 0x9e, 0x73), // bluish green
@@ -1128,7 +1064,7 @@ mod tests {
              #.#
              ###",
         );
-        let contours = boundary_contours(&ring);
+        let contours = crate::topology::boundary_polygons(&ring);
         assert_eq!(contours.len(), 2);
         let outer = contours.iter().find(|c| c.contains(&(0, 0))).unwrap();
         let hole = contours.iter().find(|c| c.contains(&(1, 1))).unwrap();
@@ -1141,7 +1077,7 @@ mod tests {
             ".#
              #.",
         );
-        let contours = boundary_contours(&diagonal);
+        let contours = crate::topology::boundary_polygons(&diagonal);
         assert_eq!(contours.len(), 2);
         assert!(contours.iter().all(|c| c.len() == 4));
     }

@@ -17,11 +17,22 @@
 //! Lengths in result tables are integers: L1 lengths are exact; Euclidean lengths are
 //! reported in milli-units rounded up, `length_milli = ⌈1000 · L⌉`.
 
-use crate::algorithms::Cutter;
 use crate::region::{Pixel, Region};
 use crate::tour::CycleCover;
 use serde::Serialize;
 use std::collections::HashSet;
+
+/// Cutter and motion for lawn mowing (milling paper, Section 4).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Cutter {
+    /// Unit square, rectilinear motion (L1 lengths).
+    #[default]
+    Square,
+    /// Unit square, free motion (the grid with diagonals).
+    SquareFree,
+    /// Unit disk (hexagonal lattice).
+    Disk,
+}
 
 const SQRT3: f64 = 1.732_050_807_568_877_2;
 

@@ -43,6 +43,7 @@ pub mod draw;
 pub mod error;
 pub mod evaluate;
 pub mod exact;
+pub mod flow;
 pub mod generate;
 pub mod gridfile;
 pub mod harness;

@@ -518,6 +518,163 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
     out
 }
 
+/// The biconnected components (blocks) of the grid graph, as pixel lists: iterative
+/// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels. Blocks come in the
+/// order the search closes them (the order Theorem 5's tours of the blocks are built in).
+pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
+    let n = region.len();
+    let mut disc = vec![u32::MAX; n];
+    let mut low = vec![0u32; n];
+    let mut time = 0u32;
+    let mut edges: Vec<(usize, usize)> = Vec::new();
+    let mut blocks = Vec::new();
+    let mut stamp = vec![usize::MAX; n];
+    let mut frames: Vec<(usize, usize, usize)> = Vec::new();
+    for root in 0..n {
+        if disc[root] != u32::MAX {
+            continue;
+        }
+        disc[root] = time;
+        low[root] = time;
+        time += 1;
+        frames.push((root, usize::MAX, 0));
+        while let Some(frame) = frames.last_mut() {
+            let (v, parent, d) = *frame;
+            if d < 4 {
+                frame.2 += 1;
+                let Some(w) = region.neighbor(v, Dir::from_index(d)) else {
+                    continue;
+                };
+                if disc[w] == u32::MAX {
+                    disc[w] = time;
+                    low[w] = time;
+                    time += 1;
+                    edges.push((v, w));
+                    frames.push((w, v, 0));
+                } else if w != parent && disc[w] < disc[v] {
+                    edges.push((v, w));
+                    low[v] = low[v].min(disc[w]);
+                }
+            } else {
+                frames.pop();
+                if parent != usize::MAX {
+                    low[parent] = low[parent].min(low[v]);
+                    if low[v] >= disc[parent] {
+                        let id = blocks.len();
+                        let mut block = Vec::new();
+                        while let Some((a, b)) = edges.pop() {
+                            for x in [a, b] {
+                                if stamp[x] != id {
+                                    stamp[x] = id;
+                                    block.push(x);
+                                }
+                            }
+                            if (a, b) == (parent, v) {
+                                break;
+                            }
+                        }
+                        blocks.push(block);
+                    }
+                }
+            }
+        }
+    }
+    blocks
+}
+
+/// The region's boundary as closed lattice polygons (corners only, the first not repeated),
+/// traced with the region on the left: outer boundaries counter-clockwise, holes clockwise.
+///
+/// Where two region pixels touch only at a corner, the tracing turns left (towards the
+/// region), so they end up on separate contours, as 4-adjacency has it.
+pub fn boundary_polygons(region: &Region) -> Vec<Vec<(i32, i32)>> {
+    if region.is_empty() {
+        return Vec::new();
+    }
+    let b = region.bbox();
+    let (w1, h1) = (b.width() + 1, b.height() + 1);
+    let vertex = |x: i32, y: i32| (y - b.min_y) as usize * w1 + (x - b.min_x) as usize;
+    // out[v]: bit d set when a boundary edge leaves lattice point v in direction d.
+    let mut out = vec![0u8; w1 * h1];
+    let mut edges = 0usize;
+    for &p in region.pixels() {
+        let (x, y) = (p.x, p.y);
+        for (side, start, d) in [
+            (Dir::S, (x, y), Dir::E),
+            (Dir::E, (x + 1, y), Dir::N),
+            (Dir::N, (x + 1, y + 1), Dir::W),
+            (Dir::W, (x, y + 1), Dir::S),
+        ] {
+            if !region.contains(p.step(side)) {
+                out[vertex(start.0, start.1)] |= 1 << d.index();
+                edges += 1;
+            }
+        }
+    }
+    let next_dir = |v: usize, arriving: Dir| {
+        [arriving.left(), arriving, arriving.right()]
+            .into_iter()
+            .find(|d| out[v] & (1 << d.index()) != 0)
+    };
+    let mut left = out.clone();
+    let mut contours = Vec::new();
+    for v0 in 0..left.len() {
+        while left[v0] != 0 {
+            let d0 = Dir::from_index(left[v0].trailing_zeros() as usize);
+            let mut steps: Vec<(usize, Dir)> = Vec::new();
+            let (mut v, mut d) = (v0, d0);
+            loop {
+                steps.push((v, d));
+                left[v] &= !(1 << d.index());
+                let (x, y) = ((v % w1) as i32, (v / w1) as i32);
+                let (dx, dy) = d.delta();
+                v = (y + dy) as usize * w1 + (x + dx) as usize;
+                match next_dir(v, d) {
+                    Some(nd) if (v, nd) != (v0, d0) && steps.len() <= edges => d = nd,
+                    _ => break,
+                }
+            }
+            let corners = (0..steps.len())
+                .filter(|&i| steps[(i + steps.len() - 1) % steps.len()].1 != steps[i].1)
+                .map(|i| {
+                    let v = steps[i].0;
+                    ((v % w1) as i32 + b.min_x, (v / w1) as i32 + b.min_y)
+                })
+                .collect();
+            contours.push(corners);
+        }
+    }
+    contours
+}
+
+/// Connected components of the graph on nodes `0..n` with the given edges: a label per node in
+/// `0..count`, numbered in order of each component's smallest node, and the count.
+///
+/// # Complexity
+/// O((n + edges) α(n)) (petgraph's union-find).
+pub fn graph_components(
+    n: usize,
+    edges: impl IntoIterator<Item = (usize, usize)>,
+) -> (Vec<u32>, usize) {
+    let mut uf = petgraph::unionfind::UnionFind::<usize>::new(n);
+    for (a, b) in edges {
+        uf.union(a, b);
+    }
+    let mut label = vec![u32::MAX; n];
+    let mut count = 0u32;
+    let out = (0..n)
+        .map(|v| {
+            let r = uf.find_mut(v);
+            if label[r] == u32::MAX {
+                label[r] = count;
+                count += 1;
+            }
+            label[r]
+        })
+        .collect();
+    (out, count as usize)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,7 +6,6 @@
 //! with C = 0 is the length optimum. Every solve has a time limit; instances stay tiny.
 
 use mowmill::algorithms::{self, Objective as AlgoObjective};
-use mowmill::bounds;
 use mowmill::checker::{self, Mode};
 use mowmill::exact::{ExactOptions, ExactResult, Objective, Status, solve};
 use mowmill::gridfile::GridFile;
@@ -362,9 +361,9 @@ proptest! {
         let mut opt = HashMap::new();
         for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::LawnTsp] {
             let v = value(&r, o);
-            let cheap = bounds::cheap_lower_bound(&r, o).value;
+            let cheap = mowmill::exact::cheap_lower_bound(&r, o).value;
             prop_assert!(cheap <= v, "{o}: cheap bound {cheap} > optimum {v}");
-            if let Some(lp) = bounds::lp_lower_bound(&r, o, Some(LIMIT)) {
+            if let Some(lp) = mowmill::exact::lp_lower_bound(&r, o, Some(LIMIT)) {
                 prop_assert!(lp.value <= v, "{o}: LP bound {} > optimum {v}", lp.value);
             }
             opt.insert(o, v);

@@ -32,6 +32,7 @@ use crate::error::{Error, Result};
 use crate::lawn_check::{centre, distance, required_cells};
 use crate::region::{Pixel, Region};
 use crate::tour::{CycleCover, Walk};
+use petgraph::unionfind::UnionFind;
 use std::collections::HashMap;
 
 /// Above this many points `lawn-2opt` starts from the MST tour only (the blossom matching is
@@ -323,30 +324,6 @@ impl KdTree {
     }
 }
 
-struct UnionFind(Vec<u32>);
-
-impl UnionFind {
-    fn new(n: usize) -> Self {
-        UnionFind((0..n as u32).collect())
-    }
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] as usize != x {
-            let p = self.0[x] as usize;
-            self.0[x] = self.0[p];
-            x = p;
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) -> bool {
-        let (a, b) = (self.find(a), self.find(b));
-        if a == b {
-            return false;
-        }
-        self.0[a] = b as u32;
-        true
-    }
-}
-
 /// An exact minimum spanning tree of S: Kruskal on the unit lattice edges (the smallest
 /// possible distance), then Borůvka rounds joining components by their nearest foreign
 /// points, searched only from points with a lattice neighbour outside their component (a
@@ -388,14 +365,14 @@ fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
     while edges.len() + 1 < n {
         let border: Vec<usize> = (0..n)
             .filter(|&i| {
-                let ri = uf.find(i);
+                let ri = uf.find_mut(i);
                 p.unit_steps().iter().any(|&(dx, dy)| {
                     let q = Pixel::new(p.pts[i].x + dx, p.pts[i].y + dy);
-                    index.get(&q).is_none_or(|&j| uf.find(j) != ri)
+                    index.get(&q).is_none_or(|&j| uf.find_mut(j) != ri)
                 })
             })
             .collect();
-        let root: Vec<usize> = (0..n).map(|i| uf.find(i)).collect();
+        let root: Vec<usize> = (0..n).map(|i| uf.find_mut(i)).collect();
         let mut tree = KdTree::new(p, border.clone());
         tree.label(&root);
         let mut best: HashMap<usize, (u64, usize, usize)> = HashMap::new();

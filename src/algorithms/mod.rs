@@ -17,24 +17,23 @@ use std::collections::BTreeMap;
 use std::fmt;
 use theorems::{Claim, Paper, Theorem};
 
-pub mod contour;
+// Shared pieces (no algorithm of their own).
 pub mod euler;
-pub mod holes1325;
+pub mod precondition;
+pub mod walks;
+// Lawn mowing and milling (Arkin, Fekete, Mitchell).
 pub mod lawn;
-pub mod milling25;
-pub mod tsp65;
-// Turn-cost paper (issue 5).
-pub mod boundary_cc;
-pub mod coverage4;
-pub mod endpoint_matching;
-pub mod merge;
-pub mod star_cover;
-pub mod strips_double;
-pub mod strips_matching;
+pub mod milling;
+pub use milling::{contour, holes1325, milling25, tsp65};
+// Optimal covering tours with turn costs (issue 5).
+pub mod matching;
 pub mod theorems;
-pub mod thin;
-pub mod thin_euler;
-pub mod turn_distance;
+pub mod turns;
+pub use matching as endpoint_matching;
+pub use matching::turn_distance;
+pub use turns::{
+    boundary_cc, coverage4, merge, star_cover, strips_double, strips_matching, thin, thin_euler,
+};
 
 /// What a result is measured by.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
@@ -353,17 +352,7 @@ pub enum Merge {
     Smart,
 }
 
-/// Cutter and motion for lawn mowing (milling paper, Section 4).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Cutter {
-    /// Unit square, rectilinear motion (L1 lengths).
-    #[default]
-    Square,
-    /// Unit square, free motion (the grid with diagonals).
-    SquareFree,
-    /// Unit disk (hexagonal lattice).
-    Disk,
-}
+pub use crate::lawn_check::Cutter;
 
 impl Merge {
     pub const NAMES: [&'static str; 2] = ["naive", "smart"];

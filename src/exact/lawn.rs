@@ -9,10 +9,11 @@
 //! The walk visits the centres in tour order, moving horizontally then vertically between
 //! consecutive ones.
 
-use super::cuts::{components, violated_cuts};
+use super::cuts::violated_cuts;
 use super::driver::CutModel;
 use super::lp::{Formulation, Row};
 use crate::region::{Pixel, Region};
+use crate::topology::graph_components;
 
 pub(crate) struct LawnModel<'a> {
     region: &'a Region,
@@ -303,7 +304,7 @@ impl CutModel for LawnModel<'_> {
             .enumerate()
             .filter(|&(k, _)| x[k] > 0.5)
             .map(|(_, &(i, j))| (i as usize, j as usize));
-        components(self.n(), used).1 == 1
+        graph_components(self.n(), used).1 == 1
     }
 
     fn repair(&self, x: &[f64]) -> Option<Vec<f64>> {

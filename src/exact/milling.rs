@@ -8,11 +8,12 @@
 //! `x(δ(S)) >= 2` (connectivity, separated by minimum cuts). Minimize `Σ x_e`. A feasible `x`
 //! is a connected Eulerian multigraph on all pixels; its Euler tour (Hierholzer) is the walk.
 
-use super::cuts::{UnionFind, components, violated_cuts};
+use super::cuts::violated_cuts;
 use super::driver::CutModel;
 use super::lp::{Formulation, Row};
 use super::walks::euler_walk;
 use crate::region::{Pixel, Region};
+use crate::topology::graph_components;
 
 pub(crate) struct MillingModel<'a> {
     region: &'a Region,
@@ -124,7 +125,7 @@ impl<'a> MillingModel<'a> {
         let used = (0..self.num_edges())
             .filter(|&k| mult[k] > 0)
             .map(|k| self.edges[k]);
-        components(self.region.len(), used)
+        graph_components(self.region.len(), used)
     }
 
     /// Makes an even, covering multiplicity vector connected: zero-cost swaps across unit
@@ -178,11 +179,8 @@ impl<'a> MillingModel<'a> {
                 continue;
             }
             mult[k] = 0;
-            let mut uf = UnionFind::new(self.region.len());
-            for (&(a, b), _) in self.edges.iter().zip(mult.iter()).filter(|&(_, &m)| m > 0) {
-                uf.union(a, b);
-            }
-            if uf.labels().1 != 1 {
+            let used = self.edges.iter().zip(mult.iter()).filter(|&(_, &m)| m > 0);
+            if graph_components(self.region.len(), used.map(|(&e, _)| e)).1 != 1 {
                 mult[k] = 2;
             }
         }

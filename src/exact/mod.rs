@@ -517,7 +517,7 @@ fn solve_turns(
     deadline: &Deadline,
     settings: &Settings,
 ) -> Answer {
-    let lower = bounds::cheap_lower_bound(region, objective);
+    let lower = cheap_lower_bound(region, objective);
     let goal = match objective {
         Objective::CcTurns => turns::TurnGoal::CycleCover,
         Objective::TourTurns => turns::TurnGoal::Tour,
@@ -615,6 +615,49 @@ fn solve_lawn(
         .as_ref()
         .map(|x| CycleCover::tour(model.walk(&model.order(x))));
     to_answer(s, cover, lower)
+}
+
+/// The best cheap bound for an objective (no LP; the bounds of [`crate::bounds`]).
+pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
+    match objective {
+        Objective::Length => bounds::length_lower_bound(region),
+        Objective::CcTurns | Objective::TourTurns => bounds::turn_lower_bound(region),
+        Objective::Weighted { turn_cost } => {
+            // Both bounds hold for the same tour.
+            let l = bounds::length_lower_bound(region).value;
+            let t = bounds::turn_lower_bound(region).value;
+            Bound::new(
+                l + u64::from(turn_cost) * t,
+                "length bound + C * turn bound",
+            )
+        }
+        Objective::LawnTsp => bounds::lawn_tsp_lower_bound(region),
+    }
+}
+
+/// The LP relaxation of the exact model with all its connectivity cuts, rounded up to even;
+/// `None` if it did not converge within `time_limit` seconds (or the problem is infeasible).
+pub fn lp_lower_bound(
+    region: &Region,
+    objective: Objective,
+    time_limit: Option<f64>,
+) -> Option<Bound> {
+    lp_relaxation_bound(region, objective, time_limit)
+        .map(|v| Bound::new(v, "lp relaxation with cuts"))
+}
+
+/// The largest available bound: the cheap ones and, when `lp_time_limit` is given, the LP
+/// relaxation.
+pub fn best_lower_bound(
+    region: &Region,
+    objective: Objective,
+    lp_time_limit: Option<f64>,
+) -> Bound {
+    let cheap = cheap_lower_bound(region, objective);
+    match lp_time_limit.and_then(|t| lp_lower_bound(region, objective, Some(t))) {
+        Some(lp) => cheap.max(lp),
+        None => cheap,
+    }
 }
 
 /// The LP relaxation bound of an objective's exact model with all its connectivity cuts

@@ -33,11 +33,12 @@
 //! of whole pixels (plain `x(δ(S)) >= 2`) are separated exactly by minimum cuts; cuts between
 //! side components (crossing walks) from the components of the support.
 
-use super::cuts::{UnionFind, violated_cuts};
+use super::cuts::violated_cuts;
 use super::driver::CutModel;
 use super::lp::{Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
 use crate::region::{Dir, Pixel, Region};
+use crate::topology::graph_components;
 
 const NONE: u32 = u32::MAX;
 
@@ -187,21 +188,21 @@ impl<'a> PassageModel<'a> {
     /// (u32::MAX when unused) and the number of components.
     fn side_components(&self, x: &[f64], eps: f64) -> (Vec<u32>, usize) {
         let n = self.region.len();
-        let mut uf = UnionFind::new(4 * n);
+        let mut joined = Vec::new();
         let mut used = vec![false; 4 * n];
         for (k, p) in self.vars.iter().enumerate() {
             if x[k] > eps {
                 used[p.pixel * 4 + p.a as usize] = true;
                 used[p.pixel * 4 + p.b as usize] = true;
-                uf.union(p.pixel * 4 + p.a as usize, p.pixel * 4 + p.b as usize);
+                joined.push((p.pixel * 4 + p.a as usize, p.pixel * 4 + p.b as usize));
             }
         }
         for &(v, d, w) in &self.edges {
             if self.side_usage(x, v, d) > eps {
-                uf.union(v * 4 + d as usize, w * 4 + ((d + 2) % 4) as usize);
+                joined.push((v * 4 + d as usize, w * 4 + ((d + 2) % 4) as usize));
             }
         }
-        let (raw, _) = uf.labels();
+        let (raw, _) = graph_components(4 * n, joined);
         let mut map = std::collections::HashMap::new();
         let label = (0..4 * n)
             .map(|i| {

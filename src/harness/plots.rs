@@ -14,6 +14,7 @@
 
 use super::rows::{EXACT, Row};
 use crate::algorithms::{self, Against, Guarantee, Quantity};
+use crate::draw::PALETTE;
 use crate::draw::{FONT_FAMILY, ensure_fonts};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -21,17 +22,7 @@ use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-const PALETTE: [RGBColor; 8] = [
-    RGBColor(0, 114, 178),
-    RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
-    RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
-    RGBColor(120, 120, 120),
-    RGBColor(240, 228, 66),
-];
-
+/// The `k`-th series colour (the walk palette of the figures, cycled).
 pub(crate) fn colour(k: usize) -> RGBColor {
     PALETTE[k % PALETTE.len()]
 }

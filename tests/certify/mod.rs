@@ -115,7 +115,7 @@ pub fn optima(label: &str, region: &Region, opts: &ExactOptions, tally: &mut Tal
             e.0 += 1;
             let v = r.value.expect("an optimal solve has a value");
             values[k] = Some(v);
-            let cheap = mowmill::bounds::cheap_lower_bound(region, o).value;
+            let cheap = mowmill::exact::cheap_lower_bound(region, o).value;
             if cheap > v {
                 tally
                     .bad_bounds

@@ -88,12 +88,13 @@
 //! hence fat parts, while many holes need thin ones, but we have not proven a trade-off.
 
 use super::contour::{ContourWalk, contour_walks};
-use super::euler::GridMultigraph;
-use super::{Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
 use crate::tour::CycleCover;
+use petgraph::unionfind::UnionFind;
 use rustworkx_core::max_weight_matching::max_weight_matching;
 use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 
@@ -207,7 +208,7 @@ pub fn milling25(region: &Region) -> Result<Solution> {
     let walk = graph.into_walk(region, contours[0].walk[0]);
     let mut solution = Solution::default();
     solution.outputs.push(Output {
-        objective: super::Objective::Length,
+        objective: crate::algorithms::Objective::Length,
         cover: CycleCover::tour(walk),
     });
     let cert = &mut solution.certificates;
@@ -226,34 +227,24 @@ pub fn milling25(region: &Region) -> Result<Solution> {
 /// Joins the components of the multigraph by doubled grid edges; returns the moves added.
 fn connect_components(region: &Region, graph: &mut GridMultigraph) -> u64 {
     let n = region.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
+    let mut uf = UnionFind::new(n);
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
             if graph.count(i, d) > 0 {
                 let j = region.neighbor(i, d).expect("edges join region pixels");
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                parent[a] = b;
+                uf.union(i, j);
             }
         }
     }
     let mut added = 0;
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
-            if let Some(j) = region.neighbor(i, d) {
-                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
-                if a != b {
-                    parent[a] = b;
-                    graph.add(i, j, d);
-                    graph.add(i, j, d);
-                    added += 2;
-                }
+            if let Some(j) = region.neighbor(i, d)
+                && uf.union(i, j)
+            {
+                graph.add(i, j, d);
+                graph.add(i, j, d);
+                added += 2;
             }
         }
     }
@@ -440,20 +431,20 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
 }
 
 /// The registry entry.
-pub const ALGORITHM: super::Algorithm = super::Algorithm {
+pub const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Algorithm {
     name: "milling25",
     summary: "contours + strips + shorter matchings, Euler tour (Theorem 4, milling paper)",
-    objectives: &[super::Objective::Length],
+    objectives: &[crate::algorithms::Objective::Length],
     // What the grid reading provably meets (module docs, "Guarantee"): the paper's 5/2 is
     // measured as a claim, not registered, since L_δB ≤ OPT fails on pixels.
-    guarantees: &[super::Guarantee {
-        objective: super::Objective::Length,
+    guarantees: &[crate::algorithms::Guarantee {
+        objective: crate::algorithms::Objective::Length,
         quantity: crate::algorithms::Quantity::Value,
         num: 17,
         den: 3,
         add: -17,
-        against: super::Against::N,
-        when: super::When::Always,
+        against: crate::algorithms::Against::N,
+        when: crate::algorithms::When::Always,
         source: "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
         theorem: &crate::algorithms::theorems::MILLING_THM_4,
     }],

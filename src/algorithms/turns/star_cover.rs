@@ -41,7 +41,7 @@
 //! 1; a 123-pixel cut-out is the regression test in `tests/guarantees.rs`).
 
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::strips_double::{close_walk, extend_walk, straight};
+use crate::algorithms::walks::{close_walk, extend_walk, straight};
 use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::{Dir, Pixel, Region};
@@ -200,7 +200,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         ),
     ],
     requires: "a connected region",
-    precondition: crate::algorithms::merge::connected,
+    precondition: crate::algorithms::precondition::connected,
     run,
 };
 

@@ -21,13 +21,14 @@
 //! not use the bottleneck decomposition of Lemma 5, which Section 7 does not mention.
 
 use super::contour::contour_walks;
-use super::euler::GridMultigraph;
 use super::tsp65::{LinkStats, link_internal_nodes};
-use super::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
 use crate::tour::CycleCover;
+use petgraph::unionfind::UnionFind;
 
 /// Theorem 7 needs a connected grid graph without local cut vertices.
 pub fn precondition(region: &Region) -> Result<()> {
@@ -48,24 +49,6 @@ pub fn precondition(region: &Region) -> Result<()> {
         )));
     }
     Ok(())
-}
-
-struct UnionFind(Vec<u32>);
-
-impl UnionFind {
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] as usize != x {
-            let p = self.0[x] as usize;
-            self.0[x] = self.0[p];
-            x = p;
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) -> bool {
-        let (a, b) = (self.find(a), self.find(b));
-        self.0[a] = b as u32;
-        a != b
-    }
 }
 
 /// Runs the construction of Theorem 7.
@@ -109,7 +92,7 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
     let (_, mut graph, stats) = best.expect("two parities tried");
 
     // Subtours: components of the multigraph.
-    let mut uf = UnionFind((0..n as u32).collect());
+    let mut uf = UnionFind::new(n);
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
             if graph.count(i, d) > 0 {
@@ -117,7 +100,7 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
             }
         }
     }
-    let subtours = (0..n).filter(|&i| uf.find(i) == i).count();
+    let subtours = (0..n).filter(|&i| uf.find_mut(i) == i).count();
 
     // Free bridges: swap facing edges of different subtours around a common square.
     let mut free_bridges = 0i64;
@@ -138,7 +121,7 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
             ] {
                 if graph.has_between(region, e1.0, e1.1)
                     && graph.has_between(region, e2.0, e2.1)
-                    && uf.find(e1.0) != uf.find(e2.0)
+                    && uf.find_mut(e1.0) != uf.find_mut(e2.0)
                 {
                     graph.remove_between(region, e1.0, e1.1);
                     graph.remove_between(region, e2.0, e2.1);
@@ -160,7 +143,7 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
     for i in 0..n {
         for d in [Dir::E, Dir::N] {
             if let Some(j) = region.neighbor(i, d)
-                && uf.find(i) != uf.find(j)
+                && uf.find_mut(i) != uf.find_mut(j)
             {
                 uf.union(i, j);
                 graph.add(i, j, d);
@@ -196,7 +179,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 40,
         add: 0,
         against: Against::N,
-        when: super::When::Always,
+        when: crate::algorithms::When::Always,
         source: "Theorem 7 of Lawn mowing and milling",
         theorem: &crate::algorithms::theorems::MILLING_THM_7,
     }],

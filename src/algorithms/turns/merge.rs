@@ -39,7 +39,7 @@
 
 use crate::algorithms::{Merge, Objective, Options, Output, Solution};
 use crate::checker::{Mode, check};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::region::{Pixel, Region};
 use crate::tour::{CycleCover, Walk};
 use std::collections::BTreeMap;
@@ -695,20 +695,6 @@ pub fn cover_and_tour(
         ],
         certificates,
     })
-}
-
-/// Precondition of every tour algorithm here: a non-empty region with one connected component
-/// (a tour cannot leave a component).
-pub fn connected(region: &Region) -> Result<()> {
-    if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
-    }
-    match crate::topology::components(region).count {
-        1 => Ok(()),
-        c => Err(Error::invalid(format!(
-            "the region has {c} connected components; a tour needs one"
-        ))),
-    }
 }
 
 #[cfg(test)]

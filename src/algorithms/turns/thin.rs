@@ -28,8 +28,8 @@
 //! thin-cc: the cycle cover is optimal (Corollary 5.3), its merged tour at most 3/2·OPT
 //! (Corollary 4.1). thin-merge: at most 4/3·OPT turns (Theorem 5.9, tight by Fig. 6).
 
-use crate::algorithms::boundary_cc::{boundary_cycle_cover, matching_certificates};
-use crate::algorithms::endpoint_matching::PortMatching;
+use crate::algorithms::boundary_cc::boundary_cycle_cover;
+use crate::algorithms::matching::PortMatching;
 use crate::algorithms::merge::cover_and_tour;
 use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
@@ -123,7 +123,7 @@ pub fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching, us
 fn run_with(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let (cover, matching, fallbacks) = thin_cycle_cover(region)?;
-    let mut certificates: BTreeMap<String, i64> = matching_certificates(&matching).collect();
+    let mut certificates: BTreeMap<String, i64> = matching.certificates().collect();
     certificates.insert("w_m".to_string(), matching.total as i64);
     certificates.insert("centre_fallbacks".to_string(), fallbacks as i64);
     cover_and_tour(region, cover, opts, certificates)
@@ -158,7 +158,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
         },
@@ -169,7 +169,7 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
             den: 2,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
         },
@@ -211,7 +211,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             den: 1,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Corollary 5.3 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
         },
@@ -222,7 +222,7 @@ pub const ALGORITHM_MERGE: Algorithm = Algorithm {
             den: 3,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Theorem 5.9 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_THM_5_9,
         },

@@ -3,7 +3,7 @@
 //! rectilinear polygons with a unit square (Corollary 3).
 //!
 //! The construction of Section 6, as a connected multigraph with even degrees walked by
-//! Hierholzer ([`super::euler`]):
+//! Hierholzer ([`crate::algorithms::euler`]):
 //!
 //! 1. The contour C: the [contour walk](super::contour) of the block, a simple cycle through
 //!    the boundary nodes. Grid reading: a boundary node is a pixel with a side *or a corner* on
@@ -45,8 +45,8 @@
 //! disjoint and meet at cut vertices, one Euler circuit of their union splices the tours.
 
 use super::contour::contour_walks;
-use super::euler::GridMultigraph;
-use super::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::euler::GridMultigraph;
+use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology;
@@ -132,7 +132,7 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
     let mut bottlenecks = 0i64;
     let mut pieces = 0i64;
     let mut bridges = 0i64;
-    let blocks = biconnected_blocks(region);
+    let blocks = crate::topology::biconnected_blocks(region);
     let mut graph = GridMultigraph::new(n);
     if blocks.len() == 1 && blocks[0].len() == n && n >= 3 {
         let b = block_tour(region, &mut graph, &mut stats)?;
@@ -281,32 +281,13 @@ fn block_tour(
 
 /// Components of the grid graph without the `cut` edges: (label per pixel, count).
 fn label_pieces(region: &Region, cut: &[[bool; 4]]) -> (Vec<u32>, usize) {
-    let n = region.len();
-    let mut label = vec![u32::MAX; n];
-    let mut count = 0u32;
-    let mut stack = Vec::new();
-    for s in 0..n {
-        if label[s] != u32::MAX {
-            continue;
-        }
-        label[s] = count;
-        stack.push(s);
-        while let Some(v) = stack.pop() {
-            for d in Dir::ALL {
-                if cut[v][d.index()] {
-                    continue;
-                }
-                if let Some(w) = region.neighbor(v, d)
-                    && label[w] == u32::MAX
-                {
-                    label[w] = count;
-                    stack.push(w);
-                }
-            }
-        }
-        count += 1;
-    }
-    (label, count as usize)
+    let edges = (0..region.len()).flat_map(|v| {
+        Dir::ALL
+            .into_iter()
+            .filter(move |d| !cut[v][d.index()])
+            .filter_map(move |d| region.neighbor(v, d).map(|w| (v, w)))
+    });
+    crate::topology::graph_components(region.len(), edges)
 }
 
 /// Steps 3–5 of the proof of Theorem 5: links every `internal` node into the closed walks of
@@ -665,69 +646,6 @@ impl Linker<'_> {
     }
 }
 
-/// The biconnected components (blocks) of the grid graph, as pixel lists: iterative
-/// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels.
-pub(super) fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
-    let n = region.len();
-    let mut disc = vec![u32::MAX; n];
-    let mut low = vec![0u32; n];
-    let mut time = 0u32;
-    let mut edges: Vec<(usize, usize)> = Vec::new();
-    let mut blocks = Vec::new();
-    let mut stamp = vec![usize::MAX; n];
-    let mut frames: Vec<(usize, usize, usize)> = Vec::new();
-    for root in 0..n {
-        if disc[root] != u32::MAX {
-            continue;
-        }
-        disc[root] = time;
-        low[root] = time;
-        time += 1;
-        frames.push((root, usize::MAX, 0));
-        while let Some(frame) = frames.last_mut() {
-            let (v, parent, d) = *frame;
-            if d < 4 {
-                frame.2 += 1;
-                let Some(w) = region.neighbor(v, Dir::from_index(d)) else {
-                    continue;
-                };
-                if disc[w] == u32::MAX {
-                    disc[w] = time;
-                    low[w] = time;
-                    time += 1;
-                    edges.push((v, w));
-                    frames.push((w, v, 0));
-                } else if w != parent && disc[w] < disc[v] {
-                    edges.push((v, w));
-                    low[v] = low[v].min(disc[w]);
-                }
-            } else {
-                frames.pop();
-                if parent != usize::MAX {
-                    low[parent] = low[parent].min(low[v]);
-                    if low[v] >= disc[parent] {
-                        let id = blocks.len();
-                        let mut block = Vec::new();
-                        while let Some((a, b)) = edges.pop() {
-                            for x in [a, b] {
-                                if stamp[x] != id {
-                                    stamp[x] = id;
-                                    block.push(x);
-                                }
-                            }
-                            if (a, b) == (parent, v) {
-                                break;
-                            }
-                        }
-                        blocks.push(block);
-                    }
-                }
-            }
-        }
-    }
-    blocks
-}
-
 /// The registry entry.
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "tsp65",
@@ -742,7 +660,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 5,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
             theorem: &crate::algorithms::theorems::MILLING_COR_3,
         },
@@ -753,7 +671,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 5,
             add: -4,
             against: Against::N,
-            when: super::When::Biconnected,
+            when: crate::algorithms::When::Biconnected,
             source: "Theorem 5 of Lawn mowing and milling",
             theorem: &crate::algorithms::theorems::MILLING_THM_5,
         },
@@ -781,7 +699,7 @@ mod tests {
     fn blocks_of_two_squares_and_a_bridge() {
         // Two 2×2 squares joined by a one-pixel corridor: blocks 2×2, three bridges, 2×2.
         let r = Region::from_ascii("##..##\n######\n");
-        let blocks = biconnected_blocks(&r);
+        let blocks = crate::topology::biconnected_blocks(&r);
         let mut sizes: Vec<usize> = blocks.iter().map(Vec::len).collect();
         sizes.sort_unstable();
         assert_eq!(sizes, vec![2, 2, 2, 4, 4]);

@@ -17,7 +17,8 @@
 //! At most 6/5·OPT turns (Theorem 5.8; OPT over all milling tours, which need not traverse
 //! every edge once). The tests check it against the exact optimum on small Eulerian pockets.
 
-use crate::algorithms::merge::{connected, merge_cycles};
+use crate::algorithms::merge::merge_cycles;
+use crate::algorithms::precondition::connected;
 use crate::algorithms::{
     Against, Algorithm, Guarantee, Merge, Objective, Options, Output, Solution,
 };
@@ -135,7 +136,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 5,
         add: 0,
         against: Against::Opt,
-        when: super::When::Always,
+        when: crate::algorithms::When::Always,
         source: "Theorem 5.8 of Optimal covering tours with turn costs",
         theorem: &crate::algorithms::theorems::TURNS_THM_5_8,
     }],

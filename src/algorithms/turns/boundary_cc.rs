@@ -12,7 +12,7 @@
 //! minimum-weight perfect matching of the ports under the turn distance (the partner pair of a
 //! one-pixel link at least 4) joins the links into a cycle cover. Beyond a few hundred ports
 //! the matching is still exact over all pairs: the ports' turn distance plus 2 is a graph
-//! metric ([`link_graph_matching`](super::endpoint_matching) has the argument).
+//! metric ([`link_graph_matching`](crate::algorithms::endpoint_matching) has the argument).
 //!
 //! # Why the matching's minimum is the optimum
 //! Say a *heading walk* is a closed sequence of states (pixel, heading), each step a move
@@ -54,9 +54,8 @@
 //! one of its boundary. Only a matching proven minimum is used: otherwise `boundary-cc` fails
 //! rather than certify.
 
-use crate::algorithms::endpoint_matching::{COMPLETE_LIMIT, PortMatching, match_ports};
-use crate::algorithms::strips_matching::join_links;
-use crate::algorithms::turn_distance::{Port, bit};
+use crate::algorithms::matching::turn_distance::{Port, bit};
+use crate::algorithms::matching::{COMPLETE_LIMIT, PortMatching, join_links, match_ports};
 use crate::algorithms::{Against, Algorithm, Guarantee, Objective};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
@@ -245,20 +244,8 @@ pub fn run(
         .insert("w_m".to_string(), matching.total as i64);
     sol.certificates
         .insert("links".to_string(), (matching.mate.len() / 2) as i64);
-    sol.certificates.extend(matching_certificates(&matching));
+    sol.certificates.extend(matching.certificates());
     Ok(sol)
-}
-
-/// The matching's certificates, as every algorithm built on the boundary cover reports them.
-pub fn matching_certificates(matching: &PortMatching) -> impl Iterator<Item = (String, i64)> {
-    [
-        ("matching_complete", i64::from(matching.complete)),
-        ("matching_optimal", i64::from(matching.optimal)),
-        ("matching_lower_bound", matching.lower_bound as i64),
-        ("matching_candidates", matching.candidates as i64),
-    ]
-    .into_iter()
-    .map(|(name, value)| (name.to_string(), value))
 }
 
 /// The registry entry.
@@ -273,7 +260,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         den: 1,
         add: 0,
         against: Against::Opt,
-        when: super::When::Always,
+        when: crate::algorithms::When::Always,
         source: "Theorem 4.1 of Optimal covering tours with turn costs",
         theorem: &crate::algorithms::theorems::TURNS_THM_4_1,
     }],

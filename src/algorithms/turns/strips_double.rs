@@ -23,37 +23,14 @@
 //! visits ≤ 4N, and N ≤ OPT_length for N ≥ 2 (N = 1: both are 0).
 
 use crate::algorithms::merge::cover_and_tour;
+use crate::algorithms::walks::{close_walk, extend_walk, straight};
 use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
-use crate::region::{Pixel, Region};
+use crate::region::Region;
 use crate::strip_cover::strip_cover;
 use crate::topology::Strip;
 use crate::tour::{CycleCover, Walk};
 use std::collections::BTreeMap;
-
-/// The pixels from `a` to `b` inclusive along a row or column.
-pub fn straight(a: Pixel, b: Pixel) -> impl Iterator<Item = Pixel> {
-    let (dx, dy) = ((b.x - a.x).signum(), (b.y - a.y).signum());
-    let steps = (b.x - a.x).abs() + (b.y - a.y).abs();
-    (0..=steps).map(move |k| Pixel::new(a.x + k * dx, a.y + k * dy))
-}
-
-/// Appends `pixels` to `walk`, skipping a pixel equal to the walk's last one.
-pub fn extend_walk(walk: &mut Walk, pixels: impl IntoIterator<Item = Pixel>) {
-    for p in pixels {
-        if walk.last() != Some(&p) {
-            walk.push(p);
-        }
-    }
-}
-
-/// Closes a walk built by [`extend_walk`]: a final copy of the first pixel is dropped.
-pub fn close_walk(mut walk: Walk) -> Walk {
-    if walk.len() > 1 && walk.first() == walk.last() {
-        walk.pop();
-    }
-    walk
-}
 
 /// The doubled strip: out along the strip and back, two U-turns (one pixel: 4 turns too).
 pub fn doubled(strip: &Strip) -> Walk {
@@ -148,7 +125,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         ),
     ],
     requires: "a connected region",
-    precondition: crate::algorithms::merge::connected,
+    precondition: crate::algorithms::precondition::connected,
     run,
 };
 

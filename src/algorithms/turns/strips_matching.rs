@@ -5,7 +5,7 @@
 //! # Construction
 //! Each strip of a minimum strip cover S (|S| = s) contributes its two end pixels as ports
 //! leaving orthogonally to the strip. A minimum-weight perfect matching M of the 2s ports
-//! under the turn distance w ([`turn_distance`](super::turn_distance)) together with the
+//! under the turn distance w ([`turn_distance`](crate::algorithms::turn_distance)) together with the
 //! strips forms a 2-regular structure, i.e. cycles alternating strip, connecting path, strip,
 //! and so on. Each strip costs at most 2 turns (turning off it at one end, onto it at the
 //! other), each connecting path w(u, v) turns: the cycle cover has at most 2s + w(M) turns.
@@ -19,17 +19,16 @@
 //! tour crosses each strip end orthogonally; Theorem 5.5). Tour: ≤ 3/2 of that, 3.75·OPT
 //! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching over all pairs: it is
 //! proven so when `matching_optimal = 1` (always up to
-//! [`COMPLETE_LIMIT`](super::endpoint_matching::COMPLETE_LIMIT) ports, where the candidate
+//! [`COMPLETE_LIMIT`](crate::algorithms::endpoint_matching::COMPLETE_LIMIT) ports, where the candidate
 //! graph is complete; beyond, when the matching reaches the LP bound). Otherwise
 //! `matching_lower_bound` is a proven lower bound on the minimum, and the guarantee holds
-//! with w(M) − `matching_lower_bound` added; see [`endpoint_matching`](super::endpoint_matching).
+//! with w(M) − `matching_lower_bound` added; see [`endpoint_matching`](crate::algorithms::endpoint_matching).
 
-use crate::algorithms::endpoint_matching::{PortMatching, match_ports};
+use crate::algorithms::matching::turn_distance::Port;
+use crate::algorithms::matching::{PortMatching, join_links, match_ports};
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::strips_double::{close_walk, extend_walk, straight};
-use crate::algorithms::turn_distance::{Port, TurnSearch, bit};
 use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::region::Region;
 use crate::strip_cover::strip_cover;
 use crate::topology::Strip;
@@ -42,53 +41,6 @@ pub struct StripMatchingCover {
     pub cover: CycleCover,
     pub s: usize,
     pub matching: PortMatching,
-}
-
-/// Joins `links` (strips or boundary links, given by their end pixels) into closed walks by
-/// the perfect matching `mate` of their ports (port `2k` is link k's first pixel, `2k + 1` its
-/// last), each matched pair by a cheapest connecting path.
-pub fn join_links(
-    region: &Region,
-    links: &[(usize, usize)],
-    ports: &[Port],
-    matching: &PortMatching,
-) -> Result<CycleCover> {
-    let mut search = TurnSearch::new(region);
-    let mut done = vec![false; links.len()];
-    let mut cycles = Vec::new();
-    for first in 0..links.len() {
-        if done[first] {
-            continue;
-        }
-        let mut walk = Vec::new();
-        let mut port = 2 * first;
-        loop {
-            let k = port / 2;
-            done[k] = true;
-            let out = port ^ 1;
-            let (a, b) = (
-                region.pixel(ports[port].pixel),
-                region.pixel(ports[out].pixel),
-            );
-            extend_walk(&mut walk, straight(a, b));
-            let to = matching.mate[out];
-            let target = ports[to];
-            let w = matching.weight[out.min(to)];
-            search.run(region, ports[out], w, |p, h, _| {
-                p == target.pixel && target.arrive() & bit(h) != 0
-            });
-            let path = search.path_to(target).ok_or_else(|| {
-                Error::invalid(format!("no path between matched ports {out} and {to}"))
-            })?;
-            extend_walk(&mut walk, path.into_iter().map(|p| region.pixel(p)));
-            port = to;
-            if port == 2 * first {
-                break;
-            }
-        }
-        cycles.push(close_walk(walk));
-    }
-    Ok(CycleCover::new(cycles))
 }
 
 /// The ports of strips: port `2k` at strip k's start, `2k + 1` at its end.
@@ -105,17 +57,10 @@ pub fn strip_ports(region: &Region, strips: &[Strip]) -> (Vec<(usize, usize)>, V
     (links, ports)
 }
 
-/// Computes the strips-matching cycle cover of Theorem 5.5.
-///
-/// # Complexity
-/// O(N √N) for the strip cover; the matching dominates (see
-/// [`match_ports`](super::endpoint_matching::match_ports)).
-pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
-    let cover = strip_cover(region);
-    let (links, ports) = strip_ports(region, &cover.strips);
-    let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
-    // A one-pixel strip closed on itself is a still walk of 4 turns: 2 for the strip, 2 here.
-    let floor: Vec<u32> = (0..ports.len())
+/// The least turn distance of every strip end to its partner (the other end of its strip): a
+/// one-pixel strip closed on itself is a still walk of 4 turns, 2 for the strip and 2 here.
+pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
+    (0..2 * links.len())
         .map(|i| {
             if links[i / 2].0 == links[i / 2].1 {
                 2
@@ -123,7 +68,19 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
                 0
             }
         })
-        .collect();
+        .collect()
+}
+
+/// Computes the strips-matching cycle cover of Theorem 5.5.
+///
+/// # Complexity
+/// O(N √N) for the strip cover; the matching dominates (see
+/// [`match_ports`](crate::algorithms::endpoint_matching::match_ports)).
+pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
+    let cover = strip_cover(region);
+    let (links, ports) = strip_ports(region, &cover.strips);
+    let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
+    let floor = strip_floors(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     let cc = join_links(region, &links, &ports, &matching)?;
     Ok(StripMatchingCover {
@@ -141,11 +98,7 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let mut certificates = BTreeMap::new();
     certificates.insert("s".to_string(), smc.s as i64);
     certificates.insert("w_m".to_string(), smc.matching.total as i64);
-    let m = &smc.matching;
-    certificates.insert("matching_complete".to_string(), i64::from(m.complete));
-    certificates.insert("matching_optimal".to_string(), i64::from(m.optimal));
-    certificates.insert("matching_lower_bound".to_string(), m.lower_bound as i64);
-    certificates.insert("matching_candidates".to_string(), m.candidates as i64);
+    certificates.extend(smc.matching.certificates());
     cover_and_tour(region, smc.cover, opts, certificates)
 }
 
@@ -165,7 +118,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 2,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Theorem 5.5 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_THM_5_5,
         },
@@ -176,7 +129,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             den: 4,
             add: 0,
             against: Against::Opt,
-            when: super::When::Always,
+            when: crate::algorithms::When::Always,
             source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
             theorem: &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
         },
@@ -200,7 +153,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
         ),
     ],
     requires: "a connected region",
-    precondition: crate::algorithms::merge::connected,
+    precondition: crate::algorithms::precondition::connected,
     run,
 };
 

@@ -1,0 +1,52 @@
+//! Exact minimum-weight perfect matching by the blossom algorithm (rustworkx-core), per
+//! connected component.
+
+use super::*;
+use petgraph::unionfind::UnionFind;
+
+/// A minimum-weight perfect matching of the graph on `0..n` with weighted `edges` (each
+/// pair at most once), solved per connected component; `None` when none is perfect.
+pub fn min_weight_perfect_matching(n: usize, edges: &[(usize, usize, u32)]) -> Option<Vec<usize>> {
+    // Connected components by union-find.
+    let mut uf = UnionFind::<usize>::new(n);
+    for &(a, b, _) in edges {
+        uf.union(a, b);
+    }
+    let mut piece_of_root: HashMap<usize, usize> = HashMap::new();
+    let mut local = vec![0usize; n];
+    let mut pieces: Vec<Vec<usize>> = Vec::new();
+    for (v, slot) in local.iter_mut().enumerate() {
+        let r = uf.find_mut(v);
+        let k = *piece_of_root.entry(r).or_insert_with(|| {
+            pieces.push(Vec::new());
+            pieces.len() - 1
+        });
+        *slot = pieces[k].len();
+        pieces[k].push(v);
+    }
+    let mut piece_edges: Vec<Vec<(u32, u32, i128)>> = vec![Vec::new(); pieces.len()];
+    let big = i128::from(edges.iter().map(|e| e.2).max().unwrap_or(0)) + 1;
+    for &(a, b, w) in edges {
+        let k = piece_of_root[&uf.find_mut(a)];
+        piece_edges[k].push((local[a] as u32, local[b] as u32, big - i128::from(w)));
+    }
+    let mut mate = vec![usize::MAX; n];
+    for (k, members) in pieces.iter().enumerate() {
+        if members.len() % 2 == 1 {
+            return None;
+        }
+        let mut g: UnGraph<(), i128> = UnGraph::with_capacity(members.len(), piece_edges[k].len());
+        for _ in members {
+            g.add_node(());
+        }
+        for &(a, b, w) in &piece_edges[k] {
+            g.add_edge(a.into(), b.into(), w);
+        }
+        let pairs = max_weight_matching(&g, true, |e| Ok::<i128, ()>(*e.weight()), false).ok()?;
+        for (a, b) in pairs {
+            mate[members[a]] = members[b];
+            mate[members[b]] = members[a];
+        }
+    }
+    mate.iter().all(|&m| m != usize::MAX).then_some(mate)
+}
