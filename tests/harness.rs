@@ -247,3 +247,78 @@ fn malformed_config_is_refused_before_any_job() {
     );
     assert!(!out.exists(), "no job may run");
 }
+
+/// `[options]` in a config: each algorithm runs once per distinct combination of the options
+/// that concern it, rows record the options, and variants are named apart so statistics never
+/// mix them. The naive merge never beats the smart one's cycle cover turns (same cover).
+#[test]
+fn config_options_run_every_variant_and_rows_record_them() {
+    let out = temp("options");
+    let config = Config::parse(
+        r#"
+name = "options"
+seed = 3
+[options]
+merge = ["smart", "naive"]
+coverage4 = [false, true]
+cutter = ["square", "disk"]
+[[family]]
+family = "random-simple"
+n = 16
+count = 2
+algorithms = ["strips-matching", "tsp65", "lawn-mst"]
+"#,
+        "options.toml",
+    )
+    .unwrap();
+    run(&config, &opts(&out, None, false)).unwrap();
+    let rows = read_rows(&out.join("results.csv")).unwrap();
+    let names: std::collections::BTreeSet<&str> =
+        rows.iter().map(|r| r.algorithm.as_str()).collect();
+    let expect = [
+        "lawn-mst",
+        "lawn-mst[cutter=disk]",
+        "strips-matching",
+        "strips-matching[coverage4]",
+        "strips-matching[merge=naive,coverage4]",
+        "strips-matching[merge=naive]",
+        "tsp65",
+    ];
+    assert_eq!(names.into_iter().collect::<Vec<_>>(), expect);
+    for r in &rows {
+        assert!(r.error.is_empty(), "{} {}: {}", r.instance, r.algorithm, r.error);
+        assert_eq!(r.valid, Some(true), "{} {}", r.instance, r.algorithm);
+        match r.algorithm.as_str() {
+            "strips-matching[merge=naive]" => {
+                assert_eq!((r.merge.as_str(), r.coverage4), ("naive", Some(false)))
+            }
+            "strips-matching[coverage4]" if r.objective == "turns" => {
+                assert_eq!((r.merge.as_str(), r.coverage4), ("smart", Some(true)));
+                assert!(r.max_coverage.unwrap() <= 4);
+            }
+            "lawn-mst[cutter=disk]" => {
+                assert_eq!(r.cutter, "disk");
+                // No registered guarantee covers the disk: measured, not judged.
+                assert!(r.guarantee.is_empty() && r.within_guarantee.is_none());
+            }
+            "tsp65" => assert!(r.merge.is_empty() && r.cutter.is_empty() && r.coverage4.is_none()),
+            _ => {}
+        }
+    }
+    // Same cycle cover whatever the merge.
+    let cc = |name: &str, inst: &str| {
+        rows.iter()
+            .find(|r| r.algorithm == name && r.instance == inst && r.objective == "cc-turns")
+            .and_then(|r| r.value)
+    };
+    for inst in rows.iter().map(|r| r.instance.as_str()) {
+        assert_eq!(
+            cc("strips-matching", inst),
+            cc("strips-matching[merge=naive]", inst)
+        );
+    }
+    // Statistics keep the variants apart.
+    let stats = std::fs::read_to_string(out.join("stats.csv")).unwrap();
+    assert!(stats.contains("strips-matching[merge=naive]"));
+    let _ = std::fs::remove_dir_all(&out);
+}
