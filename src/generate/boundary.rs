@@ -1,3 +1,6 @@
+//! `boundary`: regions in which every pixel is a boundary pixel (the precondition of
+//! `boundary-cc`), and their fallback of two rows.
+
 use super::canvas::{ADJ_MARGIN, Canvas};
 use super::random_simple::simple_canvas;
 use super::rng::{Rng, between, chance, shuffle};

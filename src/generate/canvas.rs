@@ -1,3 +1,5 @@
+//! The occupancy canvas on which the random families draw, grow and erode their shapes.
+
 use crate::region::Pixel;
 use crate::topology;
 

@@ -1,3 +1,6 @@
+//! The promise of a generated region and its independent check with the global functions of
+//! [`crate::topology`].
+
 use crate::region::Region;
 use crate::topology;
 

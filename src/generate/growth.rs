@@ -1,3 +1,6 @@
+//! Growth and erosion by simple pixels (Yokoi number 1): the frontier of candidate cells,
+//! weighted by compactness, that brings every random shape to exactly N pixels.
+
 use super::canvas::{ADJ_MARGIN, Canvas};
 use super::rng::{Rng, below, unit};
 

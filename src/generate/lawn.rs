@@ -1,3 +1,5 @@
+//! `lawn-scattered`: grass in P components, 8-separated from one another.
+
 use super::checks::{CutRule, Promise, verify};
 use super::random_simple::simple_canvas;
 use super::rng::{Rng, below, between, unit};

@@ -131,7 +131,9 @@ mod thin_arms;
 #[cfg(test)]
 mod tests;
 
-pub use registry::{Family, FamilyInfo, Param};
+pub use registry::{
+    Family, FamilyInfo, PARAMS, Param, ParamKind, ParamSpec, ParamValue, families_help,
+};
 pub use styles::Style;
 pub use thin43::thin43_gadgets;
 
@@ -183,20 +185,52 @@ impl GenParams {
         }
     }
 
-    fn is_set(&self, p: Param) -> bool {
-        match p {
-            Param::N => self.n.is_some(),
-            Param::Holes => self.holes.is_some(),
-            Param::Width => self.width.is_some(),
-            Param::Height => self.height.is_some(),
-            Param::Side => self.side.is_some(),
-            Param::K => self.k.is_some(),
-            Param::Parts => self.parts.is_some(),
-            Param::NoCut => self.no_cut,
-            Param::Style => self.style.is_some(),
-            Param::Compactness => self.compactness.is_some(),
-            Param::S => self.s.is_some(),
+    /// The value of `param` if it is set (`no_cut` counts as set when true).
+    pub fn get(&self, param: Param) -> Option<ParamValue> {
+        use ParamValue::{Count, Flag, Fraction};
+        match param {
+            Param::N => self.n.map(Count),
+            Param::Holes => self.holes.map(Count),
+            Param::Width => self.width.map(Count),
+            Param::Height => self.height.map(Count),
+            Param::K => self.k.map(Count),
+            Param::Side => self.side.map(Count),
+            Param::Parts => self.parts.map(Count),
+            Param::Style => self.style.map(ParamValue::Style),
+            Param::Compactness => self.compactness.map(Fraction),
+            Param::S => self.s.map(Count),
+            Param::NoCut => self.no_cut.then_some(Flag(true)),
         }
+    }
+
+    /// Sets `param` to `value`.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`](crate::error::Error::Invalid) if the value is not of the
+    /// parameter's [`ParamKind`].
+    pub fn set(&mut self, param: Param, value: ParamValue) -> Result<()> {
+        use ParamValue::{Count, Flag, Fraction};
+        match (param, value) {
+            (Param::N, Count(v)) => self.n = Some(v),
+            (Param::Holes, Count(v)) => self.holes = Some(v),
+            (Param::Width, Count(v)) => self.width = Some(v),
+            (Param::Height, Count(v)) => self.height = Some(v),
+            (Param::K, Count(v)) => self.k = Some(v),
+            (Param::Side, Count(v)) => self.side = Some(v),
+            (Param::Parts, Count(v)) => self.parts = Some(v),
+            (Param::Style, ParamValue::Style(v)) => self.style = Some(v),
+            (Param::Compactness, Fraction(v)) => self.compactness = Some(v),
+            (Param::S, Count(v)) => self.s = Some(v),
+            (Param::NoCut, Flag(v)) => self.no_cut = v,
+            _ => {
+                return Err(crate::error::Error::invalid(format!(
+                    "{}: expected {}, got {value}",
+                    param.name(),
+                    param.spec().kind.expected()
+                )));
+            }
+        }
+        Ok(())
     }
 }
 

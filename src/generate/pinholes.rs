@@ -1,3 +1,5 @@
+//! `pinholes`: one-pixel holes, often in columns or rows, in a hole-free shape.
+
 use super::canvas::{ADJ_MARGIN, Canvas};
 use super::random_holed::pop_site;
 use super::random_simple::simple_canvas;

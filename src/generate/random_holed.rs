@@ -1,3 +1,5 @@
+//! `random-holed`: holes by bridging fjords and by carving full blocks.
+
 use super::canvas::{ADJ_MARGIN, Canvas};
 use super::growth::{Frontier, Move, adjust, bucket_weights, evolve, refresh};
 use super::random_simple::simple_canvas;

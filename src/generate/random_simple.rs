@@ -1,3 +1,6 @@
+//! `random-simple`: a shape of the style, normalised to exactly N pixels without holes
+//! (and, with `no_cut`, without cut vertices). The other random families start from it.
+
 use super::canvas::Canvas;
 use super::growth::{Frontier, adjust, bucket_weights};
 use super::rng::Rng;

@@ -1,3 +1,5 @@
+//! The deterministic `rect` and `donut` (a rectangle minus a centred rectangle).
+
 use crate::region::Pixel;
 
 pub(super) fn rect_pixels(w: usize, h: usize) -> Vec<Pixel> {

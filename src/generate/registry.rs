@@ -1,3 +1,6 @@
+//! The registry of families and parameters: every name `gen`, configs and the manifest use.
+
+use super::styles::Style;
 use crate::error::Error;
 use crate::error::Result;
 use std::fmt;
@@ -19,51 +22,224 @@ pub enum Family {
     Pinholes,
 }
 
-/// A generator parameter (the field of [`GenParams`] of the same name).
+/// A generator parameter (the field of [`GenParams`](super::GenParams) of the same name).
+/// The variants follow the rows of [`PARAMS`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Param {
     N,
     Holes,
     Width,
     Height,
-    Side,
     K,
+    Side,
     Parts,
-    NoCut,
     Style,
     Compactness,
     S,
+    NoCut,
 }
 
-impl Param {
-    pub const ALL: [Param; 11] = [
-        Param::N,
-        Param::Holes,
-        Param::Width,
-        Param::Height,
-        Param::Side,
-        Param::K,
-        Param::Parts,
-        Param::NoCut,
-        Param::Style,
-        Param::Compactness,
-        Param::S,
-    ];
+/// The type of a parameter's values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// A non-negative integer.
+    Count,
+    /// A switch: `--no-cut` on the command line, `true` or `false` in a config.
+    Flag,
+    /// A [`Style`] name.
+    Style,
+    /// A number in [0, 1].
+    Fraction,
+}
 
-    /// The key used in the `; params:` line and in messages.
-    pub fn name(self) -> &'static str {
+impl ParamKind {
+    /// What a value of this kind looks like, for messages.
+    pub fn expected(self) -> &'static str {
         match self {
-            Param::N => "n",
-            Param::Holes => "holes",
-            Param::Width => "width",
-            Param::Height => "height",
-            Param::Side => "side",
-            Param::K => "k",
-            Param::Parts => "parts",
-            Param::NoCut => "no_cut",
-            Param::Style => "style",
-            Param::Compactness => "compactness",
-            Param::S => "s",
+            ParamKind::Count => "a non-negative integer",
+            ParamKind::Flag => "true or false",
+            ParamKind::Style => "a style name",
+            ParamKind::Fraction => "a number between 0 and 1",
+        }
+    }
+}
+
+/// One parameter: its names and meaning. The single declaration that `mowmill gen`'s flags,
+/// the keys of a config's `[[family]]` tables, the `params` column of results and the
+/// manifest are derived from.
+#[derive(Debug)]
+pub struct ParamSpec {
+    pub param: Param,
+    /// The config key and the key of `; params:` lines and of the `params` column.
+    pub name: &'static str,
+    /// The long flag of `mowmill gen` (without `--`).
+    pub flag: &'static str,
+    pub kind: ParamKind,
+    pub help: &'static str,
+}
+
+/// Every parameter, indexed by `Param as usize`. The order is the order of the `params`
+/// column of benchmark results, from which instance seeds derive: append, never reorder.
+pub const PARAMS: [ParamSpec; 11] = [
+    ParamSpec {
+        param: Param::N,
+        name: "n",
+        flag: "n",
+        kind: ParamKind::Count,
+        help: "Number of pixels",
+    },
+    ParamSpec {
+        param: Param::Holes,
+        name: "holes",
+        flag: "holes",
+        kind: ParamKind::Count,
+        help: "Number of holes (default 1 for random-holed, 0 otherwise)",
+    },
+    ParamSpec {
+        param: Param::Width,
+        name: "width",
+        flag: "width",
+        kind: ParamKind::Count,
+        help: "Width of the rectangle",
+    },
+    ParamSpec {
+        param: Param::Height,
+        name: "height",
+        flag: "height",
+        kind: ParamKind::Count,
+        help: "Height of the rectangle",
+    },
+    ParamSpec {
+        param: Param::K,
+        name: "k",
+        flag: "k",
+        kind: ParamKind::Count,
+        help: "Width of the annulus (donut), or the index of the band B_k (band)",
+    },
+    ParamSpec {
+        param: Param::Side,
+        name: "side",
+        flag: "side",
+        kind: ParamKind::Count,
+        help: "Outer side of the annulus",
+    },
+    ParamSpec {
+        param: Param::Parts,
+        name: "parts",
+        flag: "parts",
+        kind: ParamKind::Count,
+        help: "Number of grass components (default 3)",
+    },
+    ParamSpec {
+        param: Param::Style,
+        name: "style",
+        flag: "style",
+        kind: ParamKind::Style,
+        help: "Shape style (default: mixed, one of the others drawn from the seed)",
+    },
+    ParamSpec {
+        param: Param::Compactness,
+        name: "compactness",
+        flag: "compactness",
+        kind: ParamKind::Fraction,
+        help: "Compactness of growth in [0, 1], 1 round, 0 ragged (default: drawn from the seed)",
+    },
+    ParamSpec {
+        param: Param::S,
+        name: "s",
+        flag: "s",
+        kind: ParamKind::Count,
+        help: "Parameter s of the 4/3 thin example",
+    },
+    ParamSpec {
+        param: Param::NoCut,
+        name: "no_cut",
+        flag: "no-cut",
+        kind: ParamKind::Flag,
+        help: "No cut vertices (random-simple) or no local cut vertices (random-holed)",
+    },
+];
+
+impl Param {
+    /// The parameter's row of [`PARAMS`].
+    pub fn spec(self) -> &'static ParamSpec {
+        &PARAMS[self as usize]
+    }
+
+    /// The key used in configs, in the `; params:` line and in messages.
+    pub fn name(self) -> &'static str {
+        self.spec().name
+    }
+
+    /// The parameter called `name` (a config key).
+    pub fn from_name(name: &str) -> Option<Param> {
+        PARAMS.iter().find(|s| s.name == name).map(|s| s.param)
+    }
+
+    /// The families that take this parameter.
+    pub fn families(self) -> impl Iterator<Item = Family> {
+        Family::ALL
+            .into_iter()
+            .filter(move |f| f.info().params.contains(&self))
+    }
+
+    /// Parses a command-line value of this parameter.
+    pub fn parse(self, text: &str) -> Result<ParamValue> {
+        let bad = || {
+            Error::invalid(format!(
+                "{}: expected {}, got {text:?}",
+                self.name(),
+                self.spec().kind.expected()
+            ))
+        };
+        Ok(match self.spec().kind {
+            ParamKind::Count => ParamValue::Count(text.parse().map_err(|_| bad())?),
+            ParamKind::Flag => ParamValue::Flag(text.parse().map_err(|_| bad())?),
+            ParamKind::Style => ParamValue::Style(text.parse()?),
+            ParamKind::Fraction => ParamValue::Fraction(text.parse().map_err(|_| bad())?),
+        })
+    }
+}
+
+/// A parameter's value, of its [`ParamKind`]. It displays as in the `params` column
+/// (`32`, `true`, `blob`, `0.5`) and serializes as the typed JSON value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamValue {
+    Count(usize),
+    Flag(bool),
+    Style(Style),
+    Fraction(f64),
+}
+
+impl ParamValue {
+    pub fn kind(self) -> ParamKind {
+        match self {
+            ParamValue::Count(_) => ParamKind::Count,
+            ParamValue::Flag(_) => ParamKind::Flag,
+            ParamValue::Style(_) => ParamKind::Style,
+            ParamValue::Fraction(_) => ParamKind::Fraction,
+        }
+    }
+}
+
+impl fmt::Display for ParamValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParamValue::Count(v) => write!(f, "{v}"),
+            ParamValue::Flag(v) => write!(f, "{v}"),
+            ParamValue::Style(v) => write!(f, "{v}"),
+            ParamValue::Fraction(v) => write!(f, "{v}"),
+        }
+    }
+}
+
+impl serde::Serialize for ParamValue {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match *self {
+            ParamValue::Count(v) => s.serialize_u64(v as u64),
+            ParamValue::Flag(v) => s.serialize_bool(v),
+            ParamValue::Style(v) => s.serialize_str(v.name()),
+            ParamValue::Fraction(v) => s.serialize_f64(v),
         }
     }
 }
@@ -79,10 +255,12 @@ pub struct FamilyInfo {
     pub params: &'static [Param],
     /// The parameters without a default.
     pub required: &'static [Param],
+    /// Whether the instance depends on the seed (`mowmill gen` then requires `--seed`).
+    pub random: bool,
 }
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
-/// arm in `build`.
+/// arm in `Spec::build`; `mowmill gen`, configs and the manifest read it from here.
 pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
     FamilyInfo {
         family: Family::Rect,
@@ -90,6 +268,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "the full width x height rectangle",
         params: &[Param::Width, Param::Height],
         required: &[Param::Width, Param::Height],
+        random: false,
     },
     FamilyInfo {
         family: Family::RandomSimple,
@@ -97,6 +276,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "exactly n pixels, 4-connected, no holes; no_cut: no cut vertices",
         params: &[Param::N, Param::NoCut, Param::Style, Param::Compactness],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::RandomHoled,
@@ -110,6 +290,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
             Param::Compactness,
         ],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::Thin,
@@ -117,6 +298,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "thin pocket: width-1 corridors, no 2x2 block, exactly n pixels and `holes` holes",
         params: &[Param::N, Param::Holes, Param::Compactness],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::LawnScattered,
@@ -124,6 +306,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "n pixels of grass in `parts` components, 8-separated from one another",
         params: &[Param::N, Param::Parts, Param::Style, Param::Compactness],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::Donut,
@@ -131,6 +314,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "square annulus of outer side `side` and width k",
         params: &[Param::Side, Param::K],
         required: &[Param::Side, Param::K],
+        random: false,
     },
     FamilyInfo {
         family: Family::Band,
@@ -138,6 +322,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "diagonal band B_k: 0 <= x, y <= k + 1, |x - y| <= 2 (tight for 6/5, milling paper)",
         params: &[Param::K],
         required: &[Param::K],
+        random: false,
     },
     FamilyInfo {
         family: Family::Thin43,
@@ -145,6 +330,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "the 4/3 thin example (turn-cost paper, Fig. 6) with parameter s >= 0",
         params: &[Param::S],
         required: &[Param::S],
+        random: false,
     },
     FamilyInfo {
         family: Family::Boundary,
@@ -152,6 +338,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "every pixel a boundary pixel (the precondition of boundary-cc): stairs, one-pixel links and parts, holes",
         params: &[Param::N, Param::Style, Param::Compactness],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::ThinArms,
@@ -159,6 +346,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "thin pocket grown pixel by pixel: stairs, crossings with short arms, exactly n pixels and `holes` holes",
         params: &[Param::N, Param::Holes, Param::Compactness],
         required: &[Param::N],
+        random: true,
     },
     FamilyInfo {
         family: Family::Pinholes,
@@ -166,6 +354,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         summary: "exactly n pixels, exactly `holes` one-pixel holes, often in columns, walls down to one pixel",
         params: &[Param::N, Param::Holes, Param::Style, Param::Compactness],
         required: &[Param::N, Param::Holes],
+        random: true,
     },
 ];
 
@@ -215,4 +404,45 @@ impl FromStr for Family {
                 ))
             })
     }
+}
+
+/// The families, their parameters and the styles, for `mowmill gen --help`: one line per
+/// family with its required parameters, `[optional]` ones, and whether it needs a seed.
+pub fn families_help() -> String {
+    let mut out = String::from("Families (parameters; [optional]):\n");
+    for f in Family::ALL {
+        let info = f.info();
+        let params: Vec<String> = info
+            .params
+            .iter()
+            .map(|q| {
+                let flag = format!("--{}", q.spec().flag);
+                if info.required.contains(q) {
+                    flag
+                } else {
+                    format!("[{flag}]")
+                }
+            })
+            .collect();
+        let seed = if info.random { " --seed" } else { "" };
+        out.push_str(&format!(
+            "  {:<15} {}{seed}\n  {:<15}   {}\n",
+            info.name,
+            params.join(" "),
+            "",
+            info.summary
+        ));
+    }
+    let styles: Vec<&str> = Style::ALL.iter().map(|s| s.name()).collect();
+    let fixed: Vec<&str> = FAMILY_TABLE
+        .iter()
+        .filter(|f| !f.random)
+        .map(|f| f.name)
+        .collect();
+    out.push_str(&format!(
+        "\nStyles (--style): {}.\nDeterministic families (--seed optional, default 0): {}.",
+        styles.join(", "),
+        fixed.join(", ")
+    ));
+    out
 }

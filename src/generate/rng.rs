@@ -1,3 +1,5 @@
+//! Randomness: seed-derived ChaCha8 streams and platform-independent draws.
+
 use rand::RngExt;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;

@@ -1,3 +1,6 @@
+//! Resolved parameters: defaults and seed-drawn values applied, refusals, promises, and the
+//! dispatch to each family's construction with retries and fallback.
+
 use super::band::band_pixels;
 use super::boundary::{boundary_canvas, two_rows_pixels};
 use super::checks::{CutRule, Promise, verify};
@@ -6,7 +9,7 @@ use super::pinholes::pinholes_canvas;
 use super::random_holed::holed_canvas;
 use super::random_simple::simple_canvas;
 use super::rect::{donut_pixels, rect_pixels};
-use super::registry::{Family, Param};
+use super::registry::{Family, PARAMS, Param};
 use super::rng::{Rng, below, between, rng_for};
 use super::staircase::{min_holed_pixels, rows_pixels, rows_plan};
 use super::styles::{ShapeOpts, Style};
@@ -49,8 +52,8 @@ impl Spec {
     pub(super) fn resolve(p: &GenParams) -> Result<Spec> {
         let info = p.family.info();
         let takes: Vec<&str> = info.params.iter().map(|q| q.name()).collect();
-        for q in Param::ALL {
-            if p.is_set(q) && !info.params.contains(&q) {
+        for q in PARAMS.iter().map(|spec| spec.param) {
+            if p.get(q).is_some() && !info.params.contains(&q) {
                 return Err(Error::invalid(format!(
                     "parameter `{}` does not apply to family {} (it takes: {})",
                     q.name(),
@@ -60,7 +63,7 @@ impl Spec {
             }
         }
         for &q in info.required {
-            if !p.is_set(q) {
+            if p.get(q).is_none() {
                 return Err(Error::invalid(format!(
                     "family {} needs parameter `{}`",
                     info.name,

@@ -1,3 +1,6 @@
+//! The deterministic staircase of full rows with one-pixel holes on a grid: the fallback of
+//! `random-simple`, `random-holed` and `pinholes`, and the bound on how many holes fit.
+
 use super::rng::{Rng, shuffle};
 use crate::region::Pixel;
 

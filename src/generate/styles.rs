@@ -1,3 +1,5 @@
+//! Shape styles of the random families: blob, rectangles, snake corridors and rooms.
+
 use super::canvas::{Canvas, STYLE_MARGIN};
 use super::growth::{Frontier, Move, bucket_weights, evolve, refresh};
 use super::rng::{Rng, below, between, chance, unit};

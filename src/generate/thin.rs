@@ -1,3 +1,6 @@
+//! `thin`: thin pockets from random spanning trees of the coarse lattice, plus one cycle per
+//! hole.
+
 use super::rng::{Rng, below, between, chance, shuffle};
 use crate::region::Dir;
 use crate::region::Pixel;

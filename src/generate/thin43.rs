@@ -1,3 +1,5 @@
+//! `thin43`: the 4/3 thin example of the turn-cost paper (Fig. 6, Theorem 5.9).
+
 use crate::region::Pixel;
 
 /// The gadgets of `thin43` with parameter s, by name (X1, Y1, R1, …, X2, X3, X4): the lattice

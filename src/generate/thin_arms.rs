@@ -1,3 +1,5 @@
+//! `thin-arms`: thin pockets grown pixel by pixel, with short arms at crossings.
+
 use super::canvas::{ADJ_MARGIN, Canvas};
 use super::rng::{Rng, below, chance, shuffle};
 use super::styles::center;

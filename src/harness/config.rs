@@ -27,8 +27,9 @@
 //! ```
 
 use crate::error::{Error, Result};
-use crate::generate::{Family, GenParams, Style};
+use crate::generate::{Family, GenParams, PARAMS, Param, ParamKind, ParamValue};
 use serde::{Deserialize, Deserializer, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// A whole benchmark configuration.
@@ -54,37 +55,121 @@ fn default_count() -> usize {
     1
 }
 
-/// One generated family with parameter lists.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
+/// One generated family with parameter lists. Its keys are `family`, `count`, `algorithms`
+/// and the names of the generator's [`PARAMS`]; any other key is an error naming it.
+#[derive(Clone, Debug)]
 pub struct FamilySpec {
     pub family: String,
-    #[serde(default)]
-    pub n: OneOrMany<usize>,
-    #[serde(default)]
-    pub holes: OneOrMany<usize>,
-    #[serde(default)]
-    pub width: OneOrMany<usize>,
-    #[serde(default)]
-    pub height: OneOrMany<usize>,
-    #[serde(default)]
-    pub k: OneOrMany<usize>,
-    #[serde(default)]
-    pub side: OneOrMany<usize>,
-    #[serde(default)]
-    pub parts: OneOrMany<usize>,
-    #[serde(default)]
-    pub style: OneOrMany<String>,
-    #[serde(default)]
-    pub compactness: OneOrMany<f64>,
-    #[serde(default)]
-    pub s: OneOrMany<usize>,
-    #[serde(default)]
-    pub no_cut: OneOrMany<bool>,
-    #[serde(default = "default_count")]
+    /// The given parameter lists (a scalar is a list of one), in the order of [`PARAMS`].
+    pub params: BTreeMap<Param, Vec<ParamValue>>,
+    /// Instances per parameter combination.
     pub count: usize,
-    #[serde(default)]
     pub algorithms: Option<Vec<String>>,
+}
+
+/// The keys of a `[[family]]` table besides the parameters.
+const FAMILY_KEYS: [&str; 3] = ["family", "count", "algorithms"];
+
+impl FamilySpec {
+    /// Reads one `[[family]]` table; errors name the key.
+    fn from_table(table: BTreeMap<String, toml::Value>) -> std::result::Result<FamilySpec, String> {
+        use toml::Value;
+        let mut spec = FamilySpec {
+            family: String::new(),
+            params: BTreeMap::new(),
+            count: default_count(),
+            algorithms: None,
+        };
+        let mut family = None;
+        for (key, value) in table {
+            match key.as_str() {
+                "family" => match value {
+                    Value::String(s) => family = Some(s),
+                    _ => return Err("family: expected a family name".into()),
+                },
+                "count" => {
+                    spec.count = value
+                        .as_integer()
+                        .and_then(|c| usize::try_from(c).ok())
+                        .ok_or("count: expected a non-negative integer")?;
+                }
+                "algorithms" => {
+                    let names = value.as_array().and_then(|a| {
+                        a.iter()
+                            .map(|v| v.as_str().map(str::to_string))
+                            .collect::<Option<Vec<String>>>()
+                    });
+                    spec.algorithms =
+                        Some(names.ok_or("algorithms: expected a list of algorithm names")?);
+                }
+                _ => {
+                    let Some(param) = Param::from_name(&key) else {
+                        let keys: Vec<&str> = FAMILY_KEYS
+                            .into_iter()
+                            .chain(PARAMS.iter().map(|s| s.name))
+                            .collect();
+                        return Err(format!(
+                            "unknown field `{key}`, expected one of {}",
+                            keys.join(", ")
+                        ));
+                    };
+                    let items = match value {
+                        Value::Array(items) => items,
+                        scalar => vec![scalar],
+                    };
+                    let values = items
+                        .iter()
+                        .map(|v| param_value(param, v))
+                        .collect::<Option<Vec<ParamValue>>>()
+                        .ok_or_else(|| {
+                            format!(
+                                "{key}: expected {} or a list of them",
+                                param.spec().kind.expected()
+                            )
+                        })?;
+                    spec.params.insert(param, values);
+                }
+            }
+        }
+        spec.family = family.ok_or("missing field `family`")?;
+        Ok(spec)
+    }
+}
+
+/// One TOML value of a parameter, by its kind; `None` if it has another type.
+fn param_value(param: Param, v: &toml::Value) -> Option<ParamValue> {
+    Some(match param.spec().kind {
+        ParamKind::Count => ParamValue::Count(usize::try_from(v.as_integer()?).ok()?),
+        ParamKind::Flag => ParamValue::Flag(v.as_bool()?),
+        ParamKind::Style => ParamValue::Style(v.as_str()?.parse().ok()?),
+        ParamKind::Fraction => {
+            ParamValue::Fraction(v.as_float().or_else(|| v.as_integer().map(|i| i as f64))?)
+        }
+    })
+}
+
+impl<'de> Deserialize<'de> for FamilySpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let table = BTreeMap::<String, toml::Value>::deserialize(d)?;
+        FamilySpec::from_table(table).map_err(serde::de::Error::custom)
+    }
+}
+
+/// As in the file: `family`, every parameter of [`PARAMS`] (an empty list when not given),
+/// `count`, `algorithms`; this is what the manifest records.
+impl Serialize for FamilySpec {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(PARAMS.len() + 3))?;
+        map.serialize_entry("family", &self.family)?;
+        for spec in &PARAMS {
+            let values = self.params.get(&spec.param).map_or(&[][..], Vec::as_slice);
+            map.serialize_entry(spec.name, values)?;
+        }
+        map.serialize_entry("count", &self.count)?;
+        map.serialize_entry("algorithms", &self.algorithms)?;
+        map.end()
+    }
 }
 
 /// Existing instance files.
@@ -199,9 +284,6 @@ impl Config {
             f.family
                 .parse::<Family>()
                 .map_err(|e| format!("{at}.family: {e}"))?;
-            for s in &f.style.0 {
-                s.parse::<Style>().map_err(|e| format!("{at}.style: {e}"))?;
-            }
             if f.count == 0 {
                 return Err(format!("{at}.count: expected at least 1"));
             }
@@ -234,14 +316,14 @@ impl Config {
             for combo in expand(f) {
                 let params = combo
                     .iter()
-                    .map(|(k, v)| format!("{k}={v}"))
+                    .map(|(k, v)| format!("{}={v}", k.name()))
                     .collect::<Vec<_>>()
                     .join(" ");
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
                     let mut g = GenParams::new(family, seed);
-                    for (k, v) in &combo {
-                        apply_param(&mut g, k, v)?;
+                    for &(k, v) in &combo {
+                        g.set(k, v)?;
                     }
                     let slug: String = params
                         .chars()
@@ -317,70 +399,23 @@ fn check_algorithms(algos: &Option<Vec<String>>, at: &str) -> std::result::Resul
     Ok(())
 }
 
-/// The cartesian product of the given parameter lists, as ordered (key, value) pairs.
-fn expand(f: &FamilySpec) -> Vec<Vec<(&'static str, String)>> {
-    fn strings<T: ToString>(v: &OneOrMany<T>) -> Vec<String> {
-        v.0.iter().map(ToString::to_string).collect()
-    }
-    let axes: Vec<(&'static str, Vec<String>)> = [
-        ("n", strings(&f.n)),
-        ("holes", strings(&f.holes)),
-        ("width", strings(&f.width)),
-        ("height", strings(&f.height)),
-        ("k", strings(&f.k)),
-        ("side", strings(&f.side)),
-        ("parts", strings(&f.parts)),
-        ("style", strings(&f.style)),
-        ("compactness", strings(&f.compactness)),
-        ("s", strings(&f.s)),
-        ("no_cut", strings(&f.no_cut)),
-    ]
-    .into_iter()
-    .filter(|(_, v)| !v.is_empty())
-    .collect();
-    let mut combos: Vec<Vec<(&'static str, String)>> = vec![Vec::new()];
-    for (key, values) in axes {
+/// The cartesian product of the given parameter lists, in the order of [`PARAMS`] (the order of
+/// the `params` column, from which seeds derive).
+fn expand(f: &FamilySpec) -> Vec<Vec<(Param, ParamValue)>> {
+    let mut combos: Vec<Vec<(Param, ParamValue)>> = vec![Vec::new()];
+    for (&param, values) in f.params.iter().filter(|(_, v)| !v.is_empty()) {
         combos = combos
             .into_iter()
             .flat_map(|c| {
-                values.iter().map(move |v| {
+                values.iter().map(move |&v| {
                     let mut c = c.clone();
-                    c.push((key, v.clone()));
+                    c.push((param, v));
                     c
                 })
             })
             .collect();
     }
     combos
-}
-
-fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
-    let num = || {
-        value
-            .parse::<usize>()
-            .map_err(|e| Error::invalid(format!("{key}={value}: {e}")))
-    };
-    match key {
-        "n" => g.n = Some(num()?),
-        "holes" => g.holes = Some(num()?),
-        "width" => g.width = Some(num()?),
-        "height" => g.height = Some(num()?),
-        "k" => g.k = Some(num()?),
-        "side" => g.side = Some(num()?),
-        "parts" => g.parts = Some(num()?),
-        "s" => g.s = Some(num()?),
-        "style" => g.style = Some(value.parse()?),
-        "compactness" => {
-            g.compactness = Some(
-                value
-                    .parse()
-                    .map_err(|e| Error::invalid(format!("{key}: {e}")))?,
-            )
-        }
-        "no_cut" => g.no_cut = value == "true",
-        _ => return Err(Error::invalid(format!("unknown parameter {key}"))),
-    }
-    Ok(())
 }
 
 /// A job's seed: a stable hash of the master seed, family, parameters and index.
@@ -423,7 +458,7 @@ mod tests {
             ),
             (
                 "name = \"t\"\n[[family]]\nfamily = \"rect\"\nn = \"x\"\n",
-                "expected a usize or a list",
+                "n: expected a non-negative integer or a list",
             ),
             (
                 "name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n",
