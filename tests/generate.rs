@@ -453,3 +453,111 @@ fn generated_bytes_match_the_recorded_fingerprints() {
         differ[0]
     );
 }
+
+fn mowmill(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_mowmill"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// The deterministic families need no seed (it defaults to 0); the random ones refuse to run
+/// without one, with exit code 2 and a message naming the family.
+#[test]
+fn gen_requires_a_seed_only_for_random_families() {
+    let dir = std::env::temp_dir().join(format!("mowmill-gen-seed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("x.grid");
+    let out = out.to_str().unwrap();
+    let deterministic: [(&str, &[&str], usize); 4] = [
+        ("rect", &["--width", "3", "--height", "2"], 6),
+        ("donut", &["--side", "5", "--k", "1"], 16),
+        ("band", &["--k", "3"], 19),
+        ("thin43", &["--s", "0"], 222),
+    ];
+    for (family, params, n) in deterministic {
+        let o = mowmill(&[&["gen", family], params, &["--out", out]].concat());
+        assert!(
+            o.status.success(),
+            "{family}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let f = GridFile::parse(&std::fs::read_to_string(out).unwrap(), out).unwrap();
+        assert_eq!((f.meta("seed"), f.region.len()), (Some("0"), n), "{family}");
+    }
+    let o = mowmill(&["gen", "random-simple", "--n", "20", "--out", out]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("random-simple") && err.contains("--seed"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `gen --help` lists every family with its parameters, and the styles, from the registry.
+#[test]
+fn gen_help_lists_families_parameters_and_styles() {
+    let o = mowmill(&["gen", "--help"]);
+    assert!(o.status.success());
+    let help = String::from_utf8_lossy(&o.stdout);
+    for f in Family::ALL {
+        assert!(help.contains(f.name()), "{f} missing from:\n{help}");
+    }
+    for s in Style::ALL {
+        assert!(help.contains(s.name()), "{s} missing from:\n{help}");
+    }
+    for p in &mowmill::generate::PARAMS {
+        assert!(
+            help.contains(&format!("--{} ", p.flag)),
+            "--{} missing",
+            p.flag
+        );
+    }
+    assert!(help.contains("pinholes        --n --holes [--style] [--compactness] --seed"));
+}
+
+/// A band larger than the pixel limit is refused with exit code 2 before anything is built.
+#[test]
+fn gen_refuses_a_band_above_the_pixel_limit() {
+    let k = (mowmill::region::MAX_PIXELS / 5).to_string();
+    let o = mowmill(&["gen", "band", "--k", &k, "--out", "/nonexistent/x.grid"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("band") && err.contains("limit"), "{err}");
+}
+
+/// Config `[[family]]` tables take exactly the registry's parameter names (plus family, count
+/// and algorithms); an unknown key is an error naming the file and the key.
+#[test]
+fn config_keys_are_the_registry_parameters() {
+    use mowmill::harness::config::Config;
+    for p in &mowmill::generate::PARAMS {
+        let value = match p.kind {
+            mowmill::generate::ParamKind::Count => "1",
+            mowmill::generate::ParamKind::Flag => "false",
+            mowmill::generate::ParamKind::Style => "\"blob\"",
+            mowmill::generate::ParamKind::Fraction => "0.5",
+        };
+        let text = format!(
+            "name = \"t\"\n[[family]]\nfamily = \"rect\"\n{} = {value}\n",
+            p.name
+        );
+        let c = Config::parse(&text, "ok.toml").unwrap_or_else(|e| panic!("{}: {e}", p.name));
+        assert_eq!(c.family[0].params.len(), 1, "{}", p.name);
+    }
+    let e = Config::parse(
+        "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidht = 3\n",
+        "bad.toml",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("bad.toml") && e.contains("widht"), "{e}");
+    let e = Config::parse(
+        "name = \"t\"\n[[family]]\nfamily = \"rect\"\nno-cut = true\n",
+        "bad.toml",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("bad.toml") && e.contains("no-cut"), "{e}");
+}

@@ -1,5 +1,6 @@
 //! Unit tests of the generator (private constructions, promises, refusals).
 
+use super::band::band_pixels;
 use super::checks::{CutRule, Promise, verify};
 use super::random_holed::holed_canvas;
 use super::random_simple::simple_canvas;
@@ -889,4 +890,19 @@ proptest! {
         prop_assume!(parts <= n);
         gen_ok(&GenParams { style, ..lawn(n, parts, seed) });
     }
+}
+
+/// The band is built row by row in O(N): the same pixels as the definition, and a band with
+/// 50 000 diagonal steps costs its 250 004 pixels, not its 2.5 · 10⁹ bounding-box cells.
+#[test]
+fn band_pixels_follow_the_definition_in_linear_size() {
+    for k in 1..12 {
+        let m = k as i32 + 1;
+        let expected: Vec<Pixel> = (0..=m)
+            .flat_map(|y| (0..=m).map(move |x| Pixel::new(x, y)))
+            .filter(|p| (p.x - p.y).abs() <= 2)
+            .collect();
+        assert_eq!(band_pixels(k), expected, "k = {k}");
+    }
+    assert_eq!(band_pixels(50_000).len(), 5 * 50_000 + 4);
 }

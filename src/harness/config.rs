@@ -482,4 +482,22 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn params_keep_their_order_and_serialize_for_the_manifest() {
+        let c = Config::parse(
+            "name = \"t\"\n[[family]]\nfamily = \"random-holed\"\nno_cut = true\nstyle = [\"blob\", \"snake\"]\ncompactness = 1\nn = 40\n",
+            "t.toml",
+        )
+        .unwrap();
+        let inst = c.instances().unwrap();
+        assert_eq!(inst.len(), 2);
+        assert_eq!(inst[0].params, "n=40 style=blob compactness=1 no_cut=true");
+        let v = serde_json::to_value(&c.family[0]).unwrap();
+        assert_eq!(v["n"], serde_json::json!([40]));
+        assert_eq!(v["style"], serde_json::json!(["blob", "snake"]));
+        assert_eq!(v["no_cut"], serde_json::json!([true]));
+        assert_eq!(v["holes"], serde_json::json!([]));
+        assert_eq!(v["count"], serde_json::json!(1));
+    }
 }
