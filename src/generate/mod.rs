@@ -11,6 +11,12 @@
 //!
 //! # Families
 //!
+//! The families and their parameters are declared once, in [`PARAMS`] (name, `gen` flag,
+//! kind, help) and the family registry ([`Family::info`]: parameters, required ones, summary,
+//! whether the seed matters); `mowmill gen`'s flags and help, the keys of a config's
+//! `[[family]]` tables, the `params` column and the manifest are derived from them. `rect`,
+//! `donut`, `band` and `thin43` do not depend on the seed (`gen` defaults it to 0).
+//!
 //! | name | parameters (default) | what it is and what it guarantees |
 //! |---|---|---|
 //! | `rect` | `width`, `height` | the full `width` × `height` rectangle; N = width·height, no holes, no cut vertices unless a side is 1. |
