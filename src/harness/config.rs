@@ -67,91 +67,101 @@ pub struct FamilySpec {
     pub algorithms: Option<Vec<String>>,
 }
 
-/// The keys of a `[[family]]` table besides the parameters.
-const FAMILY_KEYS: [&str; 3] = ["family", "count", "algorithms"];
-
-impl FamilySpec {
-    /// Reads one `[[family]]` table; errors name the key.
-    fn from_table(table: BTreeMap<String, toml::Value>) -> std::result::Result<FamilySpec, String> {
-        use toml::Value;
-        let mut spec = FamilySpec {
-            family: String::new(),
-            params: BTreeMap::new(),
-            count: default_count(),
-            algorithms: None,
-        };
-        let mut family = None;
-        for (key, value) in table {
-            match key.as_str() {
-                "family" => match value {
-                    Value::String(s) => family = Some(s),
-                    _ => return Err("family: expected a family name".into()),
-                },
-                "count" => {
-                    spec.count = value
-                        .as_integer()
-                        .and_then(|c| usize::try_from(c).ok())
-                        .ok_or("count: expected a non-negative integer")?;
-                }
-                "algorithms" => {
-                    let names = value.as_array().and_then(|a| {
-                        a.iter()
-                            .map(|v| v.as_str().map(str::to_string))
-                            .collect::<Option<Vec<String>>>()
-                    });
-                    spec.algorithms =
-                        Some(names.ok_or("algorithms: expected a list of algorithm names")?);
-                }
-                _ => {
-                    let Some(param) = Param::from_name(&key) else {
-                        let keys: Vec<&str> = FAMILY_KEYS
-                            .into_iter()
-                            .chain(PARAMS.iter().map(|s| s.name))
-                            .collect();
-                        return Err(format!(
-                            "unknown field `{key}`, expected one of {}",
-                            keys.join(", ")
-                        ));
-                    };
-                    let items = match value {
-                        Value::Array(items) => items,
-                        scalar => vec![scalar],
-                    };
-                    let values = items
-                        .iter()
-                        .map(|v| param_value(param, v))
-                        .collect::<Option<Vec<ParamValue>>>()
-                        .ok_or_else(|| {
-                            format!(
-                                "{key}: expected {} or a list of them",
-                                param.spec().kind.expected()
-                            )
-                        })?;
-                    spec.params.insert(param, values);
-                }
-            }
-        }
-        spec.family = family.ok_or("missing field `family`")?;
-        Ok(spec)
-    }
+/// A key of a `[[family]]` table. Deserializing it checks the name, so that an unknown key is
+/// reported at its own line and column.
+enum FamilyKey {
+    Family,
+    Count,
+    Algorithms,
+    Param(Param),
 }
 
-/// One TOML value of a parameter, by its kind; `None` if it has another type.
-fn param_value(param: Param, v: &toml::Value) -> Option<ParamValue> {
-    Some(match param.spec().kind {
-        ParamKind::Count => ParamValue::Count(usize::try_from(v.as_integer()?).ok()?),
-        ParamKind::Flag => ParamValue::Flag(v.as_bool()?),
-        ParamKind::Style => ParamValue::Style(v.as_str()?.parse().ok()?),
-        ParamKind::Fraction => {
-            ParamValue::Fraction(v.as_float().or_else(|| v.as_integer().map(|i| i as f64))?)
-        }
-    })
+impl<'de> Deserialize<'de> for FamilyKey {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let key = String::deserialize(d)?;
+        Ok(match key.as_str() {
+            "family" => FamilyKey::Family,
+            "count" => FamilyKey::Count,
+            "algorithms" => FamilyKey::Algorithms,
+            _ => FamilyKey::Param(Param::from_name(&key).ok_or_else(|| {
+                let keys: Vec<&str> = ["family", "count", "algorithms"]
+                    .into_iter()
+                    .chain(PARAMS.iter().map(|s| s.name))
+                    .collect();
+                serde::de::Error::custom(format!(
+                    "unknown field `{key}`, expected one of {}",
+                    keys.join(", ")
+                ))
+            })?),
+        })
+    }
 }
 
 impl<'de> Deserialize<'de> for FamilySpec {
     fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
-        let table = BTreeMap::<String, toml::Value>::deserialize(d)?;
-        FamilySpec::from_table(table).map_err(serde::de::Error::custom)
+        struct Table;
+        impl<'de> serde::de::Visitor<'de> for Table {
+            type Value = FamilySpec;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a [[family]] table")
+            }
+
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> std::result::Result<FamilySpec, A::Error> {
+                let mut family = None;
+                let mut spec = FamilySpec {
+                    family: String::new(),
+                    params: BTreeMap::new(),
+                    count: default_count(),
+                    algorithms: None,
+                };
+                while let Some(key) = map.next_key::<FamilyKey>()? {
+                    match key {
+                        FamilyKey::Family => family = Some(map.next_value::<String>()?),
+                        FamilyKey::Count => spec.count = map.next_value()?,
+                        FamilyKey::Algorithms => spec.algorithms = Some(map.next_value()?),
+                        FamilyKey::Param(param) => {
+                            let values: Vec<ParamValue> = match param.spec().kind {
+                                ParamKind::Count => map
+                                    .next_value::<OneOrMany<usize>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Count)
+                                    .collect(),
+                                ParamKind::Flag => map
+                                    .next_value::<OneOrMany<bool>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Flag)
+                                    .collect(),
+                                ParamKind::Fraction => map
+                                    .next_value::<OneOrMany<f64>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Fraction)
+                                    .collect(),
+                                ParamKind::Style => map
+                                    .next_value::<OneOrMany<String>>()?
+                                    .0
+                                    .iter()
+                                    .map(|s| s.parse().map(ParamValue::Style))
+                                    .collect::<Result<_>>()
+                                    .map_err(|e| {
+                                        serde::de::Error::custom(format!("{}: {e}", param.name()))
+                                    })?,
+                            };
+                            spec.params.insert(param, values);
+                        }
+                    }
+                }
+                spec.family = family.ok_or_else(|| serde::de::Error::missing_field("family"))?;
+                Ok(spec)
+            }
+        }
+        d.deserialize_map(Table)
     }
 }
 
@@ -458,7 +468,7 @@ mod tests {
             ),
             (
                 "name = \"t\"\n[[family]]\nfamily = \"rect\"\nn = \"x\"\n",
-                "n: expected a non-negative integer or a list",
+                "expected a usize or a list",
             ),
             (
                 "name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n",
