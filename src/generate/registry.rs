@@ -182,23 +182,6 @@ impl Param {
             .into_iter()
             .filter(move |f| f.info().params.contains(&self))
     }
-
-    /// Parses a command-line value of this parameter.
-    pub fn parse(self, text: &str) -> Result<ParamValue> {
-        let bad = || {
-            Error::invalid(format!(
-                "{}: expected {}, got {text:?}",
-                self.name(),
-                self.spec().kind.expected()
-            ))
-        };
-        Ok(match self.spec().kind {
-            ParamKind::Count => ParamValue::Count(text.parse().map_err(|_| bad())?),
-            ParamKind::Flag => ParamValue::Flag(text.parse().map_err(|_| bad())?),
-            ParamKind::Style => ParamValue::Style(text.parse()?),
-            ParamKind::Fraction => ParamValue::Fraction(text.parse().map_err(|_| bad())?),
-        })
-    }
 }
 
 /// A parameter's value, of its [`ParamKind`]. It displays as in the `params` column
@@ -209,17 +192,6 @@ pub enum ParamValue {
     Flag(bool),
     Style(Style),
     Fraction(f64),
-}
-
-impl ParamValue {
-    pub fn kind(self) -> ParamKind {
-        match self {
-            ParamValue::Count(_) => ParamKind::Count,
-            ParamValue::Flag(_) => ParamKind::Flag,
-            ParamValue::Style(_) => ParamKind::Style,
-            ParamValue::Fraction(_) => ParamKind::Fraction,
-        }
-    }
 }
 
 impl fmt::Display for ParamValue {
