@@ -561,3 +561,14 @@ fn config_keys_are_the_registry_parameters() {
     .to_string();
     assert!(e.contains("bad.toml") && e.contains("no-cut"), "{e}");
 }
+
+/// `Param::spec` indexes `PARAMS` by the variant: rows and variants agree, names round-trip.
+#[test]
+fn params_rows_match_the_enum_and_names_round_trip() {
+    use mowmill::generate::{PARAMS, Param};
+    for (i, spec) in PARAMS.iter().enumerate() {
+        assert_eq!(spec.param as usize, i, "{}", spec.name);
+        assert_eq!(spec.param.name(), spec.name);
+        assert_eq!(Param::from_name(spec.name), Some(spec.param));
+    }
+}
