@@ -1,74 +1,116 @@
-//! `mowmill gen`: one instance of a family, deterministically.
+//! `mowmill gen`: one instance of a family, deterministically. The parameter flags, their help
+//! and the list of families come from the generator's registry
+//! ([`PARAMS`](mowmill::generate::PARAMS), [`Family::info`]).
 
 use anyhow::Result;
-use clap::Args;
-use mowmill::generate::{self, Family, GenParams, Style};
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::{ArgAction, ArgMatches, Args, FromArgMatches};
+use mowmill::error::Error;
+use mowmill::generate::{self, Family, GenParams, PARAMS, Param, ParamKind, ParamValue, Style};
 use mowmill::topology;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct GenArgs {
-    /// Family: rect, random-simple, random-holed, thin, lawn-scattered, donut, band, thin43,
-    /// boundary, thin-arms, pinholes.
+    /// Instance family (see the list below).
+    #[arg(value_parser = family_parser())]
     pub family: Family,
-    /// Number of pixels.
+    #[command(flatten)]
+    pub params: ParamArgs,
+    /// Seed of the portable ChaCha generator; required by the random families.
     #[arg(long)]
-    pub n: Option<usize>,
-    /// Number of holes.
-    #[arg(long)]
-    pub holes: Option<usize>,
-    /// Width (rect).
-    #[arg(long)]
-    pub width: Option<usize>,
-    /// Height (rect).
-    #[arg(long)]
-    pub height: Option<usize>,
-    /// Width of the annulus (donut), or the index of the band B_k (band).
-    #[arg(long)]
-    pub k: Option<usize>,
-    /// Outer side (donut).
-    #[arg(long)]
-    pub side: Option<usize>,
-    /// Parameter s of the 4/3 thin example (thin43).
-    #[arg(long)]
-    pub s: Option<usize>,
-    /// Number of grass components (lawn-scattered).
-    #[arg(long)]
-    pub parts: Option<usize>,
-    /// Shape style of random families: mixed (default), blob, rectangles, snake, rooms.
-    #[arg(long)]
-    pub style: Option<Style>,
-    /// Compactness of blob growth in [0, 1] (1 round, 0 ragged).
-    #[arg(long)]
-    pub compactness: Option<f64>,
-    /// No cut vertices (random-simple) or no local cut vertices (random-holed).
-    #[arg(long)]
-    pub no_cut: bool,
-    /// Seed of the portable ChaCha generator.
-    #[arg(long)]
-    pub seed: u64,
+    pub seed: Option<u64>,
     /// Output .grid file.
     #[arg(long)]
     pub out: PathBuf,
 }
 
+fn family_parser() -> impl TypedValueParser<Value = Family> {
+    PossibleValuesParser::new(Family::ALL.map(Family::name)).try_map(|s| s.parse::<Family>())
+}
+
+fn style_parser() -> impl TypedValueParser<Value = Style> {
+    PossibleValuesParser::new(Style::ALL.map(Style::name)).try_map(|s| s.parse::<Style>())
+}
+
+/// The values of the parameter flags given on the command line: one flag per row of
+/// [`PARAMS`], in its order.
+pub struct ParamArgs(pub Vec<(Param, ParamValue)>);
+
+impl Args for ParamArgs {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        let cmd = PARAMS.iter().fold(cmd, |cmd, spec| {
+            let families: Vec<&str> = spec.param.families().map(Family::name).collect();
+            let arg = clap::Arg::new(spec.name).long(spec.flag).help(format!(
+                "{} [{}]",
+                spec.help,
+                families.join(", ")
+            ));
+            cmd.arg(match spec.kind {
+                ParamKind::Count => arg.value_parser(clap::value_parser!(usize)),
+                ParamKind::Flag => arg.action(ArgAction::SetTrue),
+                ParamKind::Style => arg.value_parser(style_parser()),
+                ParamKind::Fraction => arg.value_parser(clap::value_parser!(f64)),
+            })
+        });
+        cmd.after_help(generate::families_help())
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl FromArgMatches for ParamArgs {
+    fn from_arg_matches(m: &ArgMatches) -> std::result::Result<Self, clap::Error> {
+        let values = PARAMS
+            .iter()
+            .filter_map(|spec| {
+                let value = match spec.kind {
+                    ParamKind::Count => m
+                        .get_one::<usize>(spec.name)
+                        .copied()
+                        .map(ParamValue::Count),
+                    ParamKind::Flag => m.get_flag(spec.name).then_some(ParamValue::Flag(true)),
+                    ParamKind::Style => m
+                        .get_one::<Style>(spec.name)
+                        .copied()
+                        .map(ParamValue::Style),
+                    ParamKind::Fraction => m
+                        .get_one::<f64>(spec.name)
+                        .copied()
+                        .map(ParamValue::Fraction),
+                };
+                value.map(|v| (spec.param, v))
+            })
+            .collect();
+        Ok(ParamArgs(values))
+    }
+
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> std::result::Result<(), clap::Error> {
+        *self = Self::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
 pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
-    let params = GenParams {
-        family: a.family,
-        n: a.n,
-        holes: a.holes,
-        width: a.width,
-        height: a.height,
-        k: a.k,
-        side: a.side,
-        parts: a.parts,
-        no_cut: a.no_cut,
-        style: a.style,
-        compactness: a.compactness,
-        s: a.s,
-        seed: a.seed,
+    let info = a.family.info();
+    let seed = match a.seed {
+        Some(seed) => seed,
+        None if info.random => {
+            return Err(Error::invalid(format!(
+                "family {} is random: give --seed S (the same seed gives the same instance)",
+                info.name
+            ))
+            .into());
+        }
+        None => 0,
     };
+    let mut params = GenParams::new(a.family, seed);
+    for &(param, value) in &a.params.0 {
+        params.set(param, value)?;
+    }
     let file = generate::generate(&params)?;
     file.write(&a.out)?;
     eprintln!(

@@ -46,9 +46,10 @@
 
 use crate::algorithms::{Cutter, Merge, Options};
 use crate::error::{Error, Result};
-use crate::generate::{Family, GenParams, Style};
+use crate::generate::{Family, GenParams, PARAMS, Param, ParamKind, ParamValue};
 use crate::outside::{OutsideAlgorithm, OutsideSpec};
 use serde::{Deserialize, Deserializer, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// A whole benchmark configuration.
@@ -99,37 +100,131 @@ fn default_count() -> usize {
     1
 }
 
-/// One generated family with parameter lists.
-#[derive(Clone, Debug, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
+/// One generated family with parameter lists. Its keys are `family`, `count`, `algorithms`
+/// and the names of the generator's [`PARAMS`]; any other key is an error naming it.
+#[derive(Clone, Debug)]
 pub struct FamilySpec {
     pub family: String,
-    #[serde(default)]
-    pub n: OneOrMany<usize>,
-    #[serde(default)]
-    pub holes: OneOrMany<usize>,
-    #[serde(default)]
-    pub width: OneOrMany<usize>,
-    #[serde(default)]
-    pub height: OneOrMany<usize>,
-    #[serde(default)]
-    pub k: OneOrMany<usize>,
-    #[serde(default)]
-    pub side: OneOrMany<usize>,
-    #[serde(default)]
-    pub parts: OneOrMany<usize>,
-    #[serde(default)]
-    pub style: OneOrMany<String>,
-    #[serde(default)]
-    pub compactness: OneOrMany<f64>,
-    #[serde(default)]
-    pub s: OneOrMany<usize>,
-    #[serde(default)]
-    pub no_cut: OneOrMany<bool>,
-    #[serde(default = "default_count")]
+    /// The given parameter lists (a scalar is a list of one), in the order of [`PARAMS`].
+    pub params: BTreeMap<Param, Vec<ParamValue>>,
+    /// Instances per parameter combination.
     pub count: usize,
-    #[serde(default)]
     pub algorithms: Option<Vec<String>>,
+}
+
+/// A key of a `[[family]]` table. Deserializing it checks the name, so that an unknown key is
+/// reported at its own line and column.
+enum FamilyKey {
+    Family,
+    Count,
+    Algorithms,
+    Param(Param),
+}
+
+impl<'de> Deserialize<'de> for FamilyKey {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let key = String::deserialize(d)?;
+        Ok(match key.as_str() {
+            "family" => FamilyKey::Family,
+            "count" => FamilyKey::Count,
+            "algorithms" => FamilyKey::Algorithms,
+            _ => FamilyKey::Param(Param::from_name(&key).ok_or_else(|| {
+                let keys: Vec<&str> = ["family", "count", "algorithms"]
+                    .into_iter()
+                    .chain(PARAMS.iter().map(|s| s.name))
+                    .collect();
+                serde::de::Error::custom(format!(
+                    "unknown field `{key}`, expected one of {}",
+                    keys.join(", ")
+                ))
+            })?),
+        })
+    }
+}
+
+impl<'de> Deserialize<'de> for FamilySpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct Table;
+        impl<'de> serde::de::Visitor<'de> for Table {
+            type Value = FamilySpec;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a [[family]] table")
+            }
+
+            fn visit_map<A: serde::de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> std::result::Result<FamilySpec, A::Error> {
+                let mut family = None;
+                let mut spec = FamilySpec {
+                    family: String::new(),
+                    params: BTreeMap::new(),
+                    count: default_count(),
+                    algorithms: None,
+                };
+                while let Some(key) = map.next_key::<FamilyKey>()? {
+                    match key {
+                        FamilyKey::Family => family = Some(map.next_value::<String>()?),
+                        FamilyKey::Count => spec.count = map.next_value()?,
+                        FamilyKey::Algorithms => spec.algorithms = Some(map.next_value()?),
+                        FamilyKey::Param(param) => {
+                            let values: Vec<ParamValue> = match param.spec().kind {
+                                ParamKind::Count => map
+                                    .next_value::<OneOrMany<usize>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Count)
+                                    .collect(),
+                                ParamKind::Flag => map
+                                    .next_value::<OneOrMany<bool>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Flag)
+                                    .collect(),
+                                ParamKind::Fraction => map
+                                    .next_value::<OneOrMany<f64>>()?
+                                    .0
+                                    .into_iter()
+                                    .map(ParamValue::Fraction)
+                                    .collect(),
+                                ParamKind::Style => map
+                                    .next_value::<OneOrMany<String>>()?
+                                    .0
+                                    .iter()
+                                    .map(|s| s.parse().map(ParamValue::Style))
+                                    .collect::<Result<_>>()
+                                    .map_err(|e| {
+                                        serde::de::Error::custom(format!("{}: {e}", param.name()))
+                                    })?,
+                            };
+                            spec.params.insert(param, values);
+                        }
+                    }
+                }
+                spec.family = family.ok_or_else(|| serde::de::Error::missing_field("family"))?;
+                Ok(spec)
+            }
+        }
+        d.deserialize_map(Table)
+    }
+}
+
+/// As in the file: `family`, every parameter of [`PARAMS`] (an empty list when not given),
+/// `count`, `algorithms`; this is what the manifest records.
+impl Serialize for FamilySpec {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(PARAMS.len() + 3))?;
+        map.serialize_entry("family", &self.family)?;
+        for spec in &PARAMS {
+            let values = self.params.get(&spec.param).map_or(&[][..], Vec::as_slice);
+            map.serialize_entry(spec.name, values)?;
+        }
+        map.serialize_entry("count", &self.count)?;
+        map.serialize_entry("algorithms", &self.algorithms)?;
+        map.end()
+    }
 }
 
 /// Existing instance files.
@@ -281,9 +376,6 @@ impl Config {
             f.family
                 .parse::<Family>()
                 .map_err(|e| format!("{at}.family: {e}"))?;
-            for s in &f.style.0 {
-                s.parse::<Style>().map_err(|e| format!("{at}.style: {e}"))?;
-            }
             if f.count == 0 {
                 return Err(format!("{at}.count: expected at least 1"));
             }
@@ -335,14 +427,14 @@ impl Config {
             for combo in expand(f) {
                 let params = combo
                     .iter()
-                    .map(|(k, v)| format!("{k}={v}"))
+                    .map(|(k, v)| format!("{}={v}", k.name()))
                     .collect::<Vec<_>>()
                     .join(" ");
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
                     let mut g = GenParams::new(family, seed);
-                    for (k, v) in &combo {
-                        apply_param(&mut g, k, v)?;
+                    for &(k, v) in &combo {
+                        g.set(k, v)?;
                     }
                     let slug: String = params
                         .chars()
@@ -422,70 +514,23 @@ fn check_algorithms(
     Ok(())
 }
 
-/// The cartesian product of the given parameter lists, as ordered (key, value) pairs.
-fn expand(f: &FamilySpec) -> Vec<Vec<(&'static str, String)>> {
-    fn strings<T: ToString>(v: &OneOrMany<T>) -> Vec<String> {
-        v.0.iter().map(ToString::to_string).collect()
-    }
-    let axes: Vec<(&'static str, Vec<String>)> = [
-        ("n", strings(&f.n)),
-        ("holes", strings(&f.holes)),
-        ("width", strings(&f.width)),
-        ("height", strings(&f.height)),
-        ("k", strings(&f.k)),
-        ("side", strings(&f.side)),
-        ("parts", strings(&f.parts)),
-        ("style", strings(&f.style)),
-        ("compactness", strings(&f.compactness)),
-        ("s", strings(&f.s)),
-        ("no_cut", strings(&f.no_cut)),
-    ]
-    .into_iter()
-    .filter(|(_, v)| !v.is_empty())
-    .collect();
-    let mut combos: Vec<Vec<(&'static str, String)>> = vec![Vec::new()];
-    for (key, values) in axes {
+/// The cartesian product of the given parameter lists, in the order of [`PARAMS`] (the order of
+/// the `params` column, from which seeds derive).
+fn expand(f: &FamilySpec) -> Vec<Vec<(Param, ParamValue)>> {
+    let mut combos: Vec<Vec<(Param, ParamValue)>> = vec![Vec::new()];
+    for (&param, values) in f.params.iter().filter(|(_, v)| !v.is_empty()) {
         combos = combos
             .into_iter()
             .flat_map(|c| {
-                values.iter().map(move |v| {
+                values.iter().map(move |&v| {
                     let mut c = c.clone();
-                    c.push((key, v.clone()));
+                    c.push((param, v));
                     c
                 })
             })
             .collect();
     }
     combos
-}
-
-fn apply_param(g: &mut GenParams, key: &str, value: &str) -> Result<()> {
-    let num = || {
-        value
-            .parse::<usize>()
-            .map_err(|e| Error::invalid(format!("{key}={value}: {e}")))
-    };
-    match key {
-        "n" => g.n = Some(num()?),
-        "holes" => g.holes = Some(num()?),
-        "width" => g.width = Some(num()?),
-        "height" => g.height = Some(num()?),
-        "k" => g.k = Some(num()?),
-        "side" => g.side = Some(num()?),
-        "parts" => g.parts = Some(num()?),
-        "s" => g.s = Some(num()?),
-        "style" => g.style = Some(value.parse()?),
-        "compactness" => {
-            g.compactness = Some(
-                value
-                    .parse()
-                    .map_err(|e| Error::invalid(format!("{key}: {e}")))?,
-            )
-        }
-        "no_cut" => g.no_cut = value == "true",
-        _ => return Err(Error::invalid(format!("unknown parameter {key}"))),
-    }
-    Ok(())
 }
 
 /// A job's seed: a stable hash of the master seed, family, parameters and index.
@@ -551,5 +596,23 @@ mod tests {
                 "{needle}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn params_keep_their_order_and_serialize_for_the_manifest() {
+        let c = Config::parse(
+            "name = \"t\"\n[[family]]\nfamily = \"random-holed\"\nno_cut = true\nstyle = [\"blob\", \"snake\"]\ncompactness = 1\nn = 40\n",
+            "t.toml",
+        )
+        .unwrap();
+        let inst = c.instances().unwrap();
+        assert_eq!(inst.len(), 2);
+        assert_eq!(inst[0].params, "n=40 style=blob compactness=1 no_cut=true");
+        let v = serde_json::to_value(&c.family[0]).unwrap();
+        assert_eq!(v["n"], serde_json::json!([40]));
+        assert_eq!(v["style"], serde_json::json!(["blob", "snake"]));
+        assert_eq!(v["no_cut"], serde_json::json!([true]));
+        assert_eq!(v["holes"], serde_json::json!([]));
+        assert_eq!(v["count"], serde_json::json!(1));
     }
 }

@@ -1,5 +1,8 @@
 //! `manifest.json`: what produced a run — mowmill version, git commit and dirty flag, rustc and
 //! HiGHS versions, the machine, the resolved config, start and end time, the command line.
+//! Each `[[family]]` of the config is recorded with every generator parameter of
+//! [`PARAMS`](crate::generate::PARAMS) (an empty list when not given), by `FamilySpec`'s
+//! serialization.
 
 use super::config::Config;
 use super::run::RunOptions;

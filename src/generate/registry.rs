@@ -1,0 +1,420 @@
+//! The registry of families and parameters: every name `gen`, configs and the manifest use.
+
+use super::styles::Style;
+use crate::error::Error;
+use crate::error::Result;
+use std::fmt;
+use std::str::FromStr;
+
+/// An instance family; its stable name is the CLI's `mowmill gen FAMILY`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Family {
+    Rect,
+    RandomSimple,
+    RandomHoled,
+    Thin,
+    LawnScattered,
+    Donut,
+    Band,
+    Thin43,
+    Boundary,
+    ThinArms,
+    Pinholes,
+}
+
+/// A generator parameter (the field of [`GenParams`](super::GenParams) of the same name).
+/// The variants follow the rows of [`PARAMS`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Param {
+    N,
+    Holes,
+    Width,
+    Height,
+    K,
+    Side,
+    Parts,
+    Style,
+    Compactness,
+    S,
+    NoCut,
+}
+
+/// The type of a parameter's values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// A non-negative integer.
+    Count,
+    /// A switch: `--no-cut` on the command line, `true` or `false` in a config.
+    Flag,
+    /// A [`Style`] name.
+    Style,
+    /// A number in [0, 1].
+    Fraction,
+}
+
+impl ParamKind {
+    /// What a value of this kind looks like, for messages.
+    pub fn expected(self) -> &'static str {
+        match self {
+            ParamKind::Count => "a non-negative integer",
+            ParamKind::Flag => "true or false",
+            ParamKind::Style => "a style name",
+            ParamKind::Fraction => "a number between 0 and 1",
+        }
+    }
+}
+
+/// One parameter: its names and meaning. The single declaration that `mowmill gen`'s flags,
+/// the keys of a config's `[[family]]` tables, the `params` column of results and the
+/// manifest are derived from.
+#[derive(Debug)]
+pub struct ParamSpec {
+    pub param: Param,
+    /// The config key and the key of `; params:` lines and of the `params` column.
+    pub name: &'static str,
+    /// The long flag of `mowmill gen` (without `--`).
+    pub flag: &'static str,
+    pub kind: ParamKind,
+    pub help: &'static str,
+}
+
+/// Every parameter, indexed by `Param as usize`. The order is the order of the `params`
+/// column of benchmark results, from which instance seeds derive: append, never reorder.
+pub const PARAMS: [ParamSpec; 11] = [
+    ParamSpec {
+        param: Param::N,
+        name: "n",
+        flag: "n",
+        kind: ParamKind::Count,
+        help: "Number of pixels",
+    },
+    ParamSpec {
+        param: Param::Holes,
+        name: "holes",
+        flag: "holes",
+        kind: ParamKind::Count,
+        help: "Number of holes (default 1 for random-holed, 0 otherwise)",
+    },
+    ParamSpec {
+        param: Param::Width,
+        name: "width",
+        flag: "width",
+        kind: ParamKind::Count,
+        help: "Width of the rectangle",
+    },
+    ParamSpec {
+        param: Param::Height,
+        name: "height",
+        flag: "height",
+        kind: ParamKind::Count,
+        help: "Height of the rectangle",
+    },
+    ParamSpec {
+        param: Param::K,
+        name: "k",
+        flag: "k",
+        kind: ParamKind::Count,
+        help: "Width of the annulus (donut), or the index of the band B_k (band)",
+    },
+    ParamSpec {
+        param: Param::Side,
+        name: "side",
+        flag: "side",
+        kind: ParamKind::Count,
+        help: "Outer side of the annulus",
+    },
+    ParamSpec {
+        param: Param::Parts,
+        name: "parts",
+        flag: "parts",
+        kind: ParamKind::Count,
+        help: "Number of grass components (default 3)",
+    },
+    ParamSpec {
+        param: Param::Style,
+        name: "style",
+        flag: "style",
+        kind: ParamKind::Style,
+        help: "Shape style (default: mixed, one of the others drawn from the seed)",
+    },
+    ParamSpec {
+        param: Param::Compactness,
+        name: "compactness",
+        flag: "compactness",
+        kind: ParamKind::Fraction,
+        help: "Compactness of growth in [0, 1], 1 round, 0 ragged (default: drawn from the seed)",
+    },
+    ParamSpec {
+        param: Param::S,
+        name: "s",
+        flag: "s",
+        kind: ParamKind::Count,
+        help: "Parameter s of the 4/3 thin example",
+    },
+    ParamSpec {
+        param: Param::NoCut,
+        name: "no_cut",
+        flag: "no-cut",
+        kind: ParamKind::Flag,
+        help: "No cut vertices (random-simple) or no local cut vertices (random-holed)",
+    },
+];
+
+impl Param {
+    /// The parameter's row of [`PARAMS`].
+    pub fn spec(self) -> &'static ParamSpec {
+        &PARAMS[self as usize]
+    }
+
+    /// The key used in configs, in the `; params:` line and in messages.
+    pub fn name(self) -> &'static str {
+        self.spec().name
+    }
+
+    /// The parameter called `name` (a config key).
+    pub fn from_name(name: &str) -> Option<Param> {
+        PARAMS.iter().find(|s| s.name == name).map(|s| s.param)
+    }
+
+    /// The families that take this parameter.
+    pub fn families(self) -> impl Iterator<Item = Family> {
+        Family::ALL
+            .into_iter()
+            .filter(move |f| f.info().params.contains(&self))
+    }
+}
+
+/// A parameter's value, of its [`ParamKind`]. It displays as in the `params` column
+/// (`32`, `true`, `blob`, `0.5`) and serializes as the typed JSON value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ParamValue {
+    Count(usize),
+    Flag(bool),
+    Style(Style),
+    Fraction(f64),
+}
+
+impl fmt::Display for ParamValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParamValue::Count(v) => write!(f, "{v}"),
+            ParamValue::Flag(v) => write!(f, "{v}"),
+            ParamValue::Style(v) => write!(f, "{v}"),
+            ParamValue::Fraction(v) => write!(f, "{v}"),
+        }
+    }
+}
+
+impl serde::Serialize for ParamValue {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match *self {
+            ParamValue::Count(v) => s.serialize_u64(v as u64),
+            ParamValue::Flag(v) => s.serialize_bool(v),
+            ParamValue::Style(v) => s.serialize_str(v.name()),
+            ParamValue::Fraction(v) => s.serialize_f64(v),
+        }
+    }
+}
+
+/// One row of the family registry: name, one-line summary, and the parameters it takes.
+#[derive(Debug)]
+pub struct FamilyInfo {
+    pub family: Family,
+    /// Stable name (CLI and `; family:` line).
+    pub name: &'static str,
+    pub summary: &'static str,
+    /// The parameters the family takes, in the order of the `; params:` line.
+    pub params: &'static [Param],
+    /// The parameters without a default.
+    pub required: &'static [Param],
+    /// Whether the instance depends on the seed (`mowmill gen` then requires `--seed`).
+    pub random: bool,
+}
+
+/// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
+/// arm in `Spec::build`; `mowmill gen`, configs and the manifest read it from here.
+pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
+    FamilyInfo {
+        family: Family::Rect,
+        name: "rect",
+        summary: "the full width x height rectangle",
+        params: &[Param::Width, Param::Height],
+        required: &[Param::Width, Param::Height],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::RandomSimple,
+        name: "random-simple",
+        summary: "exactly n pixels, 4-connected, no holes; no_cut: no cut vertices",
+        params: &[Param::N, Param::NoCut, Param::Style, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::RandomHoled,
+        name: "random-holed",
+        summary: "exactly n pixels, 4-connected, exactly `holes` holes; no_cut: no local cut vertices",
+        params: &[
+            Param::N,
+            Param::Holes,
+            Param::NoCut,
+            Param::Style,
+            Param::Compactness,
+        ],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::Thin,
+        name: "thin",
+        summary: "thin pocket: width-1 corridors, no 2x2 block, exactly n pixels and `holes` holes",
+        params: &[Param::N, Param::Holes, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::LawnScattered,
+        name: "lawn-scattered",
+        summary: "n pixels of grass in `parts` components, 8-separated from one another",
+        params: &[Param::N, Param::Parts, Param::Style, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::Donut,
+        name: "donut",
+        summary: "square annulus of outer side `side` and width k",
+        params: &[Param::Side, Param::K],
+        required: &[Param::Side, Param::K],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Band,
+        name: "band",
+        summary: "diagonal band B_k: 0 <= x, y <= k + 1, |x - y| <= 2 (tight for 6/5, milling paper)",
+        params: &[Param::K],
+        required: &[Param::K],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Thin43,
+        name: "thin43",
+        summary: "the 4/3 thin example (turn-cost paper, Fig. 6) with parameter s >= 0",
+        params: &[Param::S],
+        required: &[Param::S],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Boundary,
+        name: "boundary",
+        summary: "every pixel a boundary pixel (the precondition of boundary-cc): stairs, one-pixel links and parts, holes",
+        params: &[Param::N, Param::Style, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::ThinArms,
+        name: "thin-arms",
+        summary: "thin pocket grown pixel by pixel: stairs, crossings with short arms, exactly n pixels and `holes` holes",
+        params: &[Param::N, Param::Holes, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::Pinholes,
+        name: "pinholes",
+        summary: "exactly n pixels, exactly `holes` one-pixel holes, often in columns, walls down to one pixel",
+        params: &[Param::N, Param::Holes, Param::Style, Param::Compactness],
+        required: &[Param::N, Param::Holes],
+        random: true,
+    },
+];
+
+impl Family {
+    pub const ALL: [Family; 11] = [
+        Family::Rect,
+        Family::RandomSimple,
+        Family::RandomHoled,
+        Family::Thin,
+        Family::LawnScattered,
+        Family::Donut,
+        Family::Band,
+        Family::Thin43,
+        Family::Boundary,
+        Family::ThinArms,
+        Family::Pinholes,
+    ];
+
+    /// The family's registry row.
+    pub fn info(self) -> &'static FamilyInfo {
+        &FAMILY_TABLE[self as usize]
+    }
+
+    pub fn name(self) -> &'static str {
+        self.info().name
+    }
+}
+
+impl fmt::Display for Family {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Family {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Family> {
+        Family::ALL
+            .into_iter()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
+                Error::invalid(format!(
+                    "unknown family {s:?}: expected one of {}",
+                    names.join(", ")
+                ))
+            })
+    }
+}
+
+/// The families, their parameters and the styles, for `mowmill gen --help`: one line per
+/// family with its required parameters, `[optional]` ones, and whether it needs a seed.
+pub fn families_help() -> String {
+    let mut out = String::from("Families (parameters; [optional]):\n");
+    for f in Family::ALL {
+        let info = f.info();
+        let params: Vec<String> = info
+            .params
+            .iter()
+            .map(|q| {
+                let flag = format!("--{}", q.spec().flag);
+                if info.required.contains(q) {
+                    flag
+                } else {
+                    format!("[{flag}]")
+                }
+            })
+            .collect();
+        let seed = if info.random { " --seed" } else { "" };
+        out.push_str(&format!(
+            "  {:<15} {}{seed}\n  {:<15}   {}\n",
+            info.name,
+            params.join(" "),
+            "",
+            info.summary
+        ));
+    }
+    let styles: Vec<&str> = Style::ALL.iter().map(|s| s.name()).collect();
+    let fixed: Vec<&str> = FAMILY_TABLE
+        .iter()
+        .filter(|f| !f.random)
+        .map(|f| f.name)
+        .collect();
+    out.push_str(&format!(
+        "\nStyles (--style): {}.\nDeterministic families (--seed optional, default 0): {}.",
+        styles.join(", "),
+        fixed.join(", ")
+    ));
+    out
+}

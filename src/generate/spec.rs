@@ -1,0 +1,376 @@
+//! Resolved parameters: defaults and seed-drawn values applied, refusals, promises, and the
+//! dispatch to each family's construction with retries and fallback.
+
+use super::band::band_pixels;
+use super::boundary::{boundary_canvas, two_rows_pixels};
+use super::checks::{CutRule, Promise, verify};
+use super::lawn::lawn_pixels;
+use super::pinholes::pinholes_canvas;
+use super::random_holed::holed_canvas;
+use super::random_simple::simple_canvas;
+use super::rect::{donut_pixels, rect_pixels};
+use super::registry::{Family, PARAMS, Param};
+use super::rng::{Rng, below, between, rng_for};
+use super::staircase::{min_holed_pixels, rows_pixels, rows_plan};
+use super::styles::{ShapeOpts, Style};
+use super::thin::{min_thin_pixels, thin_pixels};
+use super::thin_arms::thin_arms_pixels;
+use super::thin43::{thin43_holes, thin43_pixels};
+use super::{GenParams, MAX_PIXELS, Provenance};
+use crate::error::Error;
+use crate::error::Result;
+use crate::region::Pixel;
+use crate::region::Region;
+
+/// Random attempts before the deterministic fallback pub(super) construction.
+pub(super) const MAX_ATTEMPTS: u64 = 8;
+
+/// Fully resolved parameters: defaults applied, `Mixed` and compactness drawn from the seed.
+#[derive(Clone, Debug)]
+pub(super) struct Spec {
+    pub(super) family: Family,
+    pub(super) n: usize,
+    pub(super) holes: usize,
+    pub(super) width: usize,
+    pub(super) height: usize,
+    pub(super) side: usize,
+    pub(super) k: usize,
+    pub(super) parts: usize,
+    pub(super) no_cut: bool,
+    pub(super) style: Style,
+    pub(super) compactness: f64,
+    pub(super) s: usize,
+    pub(super) seed: u64,
+}
+
+/// Tags of the seed-derived random streams.
+pub(super) const TAG_RESOLVE: u64 = u64::MAX;
+
+pub(super) const TAG_FALLBACK: u64 = u64::MAX - 1;
+
+impl Spec {
+    pub(super) fn resolve(p: &GenParams) -> Result<Spec> {
+        let info = p.family.info();
+        let takes: Vec<&str> = info.params.iter().map(|q| q.name()).collect();
+        for q in PARAMS.iter().map(|spec| spec.param) {
+            if p.get(q).is_some() && !info.params.contains(&q) {
+                return Err(Error::invalid(format!(
+                    "parameter `{}` does not apply to family {} (it takes: {})",
+                    q.name(),
+                    info.name,
+                    takes.join(", ")
+                )));
+            }
+        }
+        for &q in info.required {
+            if p.get(q).is_none() {
+                return Err(Error::invalid(format!(
+                    "family {} needs parameter `{}`",
+                    info.name,
+                    q.name()
+                )));
+            }
+        }
+        if let Some(c) = p.compactness
+            && !(0.0..=1.0).contains(&c)
+        {
+            return Err(Error::invalid(format!(
+                "compactness must be between 0 and 1, got {c}"
+            )));
+        }
+        // Drawn values come from their own stream, so that giving them explicitly reproduces
+        // the same instance.
+        let mut rng = rng_for(p.seed, TAG_RESOLVE);
+        let drawn_style = Style::CONCRETE[below(&mut rng, Style::CONCRETE.len())];
+        let drawn_compactness = between(&mut rng, 0, 100) as f64 / 100.0;
+        let style = match p.style.unwrap_or(Style::Mixed) {
+            Style::Mixed => drawn_style,
+            s => s,
+        };
+        let default_holes = if p.family == Family::RandomHoled {
+            1
+        } else {
+            0
+        };
+        Ok(Spec {
+            family: p.family,
+            n: p.n.unwrap_or(0),
+            holes: p.holes.unwrap_or(default_holes),
+            width: p.width.unwrap_or(0),
+            height: p.height.unwrap_or(0),
+            side: p.side.unwrap_or(0),
+            k: p.k.unwrap_or(0),
+            parts: p.parts.unwrap_or(3),
+            no_cut: p.no_cut,
+            style,
+            compactness: p.compactness.unwrap_or(drawn_compactness),
+            s: p.s.unwrap_or(0),
+            seed: p.seed,
+        })
+    }
+
+    pub(super) fn value(&self, q: Param) -> String {
+        match q {
+            Param::N => self.n.to_string(),
+            Param::Holes => self.holes.to_string(),
+            Param::Width => self.width.to_string(),
+            Param::Height => self.height.to_string(),
+            Param::Side => self.side.to_string(),
+            Param::K => self.k.to_string(),
+            Param::Parts => self.parts.to_string(),
+            Param::NoCut => self.no_cut.to_string(),
+            Param::Style => self.style.to_string(),
+            Param::Compactness => self.compactness.to_string(),
+            Param::S => self.s.to_string(),
+        }
+    }
+
+    pub(super) fn params_line(&self) -> String {
+        let info = self.family.info();
+        let parts: Vec<String> = info
+            .params
+            .iter()
+            .map(|&q| format!("{}={}", q.name(), self.value(q)))
+            .collect();
+        parts.join(" ")
+    }
+
+    pub(super) fn opts(&self) -> ShapeOpts {
+        ShapeOpts {
+            style: self.style,
+            compactness: self.compactness,
+            no_cut: self.no_cut,
+        }
+    }
+
+    /// The number of pixels the request asks for.
+    pub(super) fn pixels(&self) -> usize {
+        match self.family {
+            Family::Rect => self.width.saturating_mul(self.height),
+            Family::Donut => {
+                let inner = self.side.saturating_sub(2 * self.k);
+                self.side
+                    .saturating_mul(self.side)
+                    .saturating_sub(inner * inner)
+            }
+            Family::Band => self.k.saturating_mul(5).saturating_add(4),
+            Family::Thin43 => self.s.saturating_mul(77).saturating_add(222),
+            _ => self.n,
+        }
+    }
+
+    pub(super) fn check_feasible(&self) -> Result<()> {
+        let name = self.family.name();
+        match self.family {
+            Family::Rect if self.width == 0 || self.height == 0 => {
+                return Err(Error::invalid("rect needs width ≥ 1 and height ≥ 1"));
+            }
+            Family::Donut if self.k == 0 || self.side < 2 * self.k + 1 => {
+                return Err(Error::invalid(format!(
+                    "donut needs k ≥ 1 and side ≥ 2k + 1 (got side {} and k {})",
+                    self.side, self.k
+                )));
+            }
+            Family::Band if self.k == 0 => {
+                return Err(Error::invalid("band needs k ≥ 1 (k = 1 is the 3x3 square)"));
+            }
+            _ => {}
+        }
+        let n = self.pixels();
+        if n == 0 {
+            return Err(Error::invalid(format!("{name} needs n ≥ 1 pixels")));
+        }
+        if n > MAX_PIXELS {
+            return Err(Error::invalid(format!(
+                "{name}: {n} pixels is more than the generator's limit of {MAX_PIXELS}"
+            )));
+        }
+        if self.holes > n {
+            // Every hole owns at least three pixels (those west, south-west and south of its
+            // lowest, leftmost cell); this also bounds the work of the checks below.
+            return Err(Error::invalid(format!(
+                "{name}: {} holes do not fit in {n} pixels",
+                self.holes
+            )));
+        }
+        let holes = self.holes;
+        match self.family {
+            Family::RandomSimple if self.no_cut && rows_plan(n, 0, true).is_none() => {
+                Err(Error::invalid(format!(
+                    "random-simple with no_cut cannot have {n} pixels: every hole-free region of 3, 5 or 7 pixels \
+                 has a cut vertex (possible sizes: 1, 2, 4, 6 and every n ≥ 8)"
+                )))
+            }
+            Family::RandomHoled if n < min_holed_pixels(holes, self.no_cut) => {
+                Err(Error::invalid(format!(
+                    "random-holed: {holes} holes do not fit in {n} pixels: this generator needs n ≥ {} (one-pixel holes \
+                 on a grid{})",
+                    min_holed_pixels(holes, self.no_cut),
+                    if self.no_cut {
+                        ", with walls 2 pixels thick so that no pixel is a local cut vertex"
+                    } else {
+                        ""
+                    }
+                )))
+            }
+            Family::RandomHoled if rows_plan(n, holes, self.no_cut).is_none() => {
+                Err(Error::invalid(format!(
+                    "random-holed with no_cut: cannot build exactly {holes} holes in exactly {n} pixels without local \
+                 cut vertices (the smallest such region this generator builds has {} pixels, and a few sizes just \
+                 above it are impossible; try a slightly larger n)",
+                    min_holed_pixels(holes, self.no_cut)
+                )))
+            }
+            Family::Pinholes if n < min_holed_pixels(holes, false) => Err(Error::invalid(format!(
+                "pinholes: {holes} one-pixel holes do not fit in {n} pixels: this generator needs n ≥ {} (one-pixel \
+                 holes on a grid)",
+                min_holed_pixels(holes, false)
+            ))),
+            Family::ThinArms if n < min_thin_pixels(self.holes) => Err(Error::invalid(format!(
+                "thin-arms: {} holes need n ≥ {} pixels (each hole is a cycle of width-1 corridors around at least \
+                 one empty cell), got {n}",
+                self.holes,
+                min_thin_pixels(self.holes)
+            ))),
+            Family::Thin if n < min_thin_pixels(self.holes) => Err(Error::invalid(format!(
+                "thin: {} holes need n ≥ {} pixels (each hole is a cycle of width-1 corridors around at least one \
+                 empty cell), got {n}",
+                self.holes,
+                min_thin_pixels(self.holes)
+            ))),
+            Family::LawnScattered if self.parts == 0 || self.parts > n => {
+                Err(Error::invalid(format!(
+                    "lawn-scattered needs 1 ≤ parts ≤ n (got parts {} and n {n})",
+                    self.parts
+                )))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    pub(super) fn promise(&self) -> Promise {
+        let (components, holes) = match self.family {
+            Family::Donut => (1, 1),
+            Family::Thin43 => (1, thin43_holes(self.s)),
+            Family::RandomHoled | Family::Thin | Family::ThinArms | Family::Pinholes => {
+                (1, self.holes)
+            }
+            Family::LawnScattered => (self.parts, 0),
+            _ => (1, 0),
+        };
+        let cut = match self.family {
+            Family::RandomSimple if self.no_cut => CutRule::NoCut,
+            Family::Band => CutRule::NoCut,
+            Family::RandomHoled if self.no_cut => CutRule::NoLocalCut,
+            _ => CutRule::Any,
+        };
+        Promise {
+            n: self.pixels(),
+            components,
+            holes,
+            cut,
+            thin: matches!(
+                self.family,
+                Family::Thin | Family::Thin43 | Family::ThinArms
+            ),
+            separated: self.family == Family::LawnScattered,
+            any_holes: self.family == Family::Boundary,
+            boundary_only: self.family == Family::Boundary,
+        }
+    }
+
+    /// Builds the region and checks its promise; returns it with its number of holes.
+    pub(super) fn build(&self) -> Result<(Region, usize, Provenance)> {
+        let o = self.opts();
+        let (n, h) = (self.n, self.holes);
+        let (pixels, provenance) = match self.family {
+            Family::Rect => (rect_pixels(self.width, self.height), Provenance::Direct),
+            Family::Donut => (donut_pixels(self.side, self.k), Provenance::Direct),
+            Family::Band => (band_pixels(self.k), Provenance::Direct),
+            Family::Thin43 => (thin43_pixels(self.s), Provenance::Direct),
+            Family::LawnScattered => {
+                let mut rng = rng_for(self.seed, 0);
+                (lawn_pixels(n, self.parts, &o, &mut rng), Provenance::Direct)
+            }
+            Family::RandomSimple => {
+                return self.with_attempts(
+                    |rng, _| simple_canvas(n, &o, rng).map(|(c, _)| c.pixels()),
+                    |rng| rows_pixels(n, 0, o.no_cut, rng),
+                );
+            }
+            Family::RandomHoled => {
+                return self.with_attempts(
+                    |rng, _| holed_canvas(n, h, &o, rng).map(|c| c.pixels()),
+                    |rng| rows_pixels(n, h, o.no_cut, rng),
+                );
+            }
+            Family::Thin => {
+                return self.with_attempts(
+                    |rng, attempt| thin_pixels(n, h, o.compactness, Some(attempt), rng),
+                    |rng| thin_pixels(n, h, o.compactness, None, rng),
+                );
+            }
+            Family::Boundary => {
+                return self.with_attempts(
+                    |rng, _| boundary_canvas(n, &o, rng).map(|c| c.pixels()),
+                    |_| Some(two_rows_pixels(n)),
+                );
+            }
+            Family::ThinArms => {
+                return self.with_attempts(
+                    |rng, _| thin_arms_pixels(n, h, o.compactness, rng),
+                    |rng| thin_pixels(n, h, o.compactness, None, rng),
+                );
+            }
+            Family::Pinholes => {
+                return self.with_attempts(
+                    |rng, _| pinholes_canvas(n, h, &o, rng).map(|c| c.pixels()),
+                    |rng| rows_pixels(n, h, false, rng),
+                );
+            }
+        };
+        self.checked(pixels, provenance)
+    }
+
+    pub(super) fn checked(
+        &self,
+        pixels: Vec<Pixel>,
+        provenance: Provenance,
+    ) -> Result<(Region, usize, Provenance)> {
+        let region = Region::from_pixels(pixels)?;
+        let holes = verify(&region, &self.promise()).map_err(|e| {
+            Error::invalid(format!(
+                "internal error: the generated {} region breaks its promise: {e}",
+                self.family
+            ))
+        })?;
+        Ok((region, holes, provenance))
+    }
+
+    /// Runs the random construction with seed-derived streams until its result keeps the
+    /// promise, then the deterministic fallback.
+    pub(super) fn with_attempts(
+        &self,
+        mut attempt: impl FnMut(&mut Rng, u64) -> Option<Vec<Pixel>>,
+        fallback: impl FnOnce(&mut Rng) -> Option<Vec<Pixel>>,
+    ) -> Result<(Region, usize, Provenance)> {
+        let promise = self.promise();
+        for a in 0..MAX_ATTEMPTS {
+            let mut rng = rng_for(self.seed, a);
+            if let Some(pixels) = attempt(&mut rng, a) {
+                let region = Region::from_pixels(pixels)?;
+                if let Ok(holes) = verify(&region, &promise) {
+                    return Ok((region, holes, Provenance::Attempt(a)));
+                }
+            }
+        }
+        let mut rng = rng_for(self.seed, TAG_FALLBACK);
+        let pixels = fallback(&mut rng).ok_or_else(|| {
+            Error::invalid(format!(
+                "internal error: no {} construction for these parameters",
+                self.family
+            ))
+        })?;
+        self.checked(pixels, Provenance::Fallback)
+    }
+}
