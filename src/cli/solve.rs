@@ -207,7 +207,9 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let n = inst.region.len() as u64;
     if a.json {
         let mut json = serde_json::json!({
-            "algorithm": evaluate::variant_name(subject.name(), subject.objectives(), &options),
+            "algorithm": subject.name(),
+            // The name bench rows give this run (options that differ from the defaults).
+            "variant": evaluate::variant_name(subject.name(), subject.objectives(), &options),
             "objective": out.objective,
             "value": out.value,
             "length": out.length,
