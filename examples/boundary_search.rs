@@ -7,7 +7,7 @@
 //!     [--climbs 40] [--steps 60] [--time-limit 20]
 //! ```
 //!
-//! Families (all built here, independent of `src/generate.rs`):
+//! Families (all built here, independent of `src/generate/`):
 //! - `boundary`: random pixel sets in a small box less their pixels with four neighbours
 //!   (every pixel left is a boundary pixel; components may be several);
 //! - `stairs`: staircases k + (k − 1) + … + 1 and random boundary-only edits of them;

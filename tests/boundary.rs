@@ -275,7 +275,7 @@ const SHORT_ARMS: &[&str] = &[
     "........#.\n....#...#.\n#...######\n#...#...#.\n#...#...#.\n#...#...#.\n#########.\n",
 ];
 
-/// splitmix64, for small random shapes independent of `src/generate.rs`.
+/// splitmix64, for small random shapes independent of `src/generate/`.
 struct Rng(u64);
 
 impl Rng {
