@@ -286,7 +286,13 @@ algorithms = ["strips-matching", "tsp65", "lawn-mst"]
     ];
     assert_eq!(names.into_iter().collect::<Vec<_>>(), expect);
     for r in &rows {
-        assert!(r.error.is_empty(), "{} {}: {}", r.instance, r.algorithm, r.error);
+        assert!(
+            r.error.is_empty(),
+            "{} {}: {}",
+            r.instance,
+            r.algorithm,
+            r.error
+        );
         assert_eq!(r.valid, Some(true), "{} {}", r.instance, r.algorithm);
         match r.algorithm.as_str() {
             "strips-matching[merge=naive]" => {
