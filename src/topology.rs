@@ -315,7 +315,7 @@ pub fn cut_vertices(region: &Region) -> Vec<bool> {
     // A pixel is an articulation point exactly when it lies in two or more blocks.
     let mut blocks_of = vec![0u8; region.len()];
     for_each_block(region, |block| {
-        for &v in block {
+        for &v in block.iter() {
             blocks_of[v] = blocks_of[v].saturating_add(1);
         }
     });
@@ -484,25 +484,26 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
 /// order the search closes them (the order Theorem 5's tours of the blocks are built in).
 pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
     let mut blocks = Vec::new();
-    for_each_block(region, |block| blocks.push(block.to_vec()));
+    for_each_block(region, |block| blocks.push(std::mem::take(block)));
     blocks
 }
 
 /// The crate's one Tarjan search: calls `f` with the pixels of every block (biconnected
 /// component, a bridge being two pixels) in the order the search closes them, each pixel once
-/// per block, in the order the block's edges leave the edge stack.
+/// per block, in the order the block's edges leave the edge stack. `f` may take the vector.
 ///
 /// # Complexity
 /// O(N) time and space (iterative, so no stack overflow on large regions).
-fn for_each_block(region: &Region, mut f: impl FnMut(&[usize])) {
+fn for_each_block(region: &Region, mut f: impl FnMut(&mut Vec<usize>)) {
     let n = region.len();
     let mut disc = vec![u32::MAX; n];
     let mut low = vec![0u32; n];
     let mut time = 0u32;
-    let mut edges: Vec<(usize, usize)> = Vec::new();
+    // Pixel indices fit in u32 (at most MAX_PIXELS); edges as (tail, head).
+    let mut edges: Vec<(u32, u32)> = Vec::new();
     let mut block = Vec::new();
-    let mut closed = 0usize;
-    let mut stamp = vec![usize::MAX; n];
+    let mut closed = 0u32;
+    let mut stamp = vec![u32::MAX; n];
     // Stack frames: (vertex, parent, next direction to try).
     let mut frames: Vec<(usize, usize, usize)> = Vec::new();
     for root in 0..n {
@@ -524,10 +525,10 @@ fn for_each_block(region: &Region, mut f: impl FnMut(&[usize])) {
                     disc[w] = time;
                     low[w] = time;
                     time += 1;
-                    edges.push((v, w));
+                    edges.push((v as u32, w as u32));
                     frames.push((w, v, 0));
                 } else if w != parent && disc[w] < disc[v] {
-                    edges.push((v, w));
+                    edges.push((v as u32, w as u32));
                     low[v] = low[v].min(disc[w]);
                 }
             } else {
@@ -538,17 +539,17 @@ fn for_each_block(region: &Region, mut f: impl FnMut(&[usize])) {
                         block.clear();
                         while let Some((a, b)) = edges.pop() {
                             for x in [a, b] {
-                                if stamp[x] != closed {
-                                    stamp[x] = closed;
-                                    block.push(x);
+                                if stamp[x as usize] != closed {
+                                    stamp[x as usize] = closed;
+                                    block.push(x as usize);
                                 }
                             }
-                            if (a, b) == (parent, v) {
+                            if (a as usize, b as usize) == (parent, v) {
                                 break;
                             }
                         }
                         closed += 1;
-                        f(&block);
+                        f(&mut block);
                     }
                 }
             }

@@ -125,14 +125,13 @@ impl LinkStats {
 /// ≤ 6/5 · OPT, because a block's tour is at most 6/5 of its N_b ≤ OPT_b nodes, a bridge
 /// costs 2 = OPT_b, and OPT is the sum of the blocks' optima (Corollary 3).
 pub fn tsp65(region: &Region) -> Result<Solution> {
-    precondition(region)?;
+    let mut blocks = checked_blocks(region)?;
     let n = region.len();
     let mut solution = Solution::default();
     let mut stats = LinkStats::default();
     let mut bottlenecks = 0i64;
     let mut pieces = 0i64;
     let mut bridges = 0i64;
-    let mut blocks = crate::topology::biconnected_blocks(region);
     let mut graph;
     if blocks.len() == 1 && blocks[0].len() == n && n >= 3 {
         let b;
@@ -180,6 +179,23 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
         cert.insert("bound_6n_4_5".into(), (6 * n as i64 - 4).div_euclid(5));
     }
     Ok(solution)
+}
+
+/// [`precondition`] (same errors), with the region's blocks, which also count its components:
+/// every component has one pixel more than the sum of its blocks' sizes minus one.
+fn checked_blocks(region: &Region) -> Result<Vec<Vec<usize>>> {
+    if region.is_empty() {
+        return precondition(region).map(|()| Vec::new());
+    }
+    let blocks = topology::biconnected_blocks(region);
+    let spanned: usize = blocks.iter().map(|b| b.len() - 1).sum();
+    if region.len() - spanned != 1 {
+        precondition(region)?;
+    }
+    if topology::holes(region).count > 0 {
+        precondition(region)?;
+    }
+    Ok(blocks)
 }
 
 /// The construction of Theorem 5 on a 2-connected simple region with at least 3 pixels:
@@ -240,19 +256,34 @@ fn block_tour(region: &Region, stats: &mut LinkStats) -> Result<(GridMultigraph,
 
     // Try both parities everywhere, keep the better one per piece, then build for real.
     let internal: Vec<bool> = on_c.iter().map(|&b| !b).collect();
-    let mut waste = [vec![0i64; piece_count], vec![0i64; piece_count]];
-    for (p, w) in waste.iter_mut().enumerate() {
+    let mut tried = [0, 1].map(|p| {
         let mut g = base.clone();
-        let parity = vec![p as i32; piece_count];
+        let parity = vec![p; piece_count];
         let mut s = LinkStats::default();
-        *w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
-    }
+        let w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+        (g, s, w)
+    });
     let parity: Vec<i32> = (0..piece_count)
-        .map(|k| i32::from(waste[1][k] < waste[0][k]))
+        .map(|k| i32::from(tried[1].2[k] < tried[0].2[k]))
         .collect();
-    let mut g = base;
-    let mut s = LinkStats::default();
-    link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+    // The construction is deterministic: when every piece keeps the same parity, the trial
+    // with that parity is the result.
+    let (g, s) = match parity.first() {
+        Some(&p) if parity.iter().all(|&q| q == p) => {
+            let (g, s, _) = std::mem::replace(
+                &mut tried[p as usize],
+                (GridMultigraph::new(0), LinkStats::default(), Vec::new()),
+            );
+            (g, s)
+        }
+        _ => {
+            drop(tried);
+            let mut g = base;
+            let mut s = LinkStats::default();
+            link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+            (g, s)
+        }
+    };
     stats.add(&s);
     let with_internal = {
         let mut seen = vec![false; piece_count];
@@ -483,7 +514,7 @@ impl Linker<'_> {
         let mut stack = Vec::new();
         let mut comp = Vec::new();
         // mark[w] == s + 1: w is in the component of s.
-        let mut mark = vec![0usize; n];
+        let mut mark = vec![0u32; n];
         for s in 0..n {
             if !self.unvisited[s] {
                 continue;
@@ -492,7 +523,8 @@ impl Linker<'_> {
             let yb = self.bottom_row(s);
             comp.clear();
             comp.push(s);
-            mark[s] = s + 1;
+            let stamp = s as u32 + 1;
+            mark[s] = stamp;
             stack.push(s);
             while let Some(v) = stack.pop() {
                 let y = self.region.pixel(v).y;
@@ -503,9 +535,9 @@ impl Linker<'_> {
                     }
                     if let Some(w) = self.region.neighbor(v, d)
                         && self.unvisited[w]
-                        && mark[w] != s + 1
+                        && mark[w] != stamp
                     {
-                        mark[w] = s + 1;
+                        mark[w] = stamp;
                         comp.push(w);
                         stack.push(w);
                     }
