@@ -312,53 +312,14 @@ pub fn is_boundary(region: &Region, i: usize) -> bool {
 /// # Complexity
 /// O(N) time and space (no recursion, so no stack overflow on large regions).
 pub fn cut_vertices(region: &Region) -> Vec<bool> {
-    let n = region.len();
-    let mut disc = vec![u32::MAX; n];
-    let mut low = vec![0u32; n];
-    let mut cut = vec![false; n];
-    let mut time = 0u32;
-    // Stack frames: (vertex, parent, next direction to try).
-    let mut stack: Vec<(usize, usize, usize)> = Vec::new();
-    for root in 0..n {
-        if disc[root] != u32::MAX {
-            continue;
+    // A pixel is an articulation point exactly when it lies in two or more blocks.
+    let mut blocks_of = vec![0u8; region.len()];
+    for_each_block(region, |block| {
+        for &v in block.iter() {
+            blocks_of[v] = blocks_of[v].saturating_add(1);
         }
-        disc[root] = time;
-        low[root] = time;
-        time += 1;
-        let mut root_children = 0;
-        stack.push((root, usize::MAX, 0));
-        while let Some(frame) = stack.last_mut() {
-            let (v, parent, d) = *frame;
-            if d < 4 {
-                frame.2 += 1;
-                let Some(w) = region.neighbor(v, Dir::from_index(d)) else {
-                    continue;
-                };
-                if disc[w] == u32::MAX {
-                    disc[w] = time;
-                    low[w] = time;
-                    time += 1;
-                    if v == root {
-                        root_children += 1;
-                    }
-                    stack.push((w, v, 0));
-                } else if w != parent {
-                    low[v] = low[v].min(disc[w]);
-                }
-            } else {
-                stack.pop();
-                if parent != usize::MAX {
-                    low[parent] = low[parent].min(low[v]);
-                    if parent != root && low[v] >= disc[parent] {
-                        cut[parent] = true;
-                    }
-                }
-            }
-        }
-        cut[root] = root_children >= 2;
-    }
-    cut
+    });
+    blocks_of.into_iter().map(|b| b >= 2).collect()
 }
 
 /// Local cut vertices (milling paper, Definition 6): pixels whose removal disconnects the
@@ -522,13 +483,28 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
 /// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels. Blocks come in the
 /// order the search closes them (the order Theorem 5's tours of the blocks are built in).
 pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
+    let mut blocks = Vec::new();
+    for_each_block(region, |block| blocks.push(std::mem::take(block)));
+    blocks
+}
+
+/// The crate's one Tarjan search: calls `f` with the pixels of every block (biconnected
+/// component, a bridge being two pixels) in the order the search closes them, each pixel once
+/// per block, in the order the block's edges leave the edge stack. `f` may take the vector.
+///
+/// # Complexity
+/// O(N) time and space (iterative, so no stack overflow on large regions).
+fn for_each_block(region: &Region, mut f: impl FnMut(&mut Vec<usize>)) {
     let n = region.len();
     let mut disc = vec![u32::MAX; n];
     let mut low = vec![0u32; n];
     let mut time = 0u32;
-    let mut edges: Vec<(usize, usize)> = Vec::new();
-    let mut blocks = Vec::new();
-    let mut stamp = vec![usize::MAX; n];
+    // Pixel indices fit in u32 (at most MAX_PIXELS); edges as (tail, head).
+    let mut edges: Vec<(u32, u32)> = Vec::new();
+    let mut block = Vec::new();
+    let mut closed = 0u32;
+    let mut stamp = vec![u32::MAX; n];
+    // Stack frames: (vertex, parent, next direction to try).
     let mut frames: Vec<(usize, usize, usize)> = Vec::new();
     for root in 0..n {
         if disc[root] != u32::MAX {
@@ -549,10 +525,10 @@ pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
                     disc[w] = time;
                     low[w] = time;
                     time += 1;
-                    edges.push((v, w));
+                    edges.push((v as u32, w as u32));
                     frames.push((w, v, 0));
                 } else if w != parent && disc[w] < disc[v] {
-                    edges.push((v, w));
+                    edges.push((v as u32, w as u32));
                     low[v] = low[v].min(disc[w]);
                 }
             } else {
@@ -560,26 +536,25 @@ pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
                 if parent != usize::MAX {
                     low[parent] = low[parent].min(low[v]);
                     if low[v] >= disc[parent] {
-                        let id = blocks.len();
-                        let mut block = Vec::new();
+                        block.clear();
                         while let Some((a, b)) = edges.pop() {
                             for x in [a, b] {
-                                if stamp[x] != id {
-                                    stamp[x] = id;
-                                    block.push(x);
+                                if stamp[x as usize] != closed {
+                                    stamp[x as usize] = closed;
+                                    block.push(x as usize);
                                 }
                             }
-                            if (a, b) == (parent, v) {
+                            if (a as usize, b as usize) == (parent, v) {
                                 break;
                             }
                         }
-                        blocks.push(block);
+                        closed += 1;
+                        f(&mut block);
                     }
                 }
             }
         }
     }
-    blocks
 }
 
 /// The region's boundary as closed lattice polygons (corners only, the first not repeated),

@@ -125,36 +125,35 @@ impl LinkStats {
 /// ≤ 6/5 · OPT, because a block's tour is at most 6/5 of its N_b ≤ OPT_b nodes, a bridge
 /// costs 2 = OPT_b, and OPT is the sum of the blocks' optima (Corollary 3).
 pub fn tsp65(region: &Region) -> Result<Solution> {
-    precondition(region)?;
+    let mut blocks = checked_blocks(region)?;
     let n = region.len();
     let mut solution = Solution::default();
     let mut stats = LinkStats::default();
     let mut bottlenecks = 0i64;
     let mut pieces = 0i64;
     let mut bridges = 0i64;
-    let blocks = crate::topology::biconnected_blocks(region);
-    let mut graph = GridMultigraph::new(n);
+    let mut graph;
     if blocks.len() == 1 && blocks[0].len() == n && n >= 3 {
-        let b = block_tour(region, &mut graph, &mut stats)?;
+        let b;
+        (graph, b) = block_tour(region, &mut stats)?;
         bottlenecks += b.0;
         pieces += b.1;
     } else {
-        for block in &blocks {
+        graph = GridMultigraph::new(n);
+        for block in &mut blocks {
             if block.len() == 2 {
                 graph.add_between(region, block[0], block[1]);
                 graph.add_between(region, block[0], block[1]);
                 bridges += 1;
                 continue;
             }
+            // Sorted region indices are sorted pixels: sub-region index i is block[i].
+            block.sort_unstable();
             let sub = Region::from_pixels(block.iter().map(|&i| region.pixel(i)))?;
-            let mut sub_graph = GridMultigraph::new(sub.len());
-            let b = block_tour(&sub, &mut sub_graph, &mut stats)?;
+            let (sub_graph, b) = block_tour(&sub, &mut stats)?;
             bottlenecks += b.0;
             pieces += b.1;
-            for i in 0..sub.len() {
-                let g = region
-                    .index_of(sub.pixel(i))
-                    .expect("block pixels are region pixels");
+            for (i, &g) in block.iter().enumerate() {
                 for d in [Dir::E, Dir::N] {
                     for _ in 0..sub_graph.count(i, d) {
                         let h = region.neighbor(g, d).expect("block edges are region edges");
@@ -182,13 +181,26 @@ pub fn tsp65(region: &Region) -> Result<Solution> {
     Ok(solution)
 }
 
+/// [`precondition`] (same errors), with the region's blocks, which also count its components:
+/// every component has one pixel more than the sum of its blocks' sizes minus one.
+fn checked_blocks(region: &Region) -> Result<Vec<Vec<usize>>> {
+    if region.is_empty() {
+        return precondition(region).map(|()| Vec::new());
+    }
+    let blocks = topology::biconnected_blocks(region);
+    let spanned: usize = blocks.iter().map(|b| b.len() - 1).sum();
+    if region.len() - spanned != 1 {
+        precondition(region)?;
+    }
+    if topology::holes(region).count > 0 {
+        precondition(region)?;
+    }
+    Ok(blocks)
+}
+
 /// The construction of Theorem 5 on a 2-connected simple region with at least 3 pixels:
-/// adds the tour's edges to `graph` (indexed like `region`). Returns (bottlenecks, pieces).
-fn block_tour(
-    region: &Region,
-    graph: &mut GridMultigraph,
-    stats: &mut LinkStats,
-) -> Result<(i64, i64)> {
+/// the tour's edges (indexed like `region`) and (bottlenecks, pieces).
+fn block_tour(region: &Region, stats: &mut LinkStats) -> Result<(GridMultigraph, (i64, i64))> {
     let contours = contour_walks(region);
     if contours.len() != 1 {
         return Err(Error::Invalid(
@@ -244,29 +256,35 @@ fn block_tour(
 
     // Try both parities everywhere, keep the better one per piece, then build for real.
     let internal: Vec<bool> = on_c.iter().map(|&b| !b).collect();
-    let mut waste = [vec![0i64; piece_count], vec![0i64; piece_count]];
-    for (p, w) in waste.iter_mut().enumerate() {
+    let mut tried = [0, 1].map(|p| {
         let mut g = base.clone();
-        let parity = vec![p as i32; piece_count];
+        let parity = vec![p; piece_count];
         let mut s = LinkStats::default();
-        *w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
-    }
+        let w = link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+        (g, s, w)
+    });
     let parity: Vec<i32> = (0..piece_count)
-        .map(|k| i32::from(waste[1][k] < waste[0][k]))
+        .map(|k| i32::from(tried[1].2[k] < tried[0].2[k]))
         .collect();
-    let mut g = base;
-    let mut s = LinkStats::default();
-    link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
-    stats.add(&s);
-    // Move the edges into the caller's graph.
-    for i in 0..n {
-        for d in [Dir::E, Dir::N] {
-            for _ in 0..g.count(i, d) {
-                let j = region.neighbor(i, d).expect("edges join region pixels");
-                graph.add(i, j, d);
-            }
+    // The construction is deterministic: when every piece keeps the same parity, the trial
+    // with that parity is the result.
+    let (g, s) = match parity.first() {
+        Some(&p) if parity.iter().all(|&q| q == p) => {
+            let (g, s, _) = std::mem::replace(
+                &mut tried[p as usize],
+                (GridMultigraph::new(0), LinkStats::default(), Vec::new()),
+            );
+            (g, s)
         }
-    }
+        _ => {
+            drop(tried);
+            let mut g = base;
+            let mut s = LinkStats::default();
+            link_internal_nodes(region, &mut g, &internal, &piece, &parity, &mut s);
+            (g, s)
+        }
+    };
+    stats.add(&s);
     let with_internal = {
         let mut seen = vec![false; piece_count];
         for i in 0..n {
@@ -276,18 +294,38 @@ fn block_tour(
         }
         seen.iter().filter(|&&b| b).count()
     };
-    Ok((bottlenecks, with_internal as i64))
+    Ok((g, (bottlenecks, with_internal as i64)))
 }
 
 /// Components of the grid graph without the `cut` edges: (label per pixel, count).
+/// Pieces are numbered in the order of their smallest pixel index.
 fn label_pieces(region: &Region, cut: &[[bool; 4]]) -> (Vec<u32>, usize) {
-    let edges = (0..region.len()).flat_map(|v| {
-        Dir::ALL
-            .into_iter()
-            .filter(move |d| !cut[v][d.index()])
-            .filter_map(move |d| region.neighbor(v, d).map(|w| (v, w)))
-    });
-    crate::topology::graph_components(region.len(), edges)
+    let n = region.len();
+    let mut label = vec![u32::MAX; n];
+    let mut count = 0u32;
+    let mut stack = Vec::new();
+    for s in 0..n {
+        if label[s] != u32::MAX {
+            continue;
+        }
+        label[s] = count;
+        stack.push(s);
+        while let Some(v) = stack.pop() {
+            for d in Dir::ALL {
+                if cut[v][d.index()] {
+                    continue;
+                }
+                if let Some(w) = region.neighbor(v, d)
+                    && label[w] == u32::MAX
+                {
+                    label[w] = count;
+                    stack.push(w);
+                }
+            }
+        }
+        count += 1;
+    }
+    (label, count as usize)
 }
 
 /// Steps 3–5 of the proof of Theorem 5: links every `internal` node into the closed walks of
@@ -332,21 +370,10 @@ impl Linker<'_> {
         self.region.index_of(Pixel::new(x, y))
     }
 
-    fn unv(&self, x: i32, y: i32) -> bool {
-        self.at(x, y).is_some_and(|i| self.unvisited[i])
-    }
-
     /// Bottom row of the doublerow of internal node `i`.
     fn bottom_row(&self, i: usize) -> i32 {
         let y = self.region.pixel(i).y;
         y - (y - self.parity[self.piece[i] as usize]).rem_euclid(2)
-    }
-
-    fn edge(&self, x0: i32, y0: i32, x1: i32, y1: i32) -> bool {
-        match (self.at(x0, y0), self.at(x1, y1)) {
-            (Some(a), Some(b)) => self.graph.has_between(self.region, a, b),
-            _ => false,
-        }
     }
 
     /// Replaces edge u–v of C' by the path u, a, b, v (a free detour through a and b).
@@ -361,17 +388,23 @@ impl Linker<'_> {
     /// Type I detour into the doubleton column whose bottom node is `a`, from the side
     /// `dx` (−1 west, +1 east); true if applied.
     fn try_type1(&mut self, a: usize, dx: i32) -> bool {
-        let p = self.region.pixel(a);
-        if !self.unvisited[a] || !self.unv(p.x, p.y + 1) || self.bottom_row(a) != p.y {
-            return false;
-        }
-        let (Some(u), Some(v)) = (self.at(p.x + dx, p.y), self.at(p.x + dx, p.y + 1)) else {
+        let side = if dx < 0 { Dir::W } else { Dir::E };
+        let Some(b) = self.region.neighbor(a, Dir::N) else {
             return false;
         };
-        if self.unvisited[u] || self.unvisited[v] || !self.edge(p.x + dx, p.y, p.x + dx, p.y + 1) {
+        if !self.unvisited[a] || !self.unvisited[b] || self.bottom_row(a) != self.region.pixel(a).y
+        {
             return false;
         }
-        let b = self.at(p.x, p.y + 1).expect("checked unvisited");
+        let Some(u) = self.region.neighbor(a, side) else {
+            return false;
+        };
+        let Some(v) = self.region.neighbor(u, Dir::N) else {
+            return false;
+        };
+        if self.unvisited[u] || self.unvisited[v] || self.graph.count(u, Dir::N) == 0 {
+            return false;
+        }
         self.detour(u, a, b, v);
         self.stats.type1 += 1;
         true
@@ -382,8 +415,8 @@ impl Linker<'_> {
         let mut any = false;
         while self.try_type1(a, dx) {
             any = true;
-            let p = self.region.pixel(a);
-            match self.at(p.x - dx, p.y) {
+            let back = if dx < 0 { Dir::E } else { Dir::W };
+            match self.region.neighbor(a, back) {
                 Some(next) => a = next,
                 None => break,
             }
@@ -398,10 +431,22 @@ impl Linker<'_> {
         }
     }
 
-    /// Whether column (x, rows yb, yb + 1) is a singleton with its node in row `r`.
-    fn singleton_in(&self, x: i32, yb: i32, r: i32) -> bool {
-        let other = if r == yb { yb + 1 } else { yb };
-        self.unv(x, r) && !self.unv(x, other) && self.at(x, other).is_some()
+    /// Whether the column of pixel `a` (in its doublerow) is a singleton with its node at `a`,
+    /// `to_other` pointing to the other row of the doublerow.
+    fn singleton_at(&self, a: usize, to_other: Dir) -> bool {
+        self.unvisited[a]
+            && self
+                .region
+                .neighbor(a, to_other)
+                .is_some_and(|o| !self.unvisited[o])
+    }
+
+    /// Whether the edge of C' from the pixel across the doublerow from `a` to its neighbour in
+    /// direction `d` is there.
+    fn other_row_edge(&self, a: usize, to_other: Dir, d: Dir) -> bool {
+        self.region
+            .neighbor(a, to_other)
+            .is_some_and(|u| self.graph.count(u, d) > 0)
     }
 
     fn free_detours(&mut self) {
@@ -420,32 +465,34 @@ impl Linker<'_> {
                 }
                 let p = self.region.pixel(a);
                 let yb = self.bottom_row(a);
-                let r = p.y;
-                let other = if r == yb { yb + 1 } else { yb };
-                if !self.singleton_in(p.x, yb, r) {
+                let to_other = if p.y == yb { Dir::N } else { Dir::S };
+                if !self.singleton_at(a, to_other) {
                     continue;
                 }
                 // Start of a maximal run: the west column does not continue it.
-                if self.singleton_in(p.x - 1, yb, r)
-                    && self.piece_matches(a, p.x - 1, r)
-                    && self.edge(p.x - 1, other, p.x, other)
+                if let Some(w) = self.region.neighbor(a, Dir::W)
+                    && self.singleton_at(w, to_other)
+                    && self.piece[w] == self.piece[a]
+                    && self.other_row_edge(a, to_other, Dir::W)
                 {
                     continue;
                 }
                 let mut x = p.x;
-                while self.singleton_in(x, yb, r)
-                    && self.singleton_in(x + 1, yb, r)
-                    && self.piece_matches(a, x + 1, r)
-                    && self.edge(x, other, x + 1, other)
+                let mut cur = Some(a);
+                while let Some(a0) = cur
+                    && self.singleton_at(a0, to_other)
+                    && let Some(a1) = self.region.neighbor(a0, Dir::E)
+                    && self.singleton_at(a1, to_other)
+                    && self.piece[a1] == self.piece[a]
+                    && self.other_row_edge(a0, to_other, Dir::E)
                 {
-                    let a0 = self.at(x, r).expect("singleton");
-                    let a1 = self.at(x + 1, r).expect("singleton");
-                    let u = self.at(x, other).expect("edge");
-                    let v = self.at(x + 1, other).expect("edge");
+                    let u = self.region.neighbor(a0, to_other).expect("edge");
+                    let v = self.region.neighbor(a1, to_other).expect("edge");
                     self.detour(u, a0, a1, v);
                     self.stats.type2 += 1;
                     opened.extend([(x - 1, yb), (x + 2, yb)]);
                     x += 2;
+                    cur = self.region.neighbor(a1, Dir::E);
                 }
             }
             if opened.is_empty() {
@@ -461,36 +508,36 @@ impl Linker<'_> {
         }
     }
 
-    /// Whether pixel (x, y) belongs to the piece of `a` (so it uses the same doublerows).
-    fn piece_matches(&self, a: usize, x: i32, y: i32) -> bool {
-        self.at(x, y)
-            .is_some_and(|b| self.piece[b] == self.piece[a])
-    }
-
     /// Step 5: the components left in each doublerow, by the cases of Fig. 15.
     fn remaining_components(&mut self, waste: &mut [i64]) {
         let n = self.region.len();
         let mut stack = Vec::new();
+        let mut comp = Vec::new();
+        // mark[w] == s + 1: w is in the component of s.
+        let mut mark = vec![0u32; n];
         for s in 0..n {
             if !self.unvisited[s] {
                 continue;
             }
             // The component of s within its doublerow.
             let yb = self.bottom_row(s);
-            let mut comp = vec![s];
-            let mut mark = std::collections::HashSet::from([s]);
+            comp.clear();
+            comp.push(s);
+            let stamp = s as u32 + 1;
+            mark[s] = stamp;
             stack.push(s);
             while let Some(v) = stack.pop() {
-                let p = self.region.pixel(v);
+                let y = self.region.pixel(v).y;
                 for d in Dir::ALL {
-                    let q = p.step(d);
-                    if q.y != yb && q.y != yb + 1 {
+                    let qy = y + d.delta().1;
+                    if qy != yb && qy != yb + 1 {
                         continue;
                     }
-                    if let Some(w) = self.region.index_of(q)
+                    if let Some(w) = self.region.neighbor(v, d)
                         && self.unvisited[w]
-                        && mark.insert(w)
+                        && mark[w] != stamp
                     {
+                        mark[w] = stamp;
                         comp.push(w);
                         stack.push(w);
                     }
