@@ -42,7 +42,7 @@ pub const CHRISTOFIDES_LIMIT: usize = 20_000;
 /// The grass must be non-empty.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the lawn has no grass".into()));
+        return Err(Error::Precondition("the lawn has no grass".into()));
     }
     Ok(())
 }
@@ -809,7 +809,7 @@ pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
 pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     if opts.cutter == Cutter::Disk {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "lawn-box implements the bounding-box method for square cutters only (not --cutter disk)".into(),
         ));
     }

@@ -194,7 +194,7 @@ pub fn match_ports_with(
     };
     if complete {
         let mate = min_weight_perfect_matching(ports.len(), &edges)
-            .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
+            .ok_or_else(|| Error::solver("the endpoints have no perfect matching"))?;
         let mut m = matching_of(mate, &edges);
         m.complete = true;
         m.optimal = true;

@@ -33,16 +33,16 @@ use petgraph::unionfind::UnionFind;
 /// Theorem 7 needs a connected grid graph without local cut vertices.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the region is empty".into()));
+        return Err(Error::Precondition("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "holes1325 needs a connected region (one grid component)".into(),
         ));
     }
     let local = topology::local_cut_vertices(region);
     if let Some(i) = local.iter().position(|&c| c) {
-        return Err(Error::Invalid(format!(
+        return Err(Error::Precondition(format!(
             "holes1325 needs a region without local cut vertices (Theorem 7), but {} is one ({} in all)",
             region.pixel(i),
             local.iter().filter(|&&c| c).count()

@@ -101,10 +101,10 @@ use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 /// Theorem 4 needs a connected, non-empty region; holes are allowed.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the region is empty".into()));
+        return Err(Error::Precondition("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "milling25 needs a connected region (one grid component)".into(),
         ));
     }

@@ -167,7 +167,7 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
     let (ports, partner, floor) = boundary_ports(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     if !matching.optimal {
-        return Err(Error::invalid(format!(
+        return Err(Error::solver(format!(
             "boundary-cc is exact only with a matching proven minimum: {} ports exceed {}, the \
              ray graph did not apply, and the LP bound {} stays below its weight {}",
             ports.len(),
@@ -210,11 +210,11 @@ pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
 /// of each (the matching never pairs ports of different components, which no path joins).
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
+        return Err(Error::precondition("the region is empty"));
     }
     match (0..region.len()).find(|&i| !is_boundary(region, i)) {
         None => Ok(()),
-        Some(i) => Err(Error::invalid(format!(
+        Some(i) => Err(Error::precondition(format!(
             "boundary-cc covers only boundary pixels, and pixel {} has all four neighbours",
             region.pixel(i)
         ))),
@@ -229,7 +229,7 @@ pub fn run(
     opts: &crate::algorithms::Options,
 ) -> Result<crate::algorithms::Solution> {
     if opts.coverage4 {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "--coverage4 rewrites tours (Theorem 5.6 of the turn-cost paper); boundary-cc \
              outputs only a cycle cover, so there is no tour to rewrite",
         ));

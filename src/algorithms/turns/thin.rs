@@ -45,16 +45,16 @@ use std::collections::BTreeMap;
 /// a thin region without plus centres).
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
+        return Err(Error::precondition("the region is empty"));
     }
     if !is_thin(region) {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
     match components(region).count {
         1 => Ok(()),
-        c => Err(Error::invalid(format!(
+        c => Err(Error::precondition(format!(
             "the region has {c} connected components, and thin-cc and thin-merge also output \
              a tour merged from their cycle cover, which cannot leave a component"
         ))),

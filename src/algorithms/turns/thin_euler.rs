@@ -32,14 +32,14 @@ use crate::tour::CycleCover;
 pub fn precondition(region: &Region) -> Result<()> {
     connected(region)?;
     if !is_thin(region) {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
     if region.len() > 1
         && let Some(i) = (0..region.len()).find(|&i| region.degree(i) % 2 == 1)
     {
-        return Err(Error::invalid(format!(
+        return Err(Error::precondition(format!(
             "the region is not Eulerian: pixel {} has {} neighbours",
             region.pixel(i),
             region.degree(i)
