@@ -248,7 +248,46 @@ pub fn run(
     Ok(sol)
 }
 
-/// The registry entry.
+/// The registry entry of `boundary-cc`: the minimum-turn cycle cover of the boundary links by a
+/// minimum-weight perfect matching of their ports ([`run`]).
+///
+/// # Guarantee
+///
+/// When every pixel is a boundary pixel the cover of the boundary covers the region, and the
+/// matching's minimum is the optimal cycle cover's turns (Theorem 4.1 and Lemma 4.1 of *Optimal
+/// covering tours with turn costs*, in our grid reading: module docs, "Why the matching's
+/// minimum is the optimum"). Registered as `cc-turns <= OPT` (Theorem 4.1, our reading) on every
+/// region of boundary pixels only, several components allowed. When the matching cannot be
+/// proven minimum the run fails with [`Error::Solver`](crate::Error::Solver) rather than
+/// report an unproven cover.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("boundary-cc").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
+/// // Every pixel of a 4 x 2 rectangle is a boundary pixel; one rectangle walk, 4 turns, optimal.
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().within_guarantee, Some(true));
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "boundary-cc",
     summary: "minimum-turn cycle cover of the boundary links by a minimum-weight perfect matching (regions of boundary pixels only)",
