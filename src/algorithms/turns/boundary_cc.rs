@@ -258,7 +258,7 @@ pub fn run(
 /// covering tours with turn costs*, in our grid reading: module docs, "Why the matching's
 /// minimum is the optimum"). Registered as `cc-turns <= OPT` (Theorem 4.1, our reading) on every
 /// region of boundary pixels only, several components allowed. When the matching cannot be
-/// proven minimum the run fails with [`Error::Solver`](crate::Error::Solver) rather than
+/// proven minimum the run fails with [`Error::Solver`] rather than
 /// report an unproven cover.
 ///
 /// # Example
