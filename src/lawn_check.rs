@@ -34,6 +34,35 @@ pub enum Cutter {
     Disk,
 }
 
+impl Cutter {
+    pub const NAMES: [&'static str; 3] = ["square", "square-free", "disk"];
+}
+
+impl std::fmt::Display for Cutter {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Cutter::Square => "square",
+            Cutter::SquareFree => "square-free",
+            Cutter::Disk => "disk",
+        })
+    }
+}
+
+impl std::str::FromStr for Cutter {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Cutter, String> {
+        match s {
+            "square" => Ok(Cutter::Square),
+            "square-free" => Ok(Cutter::SquareFree),
+            "disk" => Ok(Cutter::Disk),
+            _ => Err(format!(
+                "unknown cutter {s:?}: expected square, square-free or disk"
+            )),
+        }
+    }
+}
+
 const SQRT3: f64 = 1.732_050_807_568_877_2;
 
 /// What the lawn check recounted.

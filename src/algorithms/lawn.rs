@@ -42,7 +42,7 @@ pub const CHRISTOFIDES_LIMIT: usize = 20_000;
 /// The grass must be non-empty.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the lawn has no grass".into()));
+        return Err(Error::Precondition("the lawn has no grass".into()));
     }
     Ok(())
 }
@@ -809,7 +809,7 @@ pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
 pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     if opts.cutter == Cutter::Disk {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "lawn-box implements the bounding-box method for square cutters only (not --cutter disk)".into(),
         ));
     }
@@ -850,7 +850,41 @@ const fn rectilinear(
     }
 }
 
-/// Registry entries.
+/// The registry entry of `lawn-mst`: a doubled minimum spanning tree of the cell centres,
+/// shortcut ([`lawn_mst`]).
+///
+/// # Guarantee
+///
+/// Theorem 2 of *Lawn mowing and milling*: a TSP tour of the lattice cells that meet the grass,
+/// with factor αTSP, has length ≤ αTSP (3ℓ* + 6), ℓ* the optimal lawn-mowing length, for the
+/// unit square under rectilinear motion (the default cutter); free motion and the disk multiply
+/// it by β ≈ 1.08 and γ ≈ 1.15 (Theorem 3), irrational factors that are not registered. Here αTSP = 2, registered as `lawn-length <= 6 OPT + 12` (Theorem 2,
+/// our reading), square cutter, rectilinear motion.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("lawn-mst").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::LawnLength],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::LawnLength).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A 4 x 2 lawn: the 8 pixel centres in a ring.
+/// assert_eq!(tour.length, 8);
+/// ```
 pub const LAWN_MST: Algorithm = Algorithm {
     name: "lawn-mst",
     summary: "lawn mowing: doubled MST of the cell centres, shortcut (Theorems 2-3, alpha = 2)",
@@ -872,6 +906,41 @@ pub const LAWN_MST: Algorithm = Algorithm {
     run: lawn_mst,
 };
 
+/// The registry entry of `lawn-christofides`: Christofides on the cell centres
+/// ([`lawn_christofides`]).
+///
+/// # Guarantee
+///
+/// Theorem 2 of *Lawn mowing and milling*: a TSP tour of the lattice cells that meet the grass,
+/// with factor αTSP, has length ≤ αTSP (3ℓ* + 6), ℓ* the optimal lawn-mowing length, for the
+/// unit square under rectilinear motion (the default cutter); free motion and the disk multiply
+/// it by β ≈ 1.08 and γ ≈ 1.15 (Theorem 3), irrational factors that are not registered. Here αTSP = 3/2, registered as `lawn-length <= (9 OPT + 18)/2`
+/// (Theorem 2 with Christofides), square cutter, rectilinear motion.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("lawn-christofides").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::LawnLength],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::LawnLength).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A 4 x 2 lawn: the 8 pixel centres in a ring.
+/// assert_eq!(tour.length, 8);
+/// ```
 pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     name: "lawn-christofides",
     summary: "lawn mowing: Christofides on the cell centres (Theorems 2-3, alpha = 3/2)",
@@ -892,6 +961,42 @@ pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     run: lawn_christofides,
 };
 
+/// The registry entry of `lawn-2opt`: 2-opt and Or-opt started from the better of the MST and
+/// Christofides tours ([`lawn_two_opt`]).
+///
+/// # Guarantee
+///
+/// Theorem 2 of *Lawn mowing and milling*: a TSP tour of the lattice cells that meet the grass,
+/// with factor αTSP, has length ≤ αTSP (3ℓ* + 6), ℓ* the optimal lawn-mowing length, for the
+/// unit square under rectilinear motion (the default cutter); free motion and the disk multiply
+/// it by β ≈ 1.08 and γ ≈ 1.15 (Theorem 3), irrational factors that are not registered. The local search only shortens its start, which is at most the
+/// doubled-MST tour (αTSP = 2): registered as `lawn-length <= 6 OPT + 12` (Theorem 2, our
+/// reading), square cutter, rectilinear motion.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("lawn-2opt").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::LawnLength],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::LawnLength).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A 4 x 2 lawn: the 8 pixel centres in a ring.
+/// assert_eq!(tour.length, 8);
+/// ```
 pub const LAWN_TWO_OPT: Algorithm = Algorithm {
     name: "lawn-2opt",
     summary: "lawn mowing: 2-opt/Or-opt from the better of the MST and Christofides tours",
@@ -913,6 +1018,44 @@ pub const LAWN_TWO_OPT: Algorithm = Algorithm {
     run: lawn_two_opt,
 };
 
+/// The registry entry of `lawn-box`: the shorter of the bounding-box rings of Fig. 9 and the
+/// Christofides tour ([`lawn_box`]).
+///
+/// # Guarantee
+///
+/// The bounding-box method removes the additive term of Theorem 2: with Christofides
+/// (αTSP = 3/2) and the paper's θ read as 9/20 ([`lawn_box`] derives it), the tour has length
+/// ≤ 3αTSP + (3/10)·αTSP = 99/20 times the optimum (Theorem 3 of *Lawn mowing and milling*).
+/// Registered as `lawn-length <= 99/20 OPT`, square cutter, rectilinear motion; `--cutter disk`
+/// is refused (a precondition of this method).
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "#####\n",
+///     "#####\n",
+///     "##.##\n",
+///     "#####\n",
+///     "#####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("lawn-box").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::LawnLength],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::LawnLength).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A 5 x 5 lawn with a one-pixel hole: a ring through its 24 pixels.
+/// assert_eq!(tour.length, 24);
+/// ```
 pub const LAWN_BOX: Algorithm = Algorithm {
     name: "lawn-box",
     summary: "lawn mowing: shorter of the bounding-box rings (Fig. 9) and Christofides",

@@ -379,35 +379,6 @@ impl std::str::FromStr for Merge {
     }
 }
 
-impl Cutter {
-    pub const NAMES: [&'static str; 3] = ["square", "square-free", "disk"];
-}
-
-impl fmt::Display for Cutter {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Cutter::Square => "square",
-            Cutter::SquareFree => "square-free",
-            Cutter::Disk => "disk",
-        })
-    }
-}
-
-impl std::str::FromStr for Cutter {
-    type Err = String;
-
-    fn from_str(s: &str) -> std::result::Result<Cutter, String> {
-        match s {
-            "square" => Ok(Cutter::Square),
-            "square-free" => Ok(Cutter::SquareFree),
-            "disk" => Ok(Cutter::Disk),
-            _ => Err(format!(
-                "unknown cutter {s:?}: expected square, square-free or disk"
-            )),
-        }
-    }
-}
-
 /// Options every algorithm receives; each uses the ones that concern it.
 #[derive(Clone, Debug, Default)]
 pub struct Options {

@@ -7,11 +7,11 @@ use crate::region::Region;
 /// (a tour cannot leave a component).
 pub fn connected(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
+        return Err(Error::precondition("the region is empty"));
     }
     match crate::topology::components(region).count {
         1 => Ok(()),
-        c => Err(Error::invalid(format!(
+        c => Err(Error::precondition(format!(
             "the region has {c} connected components; a tour needs one"
         ))),
     }

@@ -31,7 +31,7 @@ pub(super) fn recount(
     for i in 0..p {
         let j = mate[i];
         if mate[j] != i || i == j {
-            return Err(Error::invalid(
+            return Err(Error::solver(
                 "the run-graph matching is not a perfect matching",
             ));
         }

@@ -12,7 +12,7 @@ use crate::tour::CycleCover;
 /// Joins `links` (strips or boundary links, given by their end pixels) into closed walks by
 /// the perfect matching `mate` of their ports (port `2k` is link k's first pixel, `2k + 1` its
 /// last), each matched pair by a cheapest connecting path.
-pub fn join_links(
+pub(crate) fn join_links(
     region: &Region,
     links: &[(usize, usize)],
     ports: &[Port],

@@ -118,7 +118,7 @@ impl MatchingLp {
         let model = self.model.as_mut().expect("the model is alive");
         let col = model
             .try_add_column(f64::from(w), 0.0.., rows)
-            .map_err(|e| Error::invalid(format!("HiGHS refused a matching column: {e:?}")))?;
+            .map_err(|e| Error::solver(format!("HiGHS refused a matching column: {e:?}")))?;
         self.cols.push(col);
         let k = self.edges.len();
         self.edges.push((a, b, w));
@@ -151,7 +151,7 @@ impl MatchingLp {
         let model = self.model.as_mut().expect("the model is alive");
         let row = model
             .try_add_row(1.0.., factors)
-            .map_err(|e| Error::invalid(format!("HiGHS refused an odd-set cut: {e:?}")))?;
+            .map_err(|e| Error::solver(format!("HiGHS refused an odd-set cut: {e:?}")))?;
         self.cut_rows.push(row);
         let c = self.cuts.len() as u32;
         for &v in &set {
@@ -202,9 +202,9 @@ impl MatchingLp {
         let model = self.model.take().expect("the model is alive");
         let solved = model
             .try_solve()
-            .map_err(|e| Error::invalid(format!("HiGHS failed on the matching LP: {e:?}")))?;
+            .map_err(|e| Error::solver(format!("HiGHS failed on the matching LP: {e:?}")))?;
         if solved.status() != HighsModelStatus::Optimal {
-            return Err(Error::invalid(format!(
+            return Err(Error::solver(format!(
                 "HiGHS ended the matching LP with status {:?}",
                 solved.status()
             )));

@@ -48,7 +48,7 @@
 mod blossom;
 mod certificate;
 mod fusion;
-pub mod join;
+pub(crate) mod join;
 mod lp;
 mod odd_sets;
 mod ray_graph;
@@ -56,8 +56,8 @@ mod run_graph;
 mod tiles;
 pub mod turn_distance;
 
-pub use blossom::min_weight_perfect_matching;
-pub use join::join_links;
+pub(crate) use blossom::min_weight_perfect_matching;
+pub(crate) use join::join_links;
 
 use certificate::*;
 use fusion::*;
@@ -80,10 +80,10 @@ use turn_distance::{Port, TurnSearch, bit, cheapest_sources};
 pub const COMPLETE_LIMIT: usize = 600;
 
 /// Larger instances start from, per endpoint, at least this many nearest endpoints (in turns).
-pub const NEAR: usize = 6;
+pub(crate) const NEAR: usize = 6;
 
 /// ... at most this many turns away; pricing adds whatever farther pair the duals ask for.
-pub const MAX_TURNS: u32 = 4;
+pub(crate) const MAX_TURNS: u32 = 4;
 
 /// A perfect matching of endpoints.
 #[derive(Clone, Debug)]
@@ -194,7 +194,7 @@ pub fn match_ports_with(
     };
     if complete {
         let mate = min_weight_perfect_matching(ports.len(), &edges)
-            .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
+            .ok_or_else(|| Error::solver("the endpoints have no perfect matching"))?;
         let mut m = matching_of(mate, &edges);
         m.complete = true;
         m.optimal = true;

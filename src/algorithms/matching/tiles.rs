@@ -72,6 +72,6 @@ pub(super) fn tiled_matching(
         Some(&tile),
     )?;
     let mate = min_weight_perfect_matching(ports.len(), &edges)
-        .ok_or_else(|| Error::invalid("the endpoints have no perfect matching"))?;
+        .ok_or_else(|| Error::solver("the endpoints have no perfect matching"))?;
     Ok((mate, edges))
 }

@@ -45,7 +45,7 @@ impl Port {
 }
 
 /// The bit of a heading in a heading mask.
-pub fn bit(d: Dir) -> u8 {
+pub(crate) fn bit(d: Dir) -> u8 {
     1 << d.index()
 }
 
@@ -53,7 +53,7 @@ const UNSEEN: u32 = u32::MAX;
 
 /// Reusable 0-1 BFS over (pixel, heading) states; resets only the states it touched, so that
 /// many small searches on a large region stay cheap.
-pub struct TurnSearch {
+pub(crate) struct TurnSearch {
     dist: Vec<u32>,
     parent: Vec<u32>,
     touched: Vec<u32>,
@@ -182,7 +182,7 @@ pub fn turn_distance(region: &Region, u: Port, v: Port) -> Option<u32> {
 
 /// A least source of [`cheapest_sources`]: `key = w(u, v) − offset[u]`, `turns = w(u, v)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Source {
+pub(crate) struct Source {
     pub key: f64,
     pub turns: u32,
     pub port: usize,
@@ -221,7 +221,7 @@ impl PartialOrd for Entry {
 ///
 /// # Complexity
 /// O(k · N log N) time, O(k · N) space.
-pub fn cheapest_sources(
+pub(crate) fn cheapest_sources(
     region: &Region,
     ports: &[Port],
     offset: &[f64],

@@ -33,16 +33,16 @@ use petgraph::unionfind::UnionFind;
 /// Theorem 7 needs a connected grid graph without local cut vertices.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the region is empty".into()));
+        return Err(Error::Precondition("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "holes1325 needs a connected region (one grid component)".into(),
         ));
     }
     let local = topology::local_cut_vertices(region);
     if let Some(i) = local.iter().position(|&c| c) {
-        return Err(Error::Invalid(format!(
+        return Err(Error::Precondition(format!(
             "holes1325 needs a region without local cut vertices (Theorem 7), but {} is one ({} in all)",
             region.pixel(i),
             local.iter().filter(|&&c| c).count()
@@ -167,7 +167,44 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
     Ok(solution)
 }
 
-/// The registry entry.
+/// The registry entry of `holes1325`: contours of all boundaries linked as in Theorem 5, then
+/// free and paid bridges ([`holes1325`]).
+///
+/// # Guarantee
+///
+/// On a connected region of N pixels without local cut vertices (Definition 6; holes allowed)
+/// the tour has length ≤ 53N/40 = 1.325 N (Theorem 7 of *Lawn mowing and milling*), hence
+/// ≤ 1.325 · OPT. Registered as `length <= 53/40 N`, against N, on every region the
+/// precondition accepts. The proof's relocation of doubled spurs is not performed (module
+/// docs); the tests check the bound itself.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "#####\n",
+///     "#####\n",
+///     "##.##\n",
+///     "#####\n",
+///     "#####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("holes1325").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::Length],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::Length).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // 24 pixels around a one-pixel hole: 24 moves <= 53·24/40.
+/// assert_eq!(tour.length, 24);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "holes1325",
     summary: "contours of all boundaries + Theorem 5 linking + free and paid bridges (Theorem 7, milling paper)",

@@ -101,10 +101,10 @@ use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 /// Theorem 4 needs a connected, non-empty region; holes are allowed.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the region is empty".into()));
+        return Err(Error::Precondition("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "milling25 needs a connected region (one grid component)".into(),
         ));
     }
@@ -430,7 +430,43 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
     path
 }
 
-/// The registry entry.
+/// The registry entry of `milling25`: contours, strips and the shorter matchings, walked as one
+/// Euler tour ([`milling25`]).
+///
+/// # Guarantee
+///
+/// On every connected region of N pixels (holes allowed) the tour has length ≤ (17N − 17)/3,
+/// hence ≤ 17/3 · OPT: our grid reading of Theorem 4 of *Lawn mowing and milling*, proven step
+/// by step in the module docs ("Guarantee"). Registered as `length <= (17 N - 17)/3`, against N,
+/// on every region the precondition accepts. The paper's 5/2 · OPT is not registered: its lower
+/// bound L_δB ≤ OPT fails on one-pixel-thick parts; the claims table measures it (Theorem 4, our
+/// reading).
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "###\n",
+///     "#.#\n",
+///     "###\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("milling25").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::Length],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::Length).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A ring of 8 pixels: contour walks of both boundaries, 16 moves <= (17·8 - 17)/3.
+/// assert_eq!(tour.length, 16);
+/// ```
 pub const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Algorithm {
     name: "milling25",
     summary: "contours + strips + shorter matchings, Euler tour (Theorem 4, milling paper)",

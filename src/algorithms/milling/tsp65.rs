@@ -693,7 +693,43 @@ impl Linker<'_> {
     }
 }
 
-/// The registry entry.
+/// The registry entry of `tsp65`: the construction of Theorem 5, blocks spliced at cut
+/// vertices ([`tsp65`]).
+///
+/// # Guarantee
+///
+/// On a simple (hole-free) connected region without cut vertices and with N ≥ 3 pixels the tour
+/// has length ≤ (6N − 4)/5 (Theorem 5 of *Lawn mowing and milling*); since OPT ≥ N, it is a
+/// 6/5-approximation (Corollary 3). Registered as two guarantees: `length <= (6 N - 4)/5` against
+/// N, on regions without cut vertices and N ≥ 3 ([`When::Biconnected`](crate::algorithms::When)),
+/// and `length <= 6/5 OPT` on every region the precondition accepts (decided where OPT, or a
+/// lower bound strong enough, is known).
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("tsp65").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::Length],
+///     &Reference::default(),
+/// );
+/// let tour = eval.output(Objective::Length).unwrap();
+/// assert!(tour.valid);
+/// assert_ne!(tour.within_guarantee, Some(false));
+/// // A 4 x 3 rectangle has a Hamiltonian tour: 12 moves <= (6·12 - 4)/5.
+/// assert_eq!(tour.length, 12);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "tsp65",
     summary: "contour + free detours + the six cases, blocks spliced (Theorem 5, milling paper); \

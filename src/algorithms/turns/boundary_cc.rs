@@ -167,7 +167,7 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
     let (ports, partner, floor) = boundary_ports(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     if !matching.optimal {
-        return Err(Error::invalid(format!(
+        return Err(Error::solver(format!(
             "boundary-cc is exact only with a matching proven minimum: {} ports exceed {}, the \
              ray graph did not apply, and the LP bound {} stays below its weight {}",
             ports.len(),
@@ -210,11 +210,11 @@ pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
 /// of each (the matching never pairs ports of different components, which no path joins).
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
+        return Err(Error::precondition("the region is empty"));
     }
     match (0..region.len()).find(|&i| !is_boundary(region, i)) {
         None => Ok(()),
-        Some(i) => Err(Error::invalid(format!(
+        Some(i) => Err(Error::precondition(format!(
             "boundary-cc covers only boundary pixels, and pixel {} has all four neighbours",
             region.pixel(i)
         ))),
@@ -229,7 +229,7 @@ pub fn run(
     opts: &crate::algorithms::Options,
 ) -> Result<crate::algorithms::Solution> {
     if opts.coverage4 {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "--coverage4 rewrites tours (Theorem 5.6 of the turn-cost paper); boundary-cc \
              outputs only a cycle cover, so there is no tour to rewrite",
         ));
@@ -248,7 +248,46 @@ pub fn run(
     Ok(sol)
 }
 
-/// The registry entry.
+/// The registry entry of `boundary-cc`: the minimum-turn cycle cover of the boundary links by a
+/// minimum-weight perfect matching of their ports ([`run`]).
+///
+/// # Guarantee
+///
+/// When every pixel is a boundary pixel the cover of the boundary covers the region, and the
+/// matching's minimum is the optimal cycle cover's turns (Theorem 4.1 and Lemma 4.1 of *Optimal
+/// covering tours with turn costs*, in our grid reading: module docs, "Why the matching's
+/// minimum is the optimum"). Registered as `cc-turns <= OPT` (Theorem 4.1, our reading) on every
+/// region of boundary pixels only, several components allowed. When the matching cannot be
+/// proven minimum the run fails with [`Error::Solver`] rather than
+/// report an unproven cover.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("boundary-cc").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
+/// // Every pixel of a 4 x 2 rectangle is a boundary pixel; one rectangle walk, 4 turns, optimal.
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().within_guarantee, Some(true));
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "boundary-cc",
     summary: "minimum-turn cycle cover of the boundary links by a minimum-weight perfect matching (regions of boundary pixels only)",

@@ -125,7 +125,47 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     cover_and_tour(region, cover, opts, certificates)
 }
 
-/// The registry entry.
+/// The registry entry of `star-cover`: a greedy rook placement, one walk of at most 10 turns
+/// per star, merged ([`run`]).
+///
+/// # Guarantee
+///
+/// With r rooks ≤ the minimum strip cover ≤ OPT (Lemmas 4.3–4.5 of *Optimal covering tours with
+/// turn costs*): the cycle cover has ≤ 10r ≤ 10·OPT turns (Theorem 5.1), the merged tour
+/// ≤ 10r + 2(r − 1) ≤ 12·OPT (Corollary 5.2); both cover every pixel at most 4 times and have
+/// length ≤ 4N (Theorem 5.1, Corollary 5.2; proven for our merge in the module docs, since
+/// detours run only between settled pixels). Registered as `cc-turns <= 10 OPT`,
+/// `turns <= 12 OPT`, and `max-coverage <= 4` and `length <= 4 N` on both objectives, on every
+/// connected region.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "##..\n",
+///     "##..\n",
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("star-cover").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 16);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 16);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "star-cover",
     summary: "greedy rook placement, one 10-turn walk per star, merged (linear time; each pixel covered at most 4 times)",

@@ -61,7 +61,45 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     cover_and_tour(region, cover, opts, certificates)
 }
 
-/// The registry entry.
+/// The registry entry of `strips-double`: a minimum strip cover, each strip doubled into a
+/// closed walk with two U-turns, merged ([`run`]).
+///
+/// # Guarantee
+///
+/// The cycle cover has 4s ≤ 4·OPT turns (s = the minimum strip cover size ≤ OPT, Lemma 4.2 of
+/// *Optimal covering tours with turn costs*), the merged tour at most 6s − 2 ≤ 6·OPT
+/// (Theorem 5.4, with +2 per merge as Theorem 4.2 states it); both cover every pixel at most 4
+/// times and have length ≤ 4N (Theorem 5.4, proven for our construction in the module docs).
+/// Registered as `cc-turns <= 4 OPT`, `turns <= 6 OPT`, and `max-coverage <= 4` and
+/// `length <= 4 N` on both objectives, on every connected region.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("strips-double").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 12);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 12);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "strips-double",
     summary: "minimum strip cover, each strip doubled with two U-turns, merged (also at most 4x the optimal length)",

@@ -102,10 +102,48 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     cover_and_tour(region, smc.cover, opts, certificates)
 }
 
-/// The registry entry. No coverage or length bound is registered: the paper notes that this
-/// algorithm gives no immediate length bound (Fig. 5), and Table 1's 4 and 4 for integral
+/// The registry entry of `strips-matching`: a minimum strip cover joined by a minimum-weight
+/// perfect matching of the strip ends under the turn distance, merged ([`run`]).
+///
+/// # Guarantee
+///
+/// The cycle cover has 2s + w(M) ≤ 5/2·OPT turns, since s ≤ OPT (Lemma 4.2) and w(M) ≤ OPT/2
+/// (Theorem 5.5 of *Optimal covering tours with turn costs*); the merged tour at most 3/2 of
+/// that, 15/4·OPT (Corollary 4.1). The bound on w(M) needs a matching proven minimum
+/// (`matching_optimal = 1`, module docs). Registered as `cc-turns <= 5/2 OPT` (Theorem 5.5)
+/// and `turns <= 15/4 OPT` (Theorem 5.5, tour) on every connected region.
+///
+/// No coverage or length bound is registered: the paper notes that this algorithm gives no immediate length bound (Fig. 5), and Table 1's 4 and 4 for integral
 /// orthogonal milling come from the Theorem 5.6 rewrite (`--coverage4`), not from the
 /// algorithm (its tours reach coverage 8 on random regions: `examples/coverage_search.rs`).
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "####\n",
+///     "####\n",
+///     "####\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("strips-matching").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 8);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 8);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "strips-matching",
     summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",

@@ -45,16 +45,16 @@ use std::collections::BTreeMap;
 /// a thin region without plus centres).
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::invalid("the region is empty"));
+        return Err(Error::precondition("the region is empty"));
     }
     if !is_thin(region) {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
     match components(region).count {
         1 => Ok(()),
-        c => Err(Error::invalid(format!(
+        c => Err(Error::precondition(format!(
             "the region has {c} connected components, and thin-cc and thin-merge also output \
              a tour merged from their cycle cover, which cannot leave a component"
         ))),
@@ -145,7 +145,44 @@ pub fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
     )
 }
 
-/// The registry entry of `thin-cc`.
+/// The registry entry of `thin-cc`: the optimal cycle cover of a thin pocket, merged into a tour
+/// by `--merge` ([`run_cc`]).
+///
+/// # Guarantee
+///
+/// A thin region has no 2 × 2 block of pixels. The boundary cycle cover with the plus centres
+/// inserted is an optimal cycle cover (Corollary 5.3 of *Optimal covering tours with turn
+/// costs*; our construction of the insertion step in the module docs). Merging adds at most half of it (Corollary 4.1). Registered as
+/// `cc-turns <= OPT` (Corollary 5.3, our reading) and `turns <= 3/2 OPT` (Corollary 5.3, tour)
+/// on every connected thin region.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "###\n",
+///     "#.#\n",
+///     "###\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("thin-cc").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
+/// ```
 pub const ALGORITHM_CC: Algorithm = Algorithm {
     name: "thin-cc",
     summary: "optimal min-turn cycle cover of a thin pocket (boundary links matched, plus centres inserted), merged by --merge",
@@ -198,7 +235,44 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
     run: run_cc,
 };
 
-/// The registry entry of `thin-merge`.
+/// The registry entry of `thin-merge`: the optimal cycle cover of a thin pocket, merged free
+/// merges first, then at crossings ([`run_merge`]).
+///
+/// # Guarantee
+///
+/// A thin region has no 2 × 2 block of pixels. The boundary cycle cover with the plus centres
+/// inserted is an optimal cycle cover (Corollary 5.3 of *Optimal covering tours with turn
+/// costs*; our construction of the insertion step in the module docs). Merging it this way gives a tour of at most 4/3·OPT turns
+/// (Theorem 5.9, tight by Fig. 6). Registered as `cc-turns <= OPT` (Corollary 5.3, our reading)
+/// and `turns <= 4/3 OPT` (Theorem 5.9) on every connected thin region.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "###\n",
+///     "#.#\n",
+///     "###\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("thin-merge").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
+/// ```
 pub const ALGORITHM_MERGE: Algorithm = Algorithm {
     name: "thin-merge",
     summary: "optimal cycle cover of a thin pocket merged free merges first, then at crossings",

@@ -32,14 +32,14 @@ use crate::tour::CycleCover;
 pub fn precondition(region: &Region) -> Result<()> {
     connected(region)?;
     if !is_thin(region) {
-        return Err(Error::invalid(
+        return Err(Error::precondition(
             "the region is not thin: it contains a 2x2 block of pixels",
         ));
     }
     if region.len() > 1
         && let Some(i) = (0..region.len()).find(|&i| region.degree(i) % 2 == 1)
     {
-        return Err(Error::invalid(format!(
+        return Err(Error::precondition(format!(
             "the region is not Eulerian: pixel {} has {} neighbours",
             region.pixel(i),
             region.degree(i)
@@ -124,7 +124,44 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
     Ok(sol)
 }
 
-/// The registry entry.
+/// The registry entry of `thin-euler`: the straight-through Euler decomposition of a thin
+/// Eulerian pocket, joined at crossings ([`run`]).
+///
+/// # Guarantee
+///
+/// On a connected thin region whose pixels all have even degree the tour has at most 6/5·OPT
+/// turns (Theorem 5.8 of *Optimal covering tours with turn costs*; OPT over all milling tours,
+/// which need not traverse every edge once; our reading of the construction in the module
+/// docs). Registered as `turns <= 6/5 OPT` (Theorem 5.8); the cycle cover it also reports
+/// (`cc-turns`) has no registered bound.
+///
+/// # Example
+///
+/// ```
+/// use mowmill::algorithms::{self, Objective, Options};
+/// use mowmill::evaluate::{evaluate, Reference, Subject};
+/// use mowmill::region::Region;
+///
+/// let region = Region::from_ascii(concat!(
+///     "###\n",
+///     "#.#\n",
+///     "###\n",
+/// ));
+/// let eval = evaluate(
+///     Subject::Registered(algorithms::find("thin-euler").unwrap()),
+///     &region,
+///     &Options::default(),
+///     &[Objective::CcTurns, Objective::Turns],
+///     &Reference::default(),
+/// );
+/// for objective in [Objective::CcTurns, Objective::Turns] {
+///     let out = eval.output(objective).unwrap();
+///     assert!(out.valid);
+///     assert_ne!(out.within_guarantee, Some(false));
+/// }
+/// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
+/// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
+/// ```
 pub const ALGORITHM: Algorithm = Algorithm {
     name: "thin-euler",
     summary: "thin Eulerian pocket: straight-through Euler decomposition joined at crossings (+2 turns each)",
