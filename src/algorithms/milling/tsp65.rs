@@ -56,16 +56,16 @@ use std::collections::BTreeMap;
 /// Theorem 5 needs a simple (hole-free), connected, non-empty grid graph.
 pub fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
-        return Err(Error::Invalid("the region is empty".into()));
+        return Err(Error::Precondition("the region is empty".into()));
     }
     if topology::components(region).count != 1 {
-        return Err(Error::Invalid(
+        return Err(Error::Precondition(
             "tsp65 needs a connected region (one grid component)".into(),
         ));
     }
     let h = topology::holes(region).count;
     if h > 0 {
-        return Err(Error::Invalid(format!(
+        return Err(Error::Precondition(format!(
             "tsp65 needs a simple region (Theorem 5), but this one has {h} hole(s); use holes1325 or milling25"
         )));
     }
