@@ -120,11 +120,9 @@ impl Reference {
     fn exact_bounds(&self, objective: Objective) -> Vec<(u64, String)> {
         let sources: &[Objective] = match objective {
             Objective::Turns => &[Objective::Turns, Objective::CcTurns],
-            o => std::slice::from_ref(match o {
-                Objective::Length => &Objective::Length,
-                Objective::CcTurns => &Objective::CcTurns,
-                _ => &Objective::LawnLength,
-            }),
+            Objective::Length => &[Objective::Length],
+            Objective::CcTurns => &[Objective::CcTurns],
+            Objective::LawnLength => &[],
         };
         sources
             .iter()
