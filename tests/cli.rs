@@ -382,3 +382,181 @@ fn lawn_box_registers_99_over_20() {
     let g = lawn_box["guarantees"][0].as_str().unwrap();
     assert!(g.starts_with("lawn-length <= 99/20 OPT"), "{g}");
 }
+
+/// `bench` ends with a summary on stdout (per algorithm and objective: instances, median and
+/// worst ratio, violations, invalid results, errors, time limits; where the files are), prints
+/// progress lines when stderr is not a terminal, and exits 1 when a guarantee is violated.
+#[test]
+fn bench_summarizes_reports_progress_and_exits_1_on_a_violation() {
+    let dir = temp_dir("bench-summary");
+    let run = |claim: &str, tag: &str| {
+        // dfs_tour.py walks a DFS tree twice: length 2(N - 1), so a claim of N is violated.
+        let config = format!(
+            "name = \"summary\"\nseed = 1\n\
+             [[algorithm]]\nname = \"dfs\"\n\
+             command = [\"python3\", \"{}\", \"{{instance}}\", \"{{tour_out}}\"]\n\
+             objectives = [\"length\"]\n\
+             guarantee = {{ objective = \"length\", factor = \"{claim}\", against = \"n\" }}\n\
+             [[family]]\nfamily = \"random-simple\"\nn = [10, 12]\ncount = 2\n\
+             algorithms = [\"dfs\", \"tsp65\"]\n\
+             [[exact]]\nobjective = \"length\"\nmax_n = 12\ntime_limit = 20\n",
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("examples/outside/dfs_tour.py")
+                .display()
+        );
+        let cfg = dir.join(format!("{tag}.toml"));
+        std::fs::write(&cfg, config).unwrap();
+        let out = dir.join(tag);
+        let o = mowmill(&[
+            "bench",
+            "--config",
+            cfg.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--jobs",
+            "1",
+        ]);
+        (o, out)
+    };
+    let (o, out) = run("2", "holds");
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{stdout}\n{stderr}");
+    let line = |name: &str| {
+        stdout
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(name))
+            .unwrap_or_else(|| panic!("no summary line for {name}:\n{stdout}"))
+            .split_whitespace()
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    // algorithm objective instances ratio median worst violations invalid errors time-limit
+    let tsp = line("tsp65");
+    assert_eq!(&tsp[1..4], ["length", "4", "opt"], "{stdout}");
+    assert!(tsp[5].parse::<f64>().unwrap() >= 1.0, "{stdout}");
+    assert_eq!(&tsp[6..], ["0", "0", "0", "0"], "{stdout}");
+    assert_eq!(line("exact")[2], "4");
+    for file in ["results.csv", "stats.csv", "plots", "manifest.json"] {
+        let path = out.join(file).display().to_string();
+        assert!(stdout.contains(&path), "{file} not named:\n{stdout}");
+    }
+    // stderr is a pipe here: progress comes as lines, the last one with every instance done.
+    assert!(
+        stderr.contains("progress: 4/4 instances (100%)"),
+        "{stderr}"
+    );
+
+    let (o, _) = run("1", "violated");
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}");
+    assert_eq!(line_of(&stdout, "dfs")[6], "4", "{stdout}");
+    assert!(stdout.contains("FAILED"), "{stdout}");
+}
+
+fn line_of(text: &str, name: &str) -> Vec<String> {
+    text.lines()
+        .find(|l| l.split_whitespace().next() == Some(name))
+        .unwrap_or_else(|| panic!("no line for {name}:\n{text}"))
+        .split_whitespace()
+        .map(str::to_string)
+        .collect()
+}
+
+/// `--help` lists the values `--algo`, `--objective`, `--merge`, `--cutter` and the families
+/// accept, so a user never has to guess a name.
+#[test]
+fn help_lists_the_possible_values() {
+    let solve = String::from_utf8_lossy(&mowmill(&["solve", "--help"]).stdout).to_string();
+    for name in mowmill::algorithms::names() {
+        assert!(solve.contains(name), "solve --help misses {name}");
+    }
+    for words in [
+        "[possible values: length, cc-turns, turns, lawn-length]",
+        "[possible values: naive, smart]",
+        "[possible values: square, square-free, disk]",
+    ] {
+        assert!(
+            solve.contains(words),
+            "solve --help misses {words}:\n{solve}"
+        );
+    }
+    let exact = String::from_utf8_lossy(&mowmill(&["exact", "--help"]).stdout).to_string();
+    assert!(
+        exact.contains("[possible values: length, cc-turns, turns, weighted, lawn-tsp]"),
+        "{exact}"
+    );
+    let gen_help = String::from_utf8_lossy(&mowmill(&["gen", "--help"]).stdout).to_string();
+    assert!(
+        gen_help.contains("[possible values: rect, random-simple"),
+        "{gen_help}"
+    );
+    // The old spelling still works.
+    let o = mowmill(&[
+        "exact",
+        "instances/fixtures/rect-2x3.grid",
+        "--objective",
+        "tour-turns",
+        "--json",
+    ]);
+    assert_eq!(json(&o)["objective"], "turns");
+}
+
+/// `exact` has a default time limit, and refuses a limit that is not a positive number.
+#[test]
+fn exact_time_limit_has_a_default_and_refuses_nan_and_non_positive() {
+    let help = String::from_utf8_lossy(&mowmill(&["exact", "--help"]).stdout).to_string();
+    assert!(help.contains("[default: 300]"), "{help}");
+    for bad in ["NaN", "0", "-5", "inf"] {
+        let o = mowmill(&[
+            "exact",
+            "instances/fixtures/rect-2x3.grid",
+            "--objective",
+            "length",
+            "--time-limit",
+            bad,
+        ]);
+        assert_eq!(o.status.code(), Some(2), "--time-limit {bad}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("--time-limit"), "{err}");
+    }
+    let o = mowmill(&[
+        "exact",
+        "instances/fixtures/rect-2x3.grid",
+        "--objective",
+        "length",
+        "--no-time-limit",
+        "--json",
+    ]);
+    assert_eq!(json(&o)["status"], "optimal");
+}
+
+/// `tight` writes to a fresh `results/tight-<run-id>/` by default, never to the committed
+/// `results/tight`; that folder name is git-ignored.
+#[test]
+fn tight_defaults_to_a_fresh_git_ignored_folder() {
+    let help = String::from_utf8_lossy(&mowmill(&["tight", "--help"]).stdout).to_string();
+    assert!(help.contains("results/tight-<run-id>/"), "{help}");
+    assert!(!help.contains("[default: results/tight]"), "{help}");
+    let o = mowmill(&["tight", "--time-limit", "NaN"]);
+    assert_eq!(o.status.code(), Some(2));
+    let ignored = std::process::Command::new("git")
+        .args([
+            "check-ignore",
+            "-q",
+            "results/tight-20261201T235444Z/tight.csv",
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .status()
+        .unwrap();
+    assert!(
+        ignored.success(),
+        "results/tight-<stamp>/ must be git-ignored"
+    );
+    let committed = std::process::Command::new("git")
+        .args(["check-ignore", "-q", "results/tight/tight.csv"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .status()
+        .unwrap();
+    assert!(!committed.success(), "results/tight must stay committed");
+}

@@ -58,8 +58,10 @@ fn every_failure_of_an_outside_program_is_a_row() {
         "--jobs",
         "1",
     ]);
-    assert!(
-        o.status.code().is_some(),
+    // The invalid walk of `wrong` makes the run exit 1 once every row is written.
+    assert_eq!(
+        o.status.code(),
+        Some(1),
         "{}",
         String::from_utf8_lossy(&o.stderr)
     );

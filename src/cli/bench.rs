@@ -105,5 +105,13 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
         summary.errors,
         out.display()
     );
-    Ok(ExitCode::SUCCESS)
+    // The summary covers every row in the directory, resumed ones included.
+    let rows = harness::rows::read_rows(&out.join("results.csv"))?;
+    let lines = harness::summary::lines(&rows);
+    print!("{}", harness::summary::text(&lines, &out));
+    Ok(if harness::summary::failed(&lines) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
 }

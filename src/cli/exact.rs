@@ -12,18 +12,29 @@ use std::process::ExitCode;
 pub struct ExactArgs {
     /// Instance file (.grid or WKT).
     pub file: PathBuf,
-    /// length, cc-turns, turns (alias tour-turns), weighted or lawn-tsp.
-    #[arg(long)]
+    /// The exact objective (`turns` also accepted as `tour-turns`; `weighted` needs
+    /// --turn-cost).
+    #[arg(long, value_parser = super::one_of(exact::Objective::NAMES))]
     pub objective: String,
     /// Weight C of turns for `weighted` (length + C * turns).
     #[arg(long)]
     pub turn_cost: Option<u32>,
-    /// Wall-clock limit in seconds; the answer is then labelled time_limit with its bound.
+    /// Wall-clock limit in seconds (a positive number); past it the best walk found is
+    /// reported with status time_limit and its proven lower bound.
+    #[arg(
+        long,
+        default_value_t = DEFAULT_TIME_LIMIT,
+        conflicts_with = "no_time_limit",
+        allow_negative_numbers = true
+    )]
+    pub time_limit: f64,
+    /// Run until the optimum is proven, however long that takes.
     #[arg(long)]
-    pub time_limit: Option<f64>,
+    pub no_time_limit: bool,
     /// HiGHS threads for this solve.
     #[arg(long, default_value_t = 1)]
     pub threads: usize,
+    /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
     /// Write the optimal (or best) walk(s) to this tour file.
@@ -38,7 +49,19 @@ pub struct ExactArgs {
     pub max_coverage: Option<u32>,
 }
 
+/// `exact`'s default wall-clock limit: 5 minutes, long enough for every instance of the shipped
+/// suites (their largest optimum is proven in under a minute), short enough that a too-large
+/// instance answers with a bound instead of running for hours.
+pub const DEFAULT_TIME_LIMIT: f64 = 300.0;
+
 pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
+    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
+        return Err(mowmill::Error::invalid(format!(
+            "--time-limit {}: expected a positive number of seconds (or --no-time-limit)",
+            a.time_limit
+        ))
+        .into());
+    }
     let objective =
         exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
     let inst = Instance::read(&a.file)?;
@@ -57,7 +80,7 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         }
     }
     let opts = exact::ExactOptions {
-        time_limit: a.time_limit,
+        time_limit: (!a.no_time_limit).then_some(a.time_limit),
         threads: a.threads,
         verbose: a.verbose,
         warm_start: None,

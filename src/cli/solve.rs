@@ -15,22 +15,27 @@ use std::process::ExitCode;
 pub struct SolveArgs {
     /// Instance file (.grid or WKT).
     pub file: PathBuf,
-    /// Algorithm name (see `mowmill algos`).
-    #[arg(long, required_unless_present = "command", conflicts_with = "command")]
+    /// Algorithm name (`mowmill algos` lists their objectives and guarantees).
+    #[arg(
+        long,
+        required_unless_present = "command",
+        conflicts_with = "command",
+        value_parser = super::one_of(algorithms::names())
+    )]
     pub algo: Option<String>,
     /// Run an outside program instead, e.g. "python3 examples/outside_greedy.py {instance}
     /// {tour_out}" (split on spaces; quotes group words). See README, "Outside algorithms".
     #[arg(long)]
     pub command: Option<String>,
-    /// The objective to report: length, cc-turns, turns (alias tour-turns) or lawn-length.
-    /// Default: the algorithm's tour (its first objective for outside programs).
-    #[arg(long)]
+    /// The objective to report (`turns` also accepted as `tour-turns`). Default: the
+    /// algorithm's tour (its first objective for outside programs).
+    #[arg(long, value_parser = super::one_of(Objective::ALL.map(Objective::name)))]
     pub objective: Option<String>,
     /// Also solve exactly (MILP) to decide guarantees against the proven optimum.
     #[arg(long)]
     pub exact: bool,
     /// Time limit in seconds of the exact solve (--exact) and of an outside program.
-    #[arg(long, default_value_t = 60.0)]
+    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
     pub time_limit: f64,
     /// Print JSON instead of text.
     #[arg(long)]

@@ -9,9 +9,11 @@ use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct TightArgs {
-    /// Output directory: tight.csv, tight.md, claims.csv, claims.md, figures/.
-    #[arg(long, default_value = "results/tight")]
-    pub out: PathBuf,
+    /// Output directory: tight.csv, tight.md, claims.csv, claims.md, figures/. Default: a new
+    /// results/tight-<run-id>/ (git-ignored); the committed results/tight is written only when
+    /// named here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
     /// Results directory for the claims table (skipped with a note if it has no results.csv).
     #[arg(long, default_value = "results/default")]
     pub from: PathBuf,
@@ -19,7 +21,7 @@ pub struct TightArgs {
     #[arg(long)]
     pub quick: bool,
     /// Time limit of each exact solve, in seconds.
-    #[arg(long, default_value_t = 120.0)]
+    #[arg(long, default_value_t = 120.0, allow_negative_numbers = true)]
     pub time_limit: f64,
     /// Skip the figures.
     #[arg(long)]
@@ -28,6 +30,13 @@ pub struct TightArgs {
 
 pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
     use mowmill::tight;
+    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
+        return Err(Error::invalid(format!(
+            "--time-limit {}: expected a positive number of seconds",
+            a.time_limit
+        ))
+        .into());
+    }
     let mut opts = tight::TightOptions {
         time_limit: a.time_limit,
         ..tight::TightOptions::default()
@@ -37,24 +46,29 @@ pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
         opts.band_k = (1..=6).collect();
         opts.thin43_s = (0..=2).collect();
     }
-    std::fs::create_dir_all(&a.out).map_err(|e| Error::io(&a.out, e))?;
+    // A fresh folder per run, so that a run never overwrites committed results by default.
+    let out = a.out.clone().unwrap_or_else(|| {
+        let stamp = harness::manifest::now().replace([':', '-'], "");
+        PathBuf::from("results").join(format!("tight-{stamp}"))
+    });
+    std::fs::create_dir_all(&out).map_err(|e| Error::io(&out, e))?;
     let started = std::time::Instant::now();
     let run = tight::run(&opts)?;
-    let csv = a.out.join("tight.csv");
+    let csv = out.join("tight.csv");
     tight::write_csv(&run, &csv)?;
     let md = tight::markdown(&run);
-    let md_path = a.out.join("tight.md");
+    let md_path = out.join("tight.md");
     std::fs::write(&md_path, &md).map_err(|e| Error::io(&md_path, e))?;
     println!("{md}");
     if !a.no_figures {
-        tight::figures::draw_all(&run, &a.out)?;
+        tight::figures::draw_all(&run, &out)?;
     }
     let tight_rows: Vec<tight::TightRow> = run.rows().cloned().collect();
     let results = a.from.join("results.csv");
     if results.exists() {
         let rows = harness::rows::read_rows(&results)?;
         let table = tight::claims::table(&rows, &tight_rows);
-        write_claims(&table, &a.from, &a.out)?;
+        write_claims(&table, &a.from, &out)?;
     } else {
         eprintln!(
             "no {}: the claims table is skipped (run `mowmill bench --out {}` first)",

@@ -14,6 +14,7 @@ pub mod progress;
 pub mod rows;
 pub mod run;
 pub mod stats;
+pub mod summary;
 
 /// The built-in default suite: every registered algorithm and every exact objective on small
 /// cases (`experiments/default.toml`).
