@@ -560,3 +560,53 @@ fn tight_defaults_to_a_fresh_git_ignored_folder() {
         .unwrap();
     assert!(!committed.success(), "results/tight must stay committed");
 }
+
+/// README is one screen (what mowmill is, the two commands, a tour, where results land) and
+/// every relative link of README and docs/ leads to a file that exists.
+#[test]
+fn readme_is_one_screen_and_links_resolve() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    assert!(
+        readme.lines().count() <= 60,
+        "README.md is longer than a screen or two"
+    );
+    for command in [
+        "scripts/setup.sh && cargo run --release -- bench",
+        "scripts/setup.sh && cargo test --release",
+    ] {
+        assert!(readme.contains(command), "README.md misses `{command}`");
+    }
+    for step in [
+        "mowmill gen",
+        "mowmill solve",
+        "mowmill draw",
+        "mowmill exact",
+        "mowmill bench",
+    ] {
+        assert!(readme.contains(step), "README.md's tour misses `{step}`");
+    }
+    let mut files = vec![root.join("README.md")];
+    for e in std::fs::read_dir(root.join("docs")).unwrap() {
+        files.push(e.unwrap().path());
+    }
+    for file in files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|x| x == "md"))
+    {
+        let text = std::fs::read_to_string(file).unwrap();
+        for (k, _) in text.match_indices("](") {
+            let target = text[k + 2..].split(')').next().unwrap();
+            let path = target.split('#').next().unwrap();
+            if path.is_empty() || path.contains("://") {
+                continue;
+            }
+            let resolved = file.parent().unwrap().join(path);
+            assert!(
+                resolved.exists(),
+                "{}: link {target} leads nowhere",
+                file.display()
+            );
+        }
+    }
+}

@@ -1,4 +1,5 @@
-//! The registry is the one source of the README's algorithm tables and of `mowmill algos`.
+//! The registry is the one source of the algorithm tables in docs/algorithms.md and of
+//! `mowmill algos`.
 
 use std::process::Command;
 
@@ -16,16 +17,16 @@ fn algos(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("UTF-8")
 }
 
-/// README.md's lines between `<!-- algos:begin -->` and `<!-- algos:end -->`.
+/// docs/algorithms.md's lines between `<!-- algos:begin -->` and `<!-- algos:end -->`.
 fn readme_block() -> String {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
-    let readme = std::fs::read_to_string(path).expect("read README.md");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/algorithms.md");
+    let readme = std::fs::read_to_string(path).expect("read docs/algorithms.md");
     let (_, rest) = readme
         .split_once("<!-- algos:begin -->\n")
-        .expect("README.md has a line <!-- algos:begin -->");
+        .expect("docs/algorithms.md has a line <!-- algos:begin -->");
     let (block, _) = rest
         .split_once("<!-- algos:end -->")
-        .expect("README.md has a line <!-- algos:end --> after <!-- algos:begin -->");
+        .expect("docs/algorithms.md has a line <!-- algos:end --> after <!-- algos:begin -->");
     block.to_string()
 }
 
@@ -40,8 +41,8 @@ fn readme_algorithm_tables_are_the_registry() {
             .position(|(a, b)| a != b)
             .unwrap_or(readme.lines().count().min(generated.lines().count()));
         panic!(
-            "README.md's algorithm tables (between <!-- algos:begin --> and <!-- algos:end -->) \
-             differ from `mowmill algos --markdown` from line {} of the block on:\n  README:    {:?}\n  generated: {:?}\n\
+            "docs/algorithms.md's algorithm tables (between <!-- algos:begin --> and <!-- algos:end -->) \
+             differ from `mowmill algos --markdown` from line {} of the block on:\n  docs:      {:?}\n  generated: {:?}\n\
              Run scripts/update-readme-tables.sh to rewrite them from the registry.",
             first + 1,
             readme.lines().nth(first),

@@ -1,5 +1,5 @@
 //! `mowmill algos`: the registered algorithms, their guarantees and the theorems they come
-//! from, as text, JSON or the Markdown tables of the README (`--markdown`; README.md holds
+//! from, as text, JSON or the Markdown tables of docs/algorithms.md (`--markdown`; docs/algorithms.md holds
 //! them between `<!-- algos:begin -->` and `<!-- algos:end -->`, rewritten by
 //! `scripts/update-readme-tables.sh`).
 
@@ -15,7 +15,7 @@ pub struct AlgosArgs {
     /// Print JSON instead of text.
     #[arg(long, conflicts_with = "markdown")]
     pub json: bool,
-    /// Print the README's algorithm tables (one per paper) as Markdown.
+    /// Print the algorithm tables of docs/algorithms.md (one per paper) as Markdown.
     #[arg(long)]
     pub markdown: bool,
 }
@@ -113,7 +113,7 @@ fn guarantee_cell(a: &Algorithm, g: &Guarantee) -> String {
     format!("`{bound}`{output}{condition}: {}{how}", g.theorem.id)
 }
 
-/// The README's algorithm tables: one per paper, one row per registered algorithm.
+/// The algorithm tables of docs/algorithms.md: one per paper, one row per registered algorithm.
 pub fn markdown() -> String {
     let mut out = String::new();
     for paper in Paper::ALL {
@@ -153,7 +153,7 @@ pub fn markdown() -> String {
             );
         }
     }
-    // A blank line ends the last table before README's end marker.
+    // A blank line ends the last table before the end marker.
     out.push('\n');
     out
 }
