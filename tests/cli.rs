@@ -610,3 +610,45 @@ fn readme_is_one_screen_and_links_resolve() {
         }
     }
 }
+
+/// Each cause of an error is printed once, and names the file.
+#[test]
+fn an_error_cause_is_printed_once() {
+    for args in [
+        &["info", "/nonexistent/x.grid"][..],
+        &["solve", "/nonexistent/x.grid", "--algo", "tsp65"][..],
+        &["exact", "/nonexistent/x.grid", "--objective", "length"][..],
+    ] {
+        let o = mowmill(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.matches("os error 2").count(), 1, "{args:?}: {err}");
+        assert!(err.contains("/nonexistent/x.grid"), "{err}");
+    }
+}
+
+/// `solve`'s text names every guarantee of the algorithm with its verdict, not just the value.
+#[test]
+fn solve_text_shows_guarantees_and_verdicts() {
+    let o = mowmill(&[
+        "solve",
+        "instances/fixtures/rect-2x3.grid",
+        "--algo",
+        "tsp65",
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("guarantee length <= 6/5 OPT") && text.contains("): holds"),
+        "{text}"
+    );
+    let o = mowmill(&[
+        "solve",
+        "instances/fixtures/rect-2x3.grid",
+        "--algo",
+        "strips-matching",
+        "--exact",
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("optimum"), "{text}");
+    assert!(text.contains("guarantee turns <= 15/4 OPT"), "{text}");
+}
