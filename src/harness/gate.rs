@@ -22,8 +22,8 @@
 //! - a group has more error rows than the baseline's, or error rows in a group the baseline
 //!   does not have (e.g. an instance that failed to generate: algorithm `instance`);
 //! - a (family, algorithm, objective) group of the baseline is missing from the current run;
-//! - a group has fewer rows than the baseline's (an instance vanished), or fewer rows with a
-//!   ratio in one of the columns `opt`, `lb`, `n` (a ratio vanished);
+//! - a group has fewer rows than the baseline's (an instance vanished), or lost more ratios
+//!   of one of the columns `opt`, `lb`, `n` than rows (a ratio vanished from a kept row);
 //! - the mean or max of a ratio of a group (bin `all`) is worse than the baseline's by more
 //!   than the relative tolerance, or is missing where the baseline has one; a comparison that
 //!   cannot be decided (NaN) counts as worse.
@@ -349,7 +349,8 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
         }
         for which in RATIOS {
             let (bs, cs) = (b.summary(which), c.summary(which));
-            if cs.count < bs.count {
+            // Only ratios lost beyond the lost rows, which are reported once above.
+            if bs.count.saturating_sub(cs.count) > b.count.saturating_sub(c.count) {
                 report.findings.push(fail(
                     format!("{group}: fewer rows with ratio_{which}"),
                     Some(bs.count as f64),
