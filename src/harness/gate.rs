@@ -31,6 +31,7 @@
 use super::rows::{Row, read_rows};
 use super::stats::{self, StatRow};
 use crate::error::{Error, Result};
+use std::cmp::Ordering;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -197,6 +198,15 @@ fn check_baseline(file: &Path, base: &[StatRow]) -> Result<()> {
     Ok(())
 }
 
+/// `x <= limit`, false when either is NaN: every check is written as "fail unless at most",
+/// so that a NaN fails it instead of passing it.
+fn at_most(x: f64, limit: f64) -> bool {
+    matches!(
+        x.partial_cmp(&limit),
+        Some(Ordering::Less | Ordering::Equal)
+    )
+}
+
 /// The ratio columns of `row` that disagree with the ratios its integers give, as (column,
 /// stored, recomputed).
 fn ratio_mismatches(row: &Row) -> Vec<(&'static str, Option<f64>, Option<f64>)> {
@@ -212,8 +222,7 @@ fn ratio_mismatches(row: &Row) -> Vec<(&'static str, Option<f64>, Option<f64>)> 
         .map(|(col, s, c)| (col, s.map(|x| x.0), c.map(|x| x.0)))
         .filter(|(_, s, c)| match (s, c) {
             (None, None) => false,
-            // Written so that NaN disagrees.
-            (Some(s), Some(c)) => !((s - c).abs() <= RATIO_EPS),
+            (Some(s), Some(c)) => !at_most((s - c).abs(), RATIO_EPS),
             _ => true,
         })
         .collect()
@@ -360,8 +369,7 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
             for (stat, bv, cv) in [("mean", bs.mean, cs.mean), ("max", bs.max, cs.max)] {
                 let what = format!("{group}: ratio_{which} {stat}");
                 match (bv, cv) {
-                    // Negated so that a comparison with NaN fails instead of passing.
-                    (Some(bv), Some(cv)) if !(cv <= bv * (1.0 + tolerance) + 1e-12) => {
+                    (Some(bv), Some(cv)) if !at_most(cv, bv * (1.0 + tolerance) + 1e-12) => {
                         report.findings.push(fail(what, Some(bv), Some(cv)))
                     }
                     (Some(bv), Some(cv)) if cv < bv * (1.0 - tolerance) - 1e-12 => {
