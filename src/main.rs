@@ -82,8 +82,16 @@ enum Command {
         /// Run directory to check (holding results.csv).
         #[arg(long)]
         current: PathBuf,
-        /// Relative tolerance on ratio means and maxima.
-        #[arg(long, default_value_t = 0.005)]
+        /// Relative tolerance on ratio means and maxima: a finite number, 0 <= X < 1.
+        // Checked by the parser so that NaN or a negative value is refused (exit 2) before
+        // the gate runs, with clap naming --tolerance in the message (a negative number is
+        // taken as the value, not as an unknown flag).
+        #[arg(
+            long,
+            default_value_t = 0.005,
+            value_parser = harness::gate::parse_tolerance,
+            allow_negative_numbers = true
+        )]
         tolerance: f64,
     },
     /// Draw an instance, optionally with a tour over it, to SVG or PNG.

@@ -1,18 +1,48 @@
 //! The regression gate: compares a run with a committed baseline, deterministically (it never
 //! compares timings).
 //!
-//! It fails when any result of the current run is invalid, when any guarantee is violated, when
-//! an error row appears, when a (family, algorithm, objective) group of the baseline is
-//! missing, or when the mean or max of any ratio of a group (bin `all` of `stats.csv`) is worse
-//! than the baseline's by more than the relative tolerance. Ratios are all of minimization
-//! objectives, so larger is worse.
+//! The gate does not trust the ratio columns of `results.csv`: it recomputes every ratio from
+//! the row's integers (`value / opt`, `value / lower_bound`, `value / n`, as
+//! [`Row::compute_ratios`] defines them) and builds the current statistics from the recomputed
+//! ratios. Ratios are all of minimization objectives, so larger is worse.
+//!
+//! It **refuses** (an error, exit 2) when
+//! - the tolerance is not a finite number in `[0, 1)` (NaN, negative, infinite, or so large
+//!   that a doubled ratio would pass);
+//! - the baseline has no group of bin `all` (an empty file, a header only);
+//! - a ratio of the baseline is not a finite number `>= 0` (NaN, `inf`, negative), or a ratio
+//!   column has a positive count but an empty mean, median, p95 or max (or the reverse).
+//!
+//! It **fails** (exit 1) when
+//! - a stored ratio of a current row disagrees with the ratio recomputed from its integers
+//!   (including a NaN or infinite stored ratio, or a ratio where the integers give none);
+//! - a row appears twice (same instance, algorithm and objective);
+//! - a current result is invalid (`valid` is `false`), or has a value but no validity verdict;
+//! - a guarantee is violated (`within_guarantee` is `false`);
+//! - a group has more error rows than the baseline's, or error rows in a group the baseline
+//!   does not have (e.g. an instance that failed to generate: algorithm `instance`);
+//! - a (family, algorithm, objective) group of the baseline is missing from the current run;
+//! - a group has fewer rows than the baseline's (an instance vanished), or lost more ratios
+//!   of one of the columns `opt`, `lb`, `n` than rows (a ratio vanished from a kept row);
+//! - the mean or max of a ratio of a group (bin `all`) is worse than the baseline's by more
+//!   than the relative tolerance, or is missing where the baseline has one; a comparison that
+//!   cannot be decided (NaN) counts as worse.
 
 use super::rows::{Row, read_rows};
 use super::stats::{self, StatRow};
-use crate::error::Result;
-use std::collections::BTreeMap;
+use crate::error::{Error, Result};
+use std::cmp::Ordering;
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
+
+/// The ratio columns, by the names [`StatRow::summary`] takes.
+const RATIOS: [&str; 3] = ["opt", "lb", "n"];
+
+/// How far a stored ratio may be from the one recomputed from its row's integers: one unit in
+/// the sixth decimal, the precision `results.csv` stores (honest files agree exactly, since
+/// both round the same way; a tampered or NaN value is off by far more).
+const RATIO_EPS: f64 = 1e-6;
 
 /// One line of the gate's table.
 #[derive(Clone, Debug, PartialEq)]
@@ -85,21 +115,127 @@ impl GateReport {
     }
 }
 
-/// The baseline's statistics: a `stats.csv` file, or a run directory holding one.
-fn baseline_stats(path: &Path) -> Result<Vec<StatRow>> {
-    let file: PathBuf = if path.is_dir() {
+/// Checks a relative tolerance: finite and in `[0, 1)`.
+///
+/// NaN would make every comparison false (so everything passes), a negative tolerance flags
+/// unchanged ratios, and a tolerance of 1 or more lets a ratio double unnoticed.
+pub fn check_tolerance(tolerance: f64) -> std::result::Result<f64, String> {
+    if tolerance.is_finite() && (0.0..1.0).contains(&tolerance) {
+        Ok(tolerance)
+    } else {
+        Err(format!(
+            "expected a finite relative tolerance with 0 <= tolerance < 1 (e.g. 0.005), got \
+             {tolerance}"
+        ))
+    }
+}
+
+/// Parses `--tolerance` for clap, which names the option in its error and exits 2.
+pub fn parse_tolerance(text: &str) -> std::result::Result<f64, String> {
+    let t: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("expected a number (e.g. 0.005), got {text:?}"))?;
+    check_tolerance(t)
+}
+
+/// The baseline's statistics file: a `stats.csv` file, or a run directory holding one.
+fn baseline_file(path: &Path) -> PathBuf {
+    if path.is_dir() {
         path.join("stats.csv")
     } else {
         path.to_path_buf()
-    };
-    stats::read(&file)
+    }
+}
+
+/// Refuses a baseline the gate cannot compare against: one without groups (every run would
+/// pass against it), or with a ratio that is not a finite number >= 0 (a NaN makes every
+/// comparison false) or whose count disagrees with its presence.
+fn check_baseline(file: &Path, base: &[StatRow]) -> Result<()> {
+    let name = file.display().to_string();
+    if !base.iter().any(|s| s.size_bin == "all") {
+        return Err(Error::invalid(format!(
+            "{name}: baseline has no groups (no row of size_bin `all`): expected a stats.csv \
+             written by `mowmill bench`, with a header and at least one group"
+        )));
+    }
+    // Column numbers for the error message, from the file's own header.
+    let header: Vec<String> = csv::Reader::from_path(file)
+        .and_then(|mut r| r.headers().cloned())
+        .map(|h| h.iter().map(String::from).collect())
+        .unwrap_or_default();
+    let column = |col: &str| header.iter().position(|h| h == col).map_or(1, |p| p + 1);
+    for (k, s) in base.iter().enumerate() {
+        // `stats::read` numbers its records the same way: header on line 1.
+        let line = k + 2;
+        for which in RATIOS {
+            let sum = s.summary(which);
+            let stats = [
+                ("mean", sum.mean),
+                ("median", sum.median),
+                ("p95", sum.p95),
+                ("max", sum.max),
+            ];
+            for (stat, value) in stats {
+                let col = format!("ratio_{which}_{stat}");
+                let problem = match value {
+                    Some(x) if !(x.is_finite() && x >= 0.0) => {
+                        format!("{col} is {x}: expected a finite ratio >= 0")
+                    }
+                    None if sum.count > 0 => format!(
+                        "{col} is empty but ratio_{which}_count is {}: expected a ratio",
+                        sum.count
+                    ),
+                    Some(x) if sum.count == 0 => {
+                        format!("{col} is {x} but ratio_{which}_count is 0: expected it empty")
+                    }
+                    _ => continue,
+                };
+                return Err(Error::parse(&name, line, column(&col), problem));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// `x <= limit`, false when either is NaN: every check is written as "fail unless at most",
+/// so that a NaN fails it instead of passing it.
+fn at_most(x: f64, limit: f64) -> bool {
+    matches!(
+        x.partial_cmp(&limit),
+        Some(Ordering::Less | Ordering::Equal)
+    )
+}
+
+/// The ratio columns of `row` that disagree with the ratios its integers give, as (column,
+/// stored, recomputed).
+fn ratio_mismatches(row: &Row) -> Vec<(&'static str, Option<f64>, Option<f64>)> {
+    let mut recomputed = row.clone();
+    recomputed.compute_ratios();
+    let pairs = [
+        ("ratio_opt", row.ratio_opt, recomputed.ratio_opt),
+        ("ratio_lb", row.ratio_lb, recomputed.ratio_lb),
+        ("ratio_n", row.ratio_n, recomputed.ratio_n),
+    ];
+    pairs
+        .into_iter()
+        .map(|(col, s, c)| (col, s.map(|x| x.0), c.map(|x| x.0)))
+        .filter(|(_, s, c)| match (s, c) {
+            (None, None) => false,
+            (Some(s), Some(c)) => !at_most((s - c).abs(), RATIO_EPS),
+            _ => true,
+        })
+        .collect()
 }
 
 /// Compares the run in `current` (a directory with `results.csv`) against `baseline`.
 pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateReport> {
-    let base = baseline_stats(baseline)?;
-    let rows: Vec<Row> = read_rows(&current.join("results.csv"))?;
-    let now = stats::compute(&rows);
+    let tolerance =
+        check_tolerance(tolerance).map_err(|m| Error::invalid(format!("tolerance: {m}")))?;
+    let base_file = baseline_file(baseline);
+    let base = stats::read(&base_file)?;
+    check_baseline(&base_file, &base)?;
+    let stored: Vec<Row> = read_rows(&current.join("results.csv"))?;
     let mut report = GateReport::default();
     let fail = |what: String, b: Option<f64>, c: Option<f64>| Finding {
         verdict: Verdict::Fail,
@@ -107,37 +243,96 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
         baseline: b,
         current: c,
     };
-    for r in rows.iter().filter(|r| r.valid == Some(false)) {
-        report.findings.push(fail(
-            format!(
-                "invalid result: {} {} {}: {}",
-                r.instance, r.algorithm, r.objective, r.error
-            ),
-            None,
-            None,
-        ));
+    let id = |r: &Row| format!("{} {} {}", r.instance, r.algorithm, r.objective);
+    let mut seen = BTreeSet::new();
+    for r in &stored {
+        for (col, s, c) in ratio_mismatches(r) {
+            let show = |x: Option<f64>| x.map_or("empty".to_string(), |v| format!("{v:.6}"));
+            report.findings.push(fail(
+                format!(
+                    "row ratio does not match its integers: {}: {col} is {}, value {} / \
+                     (opt {}, lower_bound {}, n {}) gives {}",
+                    id(r),
+                    show(s),
+                    r.value.map_or("empty".into(), |v| v.to_string()),
+                    r.opt.map_or("empty".into(), |v| v.to_string()),
+                    r.lower_bound.map_or("empty".into(), |v| v.to_string()),
+                    r.n,
+                    show(c)
+                ),
+                None,
+                None,
+            ));
+        }
+        // A repeated row would weigh twice in the means (or dilute a regression).
+        if !seen.insert(r.key()) {
+            report
+                .findings
+                .push(fail(format!("duplicate row: {}", id(r)), None, None));
+        }
+        if r.valid == Some(false) {
+            report.findings.push(fail(
+                format!("invalid result: {}: {}", id(r), r.error),
+                None,
+                None,
+            ));
+        }
+        // Every value is the checker's recount of a cover, so it always comes with a verdict.
+        if r.error.is_empty() && r.value.is_some() && r.valid.is_none() {
+            report.findings.push(fail(
+                format!("result without a validity verdict: {}", id(r)),
+                None,
+                None,
+            ));
+        }
+        if r.within_guarantee == Some(false) {
+            report.findings.push(fail(
+                format!(
+                    "guarantee violated: {} value {} ({})",
+                    id(r),
+                    r.value.unwrap_or(0),
+                    r.guarantee
+                ),
+                None,
+                None,
+            ));
+        }
     }
-    for r in rows.iter().filter(|r| r.within_guarantee == Some(false)) {
-        report.findings.push(fail(
-            format!(
-                "guarantee violated: {} {} {} value {} ({})",
-                r.instance,
-                r.algorithm,
-                r.objective,
-                r.value.unwrap_or(0),
-                r.guarantee
-            ),
-            None,
-            None,
-        ));
-    }
+    // Statistics from the recomputed ratios only: the stored ones were checked above, and are
+    // not what the comparison rests on.
+    let rows: Vec<Row> = stored
+        .into_iter()
+        .map(|mut r| {
+            r.compute_ratios();
+            r
+        })
+        .collect();
+    let now = stats::compute(&rows);
     let key = |s: &StatRow| (s.family.clone(), s.algorithm.clone(), s.objective.clone());
     let current: BTreeMap<_, &StatRow> = now
         .iter()
         .filter(|s| s.size_bin == "all")
         .map(|s| (key(s), s))
         .collect();
-    for b in base.iter().filter(|s| s.size_bin == "all") {
+    let base_all: BTreeMap<_, &StatRow> = base
+        .iter()
+        .filter(|s| s.size_bin == "all")
+        .map(|s| (key(s), s))
+        .collect();
+    // A group the baseline does not know is not compared, but its error rows still fail.
+    for (k, c) in &current {
+        if c.errors > 0 && !base_all.contains_key(k) {
+            report.findings.push(fail(
+                format!(
+                    "{} / {} / {}: error rows in a group the baseline does not have",
+                    c.family, c.algorithm, c.objective
+                ),
+                Some(0.0),
+                Some(c.errors as f64),
+            ));
+        }
+    }
+    for b in base_all.values() {
         let group = format!("{} / {} / {}", b.family, b.algorithm, b.objective);
         let Some(c) = current.get(&key(b)) else {
             report
@@ -153,12 +348,28 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
                 Some(c.errors as f64),
             ));
         }
-        for which in ["opt", "lb", "n"] {
+        // Fewer rows means instances vanished: their ratios would silently leave the means.
+        if c.count < b.count {
+            report.findings.push(fail(
+                format!("{group}: fewer rows than the baseline"),
+                Some(b.count as f64),
+                Some(c.count as f64),
+            ));
+        }
+        for which in RATIOS {
             let (bs, cs) = (b.summary(which), c.summary(which));
+            // Only ratios lost beyond the lost rows, which are reported once above.
+            if bs.count.saturating_sub(cs.count) > b.count.saturating_sub(c.count) {
+                report.findings.push(fail(
+                    format!("{group}: fewer rows with ratio_{which}"),
+                    Some(bs.count as f64),
+                    Some(cs.count as f64),
+                ));
+            }
             for (stat, bv, cv) in [("mean", bs.mean, cs.mean), ("max", bs.max, cs.max)] {
                 let what = format!("{group}: ratio_{which} {stat}");
                 match (bv, cv) {
-                    (Some(bv), Some(cv)) if cv > bv * (1.0 + tolerance) + 1e-12 => {
+                    (Some(bv), Some(cv)) if !at_most(cv, bv * (1.0 + tolerance) + 1e-12) => {
                         report.findings.push(fail(what, Some(bv), Some(cv)))
                     }
                     (Some(bv), Some(cv)) if cv < bv * (1.0 - tolerance) - 1e-12 => {
