@@ -423,6 +423,7 @@ fn merge_takes_only_the_complete_finished_shards_of_one_config() {
     std::fs::write(unfinished.join("manifest.json"), m.to_string()).unwrap();
     let (unfinished_out, _) = merge(&[s0, s1, &unfinished], "m-unfinished");
     assert_refused(&unfinished_out, &["s2-unfinished", "not finished"]);
+    assert!(!stderr(&unfinished_out).contains("missing"));
 
     let foreign = dir.join("x2");
     assert_ok(&bench(&other, &foreign, &["--shard", "2/3"]));

@@ -123,14 +123,15 @@ pub fn pid_alive(pid: i64) -> bool {
 /// Why the holder of a lock is known to be gone, or `None` when it may still be running.
 fn stale_reason(h: &Holder) -> Option<String> {
     let here = hostname();
-    if let (Some(job), Ok(our_job)) = (&h.slurm_job, std::env::var("SLURM_JOB_ID")) {
-        if *job == our_job && h.restart < slurm_restart() {
-            return Some(format!(
-                "taken by an earlier attempt of Slurm job {job} (restart {} < {})",
-                h.restart,
-                slurm_restart()
-            ));
-        }
+    if let (Some(job), Ok(our_job)) = (&h.slurm_job, std::env::var("SLURM_JOB_ID"))
+        && *job == our_job
+        && h.restart < slurm_restart()
+    {
+        return Some(format!(
+            "taken by an earlier attempt of Slurm job {job} (restart {} < {})",
+            h.restart,
+            slurm_restart()
+        ));
     }
     if h.host.as_deref().is_none_or(|host| host == here) {
         return match h.pid {

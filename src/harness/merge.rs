@@ -47,19 +47,28 @@ fn check_shard(dir: &Path, problems: &mut Vec<String>) -> Option<Shard> {
         ));
         return None;
     };
-    if manifest.json["end"].is_null() {
+    let shard = Shard {
+        dir: dir.to_path_buf(),
+        manifest,
+        index,
+        count,
+        sha256,
+    };
+    // An unfinished or unreadable shard still counts as given, so it is not also reported
+    // missing.
+    if shard.manifest.json["end"].is_null() {
         problems.push(format!(
             "{at}: shard {index}/{count} has not finished (end is null): continue it with \
              `mowmill bench --resume {}`",
             dir.display()
         ));
-        return None;
+        return Some(shard);
     }
-    let Some(rows) = manifest.json["rows"].as_u64() else {
+    let Some(rows) = shard.manifest.json["rows"].as_u64() else {
         problems.push(format!(
             "{at}: records no rows count (written by an older mowmill)"
         ));
-        return None;
+        return Some(shard);
     };
     let results = dir.join("results.csv");
     match std::fs::read(&results) {
@@ -79,13 +88,7 @@ fn check_shard(dir: &Path, problems: &mut Vec<String>) -> Option<Shard> {
             Ok(_) => {}
         },
     }
-    Some(Shard {
-        dir: dir.to_path_buf(),
-        manifest,
-        index,
-        count,
-        sha256,
-    })
+    Some(shard)
 }
 
 /// Checks that `shards` are the complete, disjoint slices of one config; the error lists
