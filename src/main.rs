@@ -65,7 +65,8 @@ enum Command {
         /// Run directory (holding results.csv).
         dir: PathBuf,
     },
-    /// Combine shard output directories into one run.
+    /// Combine shard output directories into one run (refused unless they are every shard
+    /// I/N of one config, each finished and complete).
     Merge {
         /// Shard directories.
         #[arg(required = true)]

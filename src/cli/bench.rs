@@ -1,21 +1,47 @@
 //! `mowmill bench`: a suite of instances x algorithms x exact objectives.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use clap::Args;
-use mowmill::harness::{self, config::Config, run::RunOptions};
-use std::path::PathBuf;
+use mowmill::error::Error;
+use mowmill::harness::{
+    self,
+    config::Config,
+    manifest::{ConfigRecord, Recorded},
+    run::RunOptions,
+};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+/// How a long run continues, shown by `mowmill bench --help`.
+const CONTINUING: &str = "\
+Continuing a run: `--resume DIR` skips the rows already in DIR/results.csv and continues with
+the config recorded in DIR/manifest.json (its TOML text, `config_toml`) and its shard. With
+--config as well, the file must be the recorded one (same sha256), else the resume is refused;
+a --shard (or SLURM_ARRAY_TASK_*) other than the recorded one is refused too. Only one run at
+a time may use a directory (DIR/.lock names the holder's pid; a lock whose holder is gone is
+taken over).
+
+Slurm: without --shard the shard is SLURM_ARRAY_TASK_ID - SLURM_ARRAY_TASK_MIN of
+SLURM_ARRAY_TASK_COUNT (a contiguous array such as --array=0-3); set but invalid variables are
+refused. A requeued task (SLURM_RESTART_COUNT > 0) that runs the same
+`bench --config X --out DIR` again continues DIR as if given `--resume DIR --config X` when
+DIR/manifest.json exists. scripts/slurm-array.sh runs, per task:
+  mowmill bench --resume DIR --config X --jobs C   when DIR/manifest.json exists,
+  mowmill bench --config X --out DIR --jobs C      otherwise.";
+
 #[derive(Args)]
+#[command(after_help = CONTINUING)]
 pub struct BenchArgs {
-    /// Suite config (TOML); default: the built-in default suite.
+    /// Suite config (TOML); default: the built-in default suite (with --resume: the recorded
+    /// config, which a given --config must equal).
     #[arg(long)]
     pub config: Option<PathBuf>,
     /// Output directory (default: results/<run-id>/).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Parallel jobs (default: all cores); each solve uses one thread.
-    #[arg(long)]
+    /// Parallel jobs, 1 to 16 per available core (default: all cores); each solve uses one
+    /// thread.
+    #[arg(long, value_parser = parse_jobs)]
     pub jobs: Option<usize>,
     /// Continue the run in this directory, skipping rows already in its results.csv.
     #[arg(long, conflicts_with = "out")]
@@ -27,52 +53,146 @@ pub struct BenchArgs {
 }
 
 pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
-    let (i, n) = s
-        .split_once('/')
-        .ok_or_else(|| format!("expected I/N, got {s:?}"))?;
-    let (i, n): (usize, usize) = (
-        i.parse().map_err(|_| format!("bad shard index {i:?}"))?,
-        n.parse().map_err(|_| format!("bad shard count {n:?}"))?,
-    );
-    if n == 0 || i >= n {
-        return Err(format!("shard {i}/{n}: expected 0 <= I < N"));
+    harness::manifest::parse_shard(s)
+}
+
+/// `--jobs`: 0 is refused (leaving --jobs out already means all cores) and so is more than 16
+/// per available core, which would only spawn threads that wait.
+pub fn parse_jobs(s: &str) -> Result<usize, String> {
+    let jobs: usize = s
+        .parse()
+        .map_err(|_| format!("expected a number of jobs, got {s:?}"))?;
+    harness::run::check_jobs(jobs)
+}
+
+/// A Slurm variable as a number: `Ok(None)` when unset, an error naming it when set but not a
+/// non-negative integer.
+fn slurm_var(name: &str) -> Result<Option<usize>, Error> {
+    match std::env::var(name) {
+        Err(std::env::VarError::NotPresent) => Ok(None),
+        Err(std::env::VarError::NotUnicode(_)) => Err(Error::invalid(format!(
+            "{name}: expected a non-negative integer, got a value that is not UTF-8"
+        ))),
+        Ok(v) => {
+            v.trim().parse().map(Some).map_err(|_| {
+                Error::invalid(format!("{name}={v:?}: expected a non-negative integer"))
+            })
+        }
     }
-    Ok((i, n))
 }
 
 /// The shard from Slurm's job-array variables (task ids are made 0-based with
-/// SLURM_ARRAY_TASK_MIN).
-pub fn slurm_shard() -> Option<(usize, usize)> {
-    let var = |k: &str| std::env::var(k).ok().and_then(|v| v.parse::<usize>().ok());
-    let (id, count) = (var("SLURM_ARRAY_TASK_ID")?, var("SLURM_ARRAY_TASK_COUNT")?);
-    let i = id.checked_sub(var("SLURM_ARRAY_TASK_MIN").unwrap_or(0))?;
-    (i < count).then_some((i, count))
+/// SLURM_ARRAY_TASK_MIN); `Ok(None)` outside a job array. Set but inconsistent variables are
+/// refused rather than ignored, since ignoring them would run the full suite in every task.
+pub fn slurm_shard() -> Result<Option<(usize, usize)>, Error> {
+    let id = slurm_var("SLURM_ARRAY_TASK_ID")?;
+    let count = slurm_var("SLURM_ARRAY_TASK_COUNT")?;
+    let min = slurm_var("SLURM_ARRAY_TASK_MIN")?;
+    let (id, count) = match (id, count) {
+        (None, None) => return Ok(None),
+        (Some(id), None) => {
+            return Err(Error::invalid(format!(
+                "SLURM_ARRAY_TASK_ID={id} is set but SLURM_ARRAY_TASK_COUNT is not: expected \
+                 both (or pass --shard I/N)"
+            )));
+        }
+        (None, Some(count)) => {
+            return Err(Error::invalid(format!(
+                "SLURM_ARRAY_TASK_COUNT={count} is set but SLURM_ARRAY_TASK_ID is not: \
+                 expected both (or pass --shard I/N)"
+            )));
+        }
+        (Some(id), Some(count)) => (id, count),
+    };
+    if count == 0 {
+        return Err(Error::invalid(
+            "SLURM_ARRAY_TASK_COUNT=0: expected at least 1 task",
+        ));
+    }
+    let min = min.unwrap_or(0);
+    let Some(i) = id.checked_sub(min) else {
+        return Err(Error::invalid(format!(
+            "SLURM_ARRAY_TASK_MIN={min} is larger than SLURM_ARRAY_TASK_ID={id}"
+        )));
+    };
+    if i >= count {
+        return Err(Error::invalid(format!(
+            "SLURM_ARRAY_TASK_ID={id} (minus SLURM_ARRAY_TASK_MIN={min}) is not below \
+             SLURM_ARRAY_TASK_COUNT={count}: expected a contiguous array such as \
+             --array=0-{}, or pass --shard I/N",
+            count - 1
+        )));
+    }
+    Ok(Some((i, count)))
+}
+
+/// Whether this is a requeued Slurm task (SLURM_RESTART_COUNT > 0).
+fn slurm_requeued() -> Result<bool, Error> {
+    Ok(slurm_var("SLURM_RESTART_COUNT")?.is_some_and(|n| n > 0))
+}
+
+/// Reads a config file, keeping its text for the manifest.
+fn read_config(path: &Path) -> Result<(Config, ConfigRecord), Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    let file = path.display().to_string();
+    let mut config = Config::parse(&text, &file)?;
+    // The folder outside algorithms run in, as `Config::read` sets it.
+    config.dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    Ok((config, ConfigRecord::given(&text, &file)))
 }
 
 pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
-    let resume = a.resume.is_some();
-    let config = match (&a.config, &a.resume) {
-        (Some(path), _) => Config::read(path)?,
-        // A resumed run continues with the config it recorded.
-        (None, Some(dir)) => {
-            let path = dir.join("manifest.json");
-            let text = std::fs::read_to_string(&path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            let v: serde_json::Value = serde_json::from_str(&text)
-                .with_context(|| format!("parsing {}", path.display()))?;
-            let toml_text =
-                toml::to_string(&v["config"]).context("re-encoding the recorded config")?;
-            let mut config = Config::parse(&toml_text, &path.display().to_string())?;
-            if let Some(d) = v["config_dir"].as_str() {
-                config.dir = PathBuf::from(d);
-            }
-            config
-        }
-        (None, None) => Config::parse(harness::DEFAULT_CONFIG, "built-in default suite")?,
+    // An explicit --shard wins over the Slurm variables, which are then not read.
+    let given_shard = match a.shard {
+        Some(s) => Some(s),
+        None => slurm_shard()?,
     };
-    let shard = a.shard.or_else(slurm_shard);
-    let run_id = match &a.resume {
-        Some(dir) => harness::manifest::read_run_id(dir).unwrap_or_else(|| config.name.clone()),
+    // A requeued Slurm task reruns its command unchanged: it continues its directory.
+    let resume_dir = match (&a.resume, &a.out) {
+        (Some(dir), _) => Some(dir.clone()),
+        (None, Some(out)) if out.join("manifest.json").exists() && slurm_requeued()? => {
+            eprintln!(
+                "mowmill: requeued Slurm task (SLURM_RESTART_COUNT > 0): continuing {}",
+                out.display()
+            );
+            Some(out.clone())
+        }
+        _ => None,
+    };
+    let recorded = match &resume_dir {
+        Some(dir) if a.config.is_none() => Some(Recorded::read(dir)?),
+        Some(dir) => Recorded::read_if_exists(dir)?,
+        None => None,
+    };
+    let (config, record) = match (&a.config, &recorded) {
+        (Some(path), _) => read_config(path)?,
+        // A resumed run continues with the config text it recorded.
+        (None, Some(rec)) => {
+            let text = rec.config_toml()?;
+            let mut config =
+                Config::parse(&text, &format!("{} (config_toml)", rec.path.display()))?;
+            if let Some(d) = rec.config_dir() {
+                config.dir = d;
+            }
+            let record = ConfigRecord::given(&text, rec.config_file());
+            (config, record)
+        }
+        (None, None) => {
+            let file = "built-in default suite";
+            let config = Config::parse(harness::DEFAULT_CONFIG, file)?;
+            (config, ConfigRecord::given(harness::DEFAULT_CONFIG, file))
+        }
+    };
+    // A resumed shard keeps its shard; a different one is refused by the run.
+    let shard = match &recorded {
+        Some(rec) if given_shard.is_none() => rec.shard()?,
+        _ => given_shard,
+    };
+    let run_id = match recorded.as_ref().and_then(Recorded::run_id) {
+        Some(id) => id.to_string(),
         None => match std::env::var("SLURM_ARRAY_JOB_ID") {
             Ok(job) => format!("{}-slurm{job}", config.name),
             Err(_) => format!(
@@ -82,7 +202,7 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
             ),
         },
     };
-    let out = a.resume.clone().or(a.out.clone()).unwrap_or_else(|| {
+    let out = resume_dir.clone().or(a.out.clone()).unwrap_or_else(|| {
         let mut dir = PathBuf::from("results").join(&run_id);
         if let Some((i, n)) = shard {
             dir = dir.join(format!("shard-{i}-of-{n}"));
@@ -92,12 +212,12 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
     let opts = RunOptions {
         out: out.clone(),
         jobs: a.jobs,
-        resume,
+        resume: resume_dir.is_some(),
         shard,
         run_id,
         command_line: std::env::args().collect::<Vec<_>>().join(" "),
     };
-    let summary = harness::run::run(&config, &opts)?;
+    let summary = harness::run::run_recorded(&config, &record, &opts)?;
     eprintln!(
         "{} instances, {} rows written ({} with errors) -> {}",
         summary.instances,

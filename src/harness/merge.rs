@@ -1,10 +1,160 @@
 //! `mowmill merge`: combines the output directories of shards into one run whose
 //! `results.csv`, `stats.csv` and plots are those an unsharded run would have written.
+//!
+//! Before anything is written the shards are checked to be the complete, disjoint slices of
+//! one run: every manifest records the same config digest and the same shard count N, every
+//! shard index 0..N appears exactly once, every shard has finished (`end` set), and every
+//! `results.csv` ends on a complete line and holds the number of rows its manifest recorded.
+//! Otherwise the merge is refused with the list of what is wrong or missing.
 
+use super::manifest::Recorded;
 use super::rows::{Row, read_rows, write_sorted};
 use crate::error::{Error, Result};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+
+/// What the manifest of one shard says, once checked.
+struct Shard {
+    dir: PathBuf,
+    manifest: Recorded,
+    index: usize,
+    count: usize,
+    sha256: String,
+}
+
+/// Reads and checks one shard directory; problems are pushed onto `problems`.
+fn check_shard(dir: &Path, problems: &mut Vec<String>) -> Option<Shard> {
+    let manifest = match Recorded::read(dir) {
+        Ok(m) => m,
+        Err(e) => {
+            problems.push(format!("{}: not a finished run: {e}", dir.display()));
+            return None;
+        }
+    };
+    let at = manifest.path.display().to_string();
+    // An unsharded run is the one slice of itself.
+    let (index, count) = match manifest.shard() {
+        Ok(s) => s.unwrap_or((0, 1)),
+        Err(e) => {
+            problems.push(e.to_string());
+            return None;
+        }
+    };
+    let Some(sha256) = manifest.sha256().map(str::to_string) else {
+        problems.push(format!(
+            "{at}: records no config_sha256 (written by an older mowmill): resume it with \
+             this version to record it"
+        ));
+        return None;
+    };
+    let shard = Shard {
+        dir: dir.to_path_buf(),
+        manifest,
+        index,
+        count,
+        sha256,
+    };
+    // An unfinished or unreadable shard still counts as given, so it is not also reported
+    // missing.
+    if shard.manifest.json["end"].is_null() {
+        problems.push(format!(
+            "{at}: shard {index}/{count} has not finished (end is null): continue it with \
+             `mowmill bench --resume {}`",
+            dir.display()
+        ));
+        return Some(shard);
+    }
+    let Some(rows) = shard.manifest.json["rows"].as_u64() else {
+        problems.push(format!(
+            "{at}: records no rows count (written by an older mowmill)"
+        ));
+        return Some(shard);
+    };
+    let results = dir.join("results.csv");
+    match std::fs::read(&results) {
+        Err(e) => problems.push(format!("{}: {e}", results.display())),
+        Ok(bytes) if bytes.last().is_some_and(|&b| b != b'\n') => problems.push(format!(
+            "{}: truncated (does not end on a complete line)",
+            results.display()
+        )),
+        Ok(_) => match read_rows(&results) {
+            Err(e) => problems.push(e.to_string()),
+            Ok(r) if r.len() as u64 != rows => problems.push(format!(
+                "{}: {} rows, but its manifest records {rows}: truncated or changed after \
+                 the run",
+                results.display(),
+                r.len()
+            )),
+            Ok(_) => {}
+        },
+    }
+    Some(shard)
+}
+
+/// Checks that `shards` are the complete, disjoint slices of one config; the error lists
+/// every problem found.
+fn check_complete(dirs: &[PathBuf]) -> Result<Vec<Shard>> {
+    let mut problems = Vec::new();
+    let shards: Vec<Shard> = dirs
+        .iter()
+        .filter_map(|d| check_shard(d, &mut problems))
+        .collect();
+    if let Some(first) = shards.first() {
+        for s in &shards[1..] {
+            if s.sha256 != first.sha256 {
+                problems.push(format!(
+                    "{} has config {} (sha256 {}), but {} has config {} (sha256 {}): shards \
+                     of different configs",
+                    s.dir.display(),
+                    s.manifest.config_file(),
+                    s.sha256,
+                    first.dir.display(),
+                    first.manifest.config_file(),
+                    first.sha256
+                ));
+            }
+            if s.count != first.count {
+                problems.push(format!(
+                    "{} is a shard of {}, but {} is a shard of {}",
+                    s.dir.display(),
+                    s.count,
+                    first.dir.display(),
+                    first.count
+                ));
+            }
+        }
+        let n = first.count;
+        let mut by_index: BTreeMap<usize, Vec<&Path>> = BTreeMap::new();
+        for s in shards.iter().filter(|s| s.count == n) {
+            by_index.entry(s.index).or_default().push(&s.dir);
+        }
+        for (i, ds) in &by_index {
+            if ds.len() > 1 {
+                let names: Vec<String> = ds.iter().map(|d| d.display().to_string()).collect();
+                problems.push(format!(
+                    "shard {i}/{n} given {} times: {}",
+                    ds.len(),
+                    names.join(", ")
+                ));
+            }
+        }
+        let missing: Vec<String> = (0..n)
+            .filter(|i| !by_index.contains_key(i))
+            .map(|i| format!("{i}/{n}"))
+            .collect();
+        if !missing.is_empty() {
+            problems.push(format!("missing shard(s) {}", missing.join(", ")));
+        }
+    }
+    if problems.is_empty() {
+        Ok(shards)
+    } else {
+        Err(Error::invalid(format!(
+            "merge refused: the shards are not the complete, finished slices of one run:\n  {}",
+            problems.join("\n  ")
+        )))
+    }
+}
 
 /// Merges shard directories into `out`. Rows are keyed by (instance, algorithm, objective); a
 /// key present in two shards must agree apart from timing, else the merge is refused.
@@ -12,9 +162,14 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<usize> {
     if shards.is_empty() {
         return Err(Error::invalid("merge needs at least one shard directory"));
     }
-    let run_id = super::manifest::read_run_id(&shards[0]).unwrap_or_else(|| "merged".into());
+    let checked = check_complete(shards)?;
+    let run_id = checked[0]
+        .manifest
+        .run_id()
+        .map_or_else(|| "merged".to_string(), str::to_string);
     let mut rows: BTreeMap<(String, String, String), Row> = BTreeMap::new();
     std::fs::create_dir_all(out.join("instances")).map_err(|e| Error::io(out, e))?;
+    let _lock = super::lock::acquire(out)?;
     for dir in shards {
         for mut r in read_rows(&dir.join("results.csv"))? {
             r.run_id = run_id.clone();
@@ -44,21 +199,25 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<usize> {
     let n = rows.len();
     write_sorted(&out.join("results.csv"), &mut rows)?;
     super::run::finish(out)?;
+    let first = &checked[0].manifest.json;
+    let instances: Option<u64> = checked
+        .iter()
+        .map(|s| s.manifest.json["instances"].as_u64())
+        .sum();
     let manifest = serde_json::json!({
         "run_id": run_id,
         "merged_from": shards.iter().map(|d| d.display().to_string()).collect::<Vec<_>>(),
-        "shard_manifests": shards.iter().map(|d| {
-            std::fs::read_to_string(d.join("manifest.json")).ok()
-                .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
-        }).collect::<Vec<_>>(),
+        "shard_manifests": checked.iter().map(|s| &s.manifest.json).collect::<Vec<_>>(),
+        "config": first["config"],
+        "config_toml": first["config_toml"],
+        "config_file": first["config_file"],
+        "config_sha256": first["config_sha256"],
+        "shard": null,
+        "instances": instances,
+        "rows": n,
         "end": super::manifest::now(),
     });
-    let path = out.join("manifest.json");
-    std::fs::write(
-        &path,
-        serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n",
-    )
-    .map_err(|e| Error::io(&path, e))?;
+    super::manifest::write_json(out, &manifest)?;
     Ok(n)
 }
 

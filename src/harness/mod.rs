@@ -3,10 +3,12 @@
 //! Data flows one way: [`config`] expands a suite into instances; [`run`] generates them, runs
 //! the exact solvers and the registered algorithms, checks every output with the checker and
 //! appends [`rows`] to `results.csv`; [`stats`] aggregates the rows into `stats.csv`; [`plots`]
-//! draws them; [`gate`] compares a run with a committed baseline; [`merge`] joins shards.
+//! draws them; [`gate`] compares a run with a committed baseline; [`merge`] joins shards;
+//! [`lock`] keeps two runs out of one output directory.
 
 pub mod config;
 pub mod gate;
+pub mod lock;
 pub mod manifest;
 pub mod merge;
 pub mod plots;

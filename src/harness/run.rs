@@ -8,6 +8,7 @@
 //! inside an algorithm or solver becomes a row with `error` filled in, and the run goes on.
 
 use super::config::{Config, ExactSpec, InstanceSpec, Source};
+use super::manifest::{ConfigRecord, Finished, Recorded};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
 use crate::algorithms::{self, Objective};
 use crate::checker;
@@ -60,28 +61,67 @@ pub fn shard_of(instances: Vec<InstanceSpec>, shard: Option<(usize, usize)>) -> 
 }
 
 /// Runs a suite into `opts.out`: `results.csv` (appended as instances finish, sorted at the
-/// end), `instances/`, then `stats.csv`, plots and `manifest.json`.
+/// end), `instances/`, then `stats.csv`, plots and `manifest.json`. The config is recorded by
+/// its JSON encoding; [`run_recorded`] records the TOML text it was given.
 pub fn run(config: &Config, opts: &RunOptions) -> Result<RunSummary> {
+    run_recorded(config, &ConfigRecord::of_config(config), opts)
+}
+
+/// The most parallel jobs a run accepts: 16 per core this process may use (each job is a
+/// thread with its own solver, so more only costs memory and switching).
+pub fn max_jobs() -> usize {
+    16 * std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// Checks a `--jobs` value: at least 1 (leave `--jobs` out for all cores) and at most
+/// [`max_jobs`].
+pub fn check_jobs(jobs: usize) -> std::result::Result<usize, String> {
+    let max = max_jobs();
+    if jobs == 0 {
+        return Err("--jobs 0: expected at least 1 (omit --jobs to use all cores)".into());
+    }
+    if jobs > max {
+        return Err(format!(
+            "--jobs {jobs}: expected at most {max} (16 per available core)"
+        ));
+    }
+    Ok(jobs)
+}
+
+/// [`run`] with the config as given (`record`), which the manifest stores so that a resumed
+/// run continues with exactly this config and merge can tell shards of different configs
+/// apart. The output directory is locked for the duration of the run (see [`super::lock`]).
+pub fn run_recorded(
+    config: &Config,
+    record: &ConfigRecord,
+    opts: &RunOptions,
+) -> Result<RunSummary> {
+    if let Some(jobs) = opts.jobs {
+        check_jobs(jobs).map_err(Error::invalid)?;
+    }
     let instances = shard_of(config.instances()?, opts.shard);
     let out = &opts.out;
     std::fs::create_dir_all(out.join("instances")).map_err(|e| Error::io(out, e))?;
+    let _lock = super::lock::acquire(out)?;
     let results = out.join("results.csv");
-    let existing: Vec<Row> = if opts.resume && results.exists() {
-        super::rows::truncate_partial_line(&results)?;
-        read_rows(&results)?
-    } else {
-        Vec::new()
-    };
     if !opts.resume && results.exists() {
         return Err(Error::invalid(format!(
             "{} already exists: pass --resume to continue that run, or choose another --out",
             results.display()
         )));
     }
+    let existing: Vec<Row> = if opts.resume && results.exists() {
+        check_same_run(out, config, record, opts)?;
+        super::rows::truncate_partial_line(&results)?;
+        upgrade_header(&results)?;
+        read_rows(&results)?
+    } else {
+        Vec::new()
+    };
     let done: HashMap<(String, String, String), Row> =
         existing.into_iter().map(|r| (r.key(), r)).collect();
     let started = super::manifest::now();
-    super::manifest::write(out, config, opts, &started, None)?;
+    super::manifest::write(out, config, record, opts, &started, None)?;
 
     let writer = Mutex::new(RowWriter::open(&results)?);
     let progress = super::progress::bar(instances.len() as u64);
@@ -112,8 +152,13 @@ pub fn run(config: &Config, opts: &RunOptions) -> Result<RunSummary> {
         return Err(e);
     }
     let (rows_written, errors) = counts.into_inner().expect("count lock");
-    finish(out)?;
-    super::manifest::write(out, config, opts, &started, Some(&super::manifest::now()))?;
+    let rows = finish(out)?;
+    let finished = Finished {
+        end: &super::manifest::now(),
+        instances: instances.len(),
+        rows,
+    };
+    super::manifest::write(out, config, record, opts, &started, Some(finished))?;
     Ok(RunSummary {
         instances: instances.len(),
         rows_written,
@@ -121,13 +166,105 @@ pub fn run(config: &Config, opts: &RunOptions) -> Result<RunSummary> {
     })
 }
 
-/// Sorts `results.csv` into canonical order and derives `stats.csv` and the plots from it.
-pub fn finish(out: &Path) -> Result<()> {
+/// Sorts `results.csv` into canonical order and derives `stats.csv` and the plots from it;
+/// returns the number of rows.
+pub fn finish(out: &Path) -> Result<usize> {
     let results = out.join("results.csv");
     let mut rows = read_rows(&results)?;
     write_sorted(&results, &mut rows)?;
     super::stats::write(&out.join("stats.csv"), &super::stats::compute(&rows))?;
-    super::plots::draw_all(out, &rows)
+    super::plots::draw_all(out, &rows)?;
+    Ok(rows.len())
+}
+
+/// Refuses to resume `out` with another config or another shard than the run recorded in
+/// `out/manifest.json` (a directory without a manifest has nothing to compare).
+fn check_same_run(
+    out: &Path,
+    config: &Config,
+    record: &ConfigRecord,
+    opts: &RunOptions,
+) -> Result<()> {
+    let Some(recorded) = Recorded::read_if_exists(out)? else {
+        return Ok(());
+    };
+    let same_config = match recorded.sha256() {
+        Some(sha) => sha == record.sha256,
+        // Manifests from before the digest: compare the resolved configs.
+        None => serde_json::to_value(config).ok().as_ref() == Some(&recorded.json["config"]),
+    };
+    if !same_config {
+        return Err(Error::invalid(format!(
+            "cannot resume {}: its manifest records config {} (sha256 {}), this run has \
+             config {} (sha256 {}); resume without --config to continue with the recorded \
+             one, or choose another --out",
+            out.display(),
+            recorded.config_file(),
+            recorded.sha256().unwrap_or("not recorded"),
+            record.file,
+            record.sha256
+        )));
+    }
+    let shard = recorded.shard()?;
+    if shard != opts.shard {
+        let show =
+            |s: Option<(usize, usize)>| s.map_or("none".to_string(), |(i, n)| format!("{i}/{n}"));
+        return Err(Error::invalid(format!(
+            "cannot resume {}: its manifest records shard {}, this run asks for shard {} \
+             (--shard or SLURM_ARRAY_TASK_*); resume a shard with its own shard",
+            out.display(),
+            show(shard),
+            show(opts.shard)
+        )));
+    }
+    Ok(())
+}
+
+/// The header line `RowWriter` writes (the current columns, a contract).
+fn current_header() -> Result<String> {
+    let mut w = csv::WriterBuilder::new()
+        .has_headers(true)
+        .from_writer(Vec::new());
+    w.serialize(Row::default())
+        .map_err(|e| Error::invalid(e.to_string()))?;
+    let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
+    let text = String::from_utf8_lossy(&bytes).into_owned();
+    Ok(text.lines().next().unwrap_or_default().to_string())
+}
+
+/// A `results.csv` written by an older mowmill (without the option columns `merge`, `cutter`,
+/// `coverage4` appended after `error`) is rewritten in the current header before rows are
+/// appended to it, so that no row lands under the wrong column; the old rows get empty option
+/// columns (an old run did not record them). Any other header is refused.
+fn upgrade_header(results: &Path) -> Result<()> {
+    let text = std::fs::read_to_string(results).map_err(|e| Error::io(results, e))?;
+    let header = text.lines().next().unwrap_or_default();
+    let current = current_header()?;
+    if header.is_empty() || header == current {
+        return Ok(());
+    }
+    let columns: Vec<&str> = current.split(',').collect();
+    let given: Vec<&str> = header.split(',').collect();
+    // Only a prefix of today's columns ending at `error` is a known older layout.
+    let known_old = given.len() < columns.len()
+        && given[..] == columns[..given.len()]
+        && given.last() == Some(&"error");
+    if !known_old {
+        return Err(Error::parse(
+            &results.display().to_string(),
+            1,
+            1,
+            format!("expected the results.csv header {current:?}, got {header:?}"),
+        ));
+    }
+    let mut rows = read_rows(results)?;
+    write_sorted(results, &mut rows)?;
+    eprintln!(
+        "mowmill: {} had the header of an older mowmill: rewritten with the columns {}",
+        results.display(),
+        columns[given.len()..].join(", ")
+    );
+    Ok(())
 }
 
 /// Runs every exact objective and algorithm of one instance; never fails: problems become
