@@ -14,7 +14,7 @@
 # (scripts/compare-runs.py: every row apart from seconds and run_id, and stats.csv).
 #
 # Knobs: MOWMILL_SLURM_REFERENCE (see above), MOWMILL_SLURM_KILL_TASK (the task to requeue,
-# default 1), MOWMILL_SLURM_TIMEOUT (seconds the array may take, default 900),
+# default 1; `none` runs the array without killing anything), MOWMILL_SLURM_TIMEOUT (seconds the array may take, default 900),
 # MOWMILL_SLURM_KEEP=1 (keep the temporary directory and the shard directories on success too).
 # Needs target/release/mowmill (cargo build --release) and python3.
 set -euo pipefail
@@ -44,7 +44,6 @@ if ((${#need[@]})); then
   # not used either way; this script starts its own daemons from its own configuration.
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends slurm-wlm munge
 fi
-say "$(sbatch --version), munge $(munged --version 2>&1 | awk '{print $2; exit}')"
 
 # --- The cluster: one node (this host), all state, logs and sockets in a temporary directory.
 tmp=$(mktemp -d /tmp/mowmill-slurm.XXXXXX)
@@ -66,8 +65,9 @@ print(*[x.getsockname()[1] for x in s])')
 # Job ids start at a value derived from the clock so that results/ci-slurm<JOBID>/ (written by
 # slurm-array.sh into the checkout) cannot be a leftover of an earlier test run.
 first_job=$(( $(date +%s) % 50000000 + 1000000 ))
-mkdir -p "$tmp/munge" "$tmp/state" "$tmp/spool" "$tmp/logs"
-chmod 700 "$tmp/munge"
+# The key is private to this user; the socket's folder must be reachable by every user.
+mkdir -p "$tmp/munge" "$tmp/munge-key" "$tmp/state" "$tmp/spool" "$tmp/logs"
+chmod 700 "$tmp/munge-key"
 conf=$tmp/slurm.conf
 cat >"$conf" <<EOF
 # Written by scripts/slurm-test.sh: a one-node cluster on $host for one test run.
@@ -79,7 +79,8 @@ SlurmUser=$user
 SlurmdUser=$user
 AuthType=auth/munge
 CredType=cred/munge
-AuthInfo=socket=$tmp/munge/munge.socket
+# cred_expire is also how long a requeued job waits before it may start again (default 120 s).
+AuthInfo=socket=$tmp/munge/munge.socket,cred_expire=10
 StateSaveLocation=$tmp/state
 SlurmdSpoolDir=$tmp/spool
 SlurmctldPidFile=$tmp/slurmctld.pid
@@ -105,11 +106,15 @@ JobCompType=jobcomp/none
 # Short waits: a signalled task is killed after 5 s, a finished job is kept 10 minutes.
 KillWait=5
 MinJobAge=600
+# The builtin scheduler looks at pending jobs on events and every sched_interval seconds (default
+# 60): a requeued task becomes eligible without an event, so look often.
 SchedulerType=sched/builtin
+SchedulerParameters=sched_interval=2
 NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$mem State=UNKNOWN
 PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
 EOF
 export SLURM_CONF=$conf
+say "$(sbatch --version), $(munged --version 2>&1 | awk '{print $1; exit}')"
 
 job=""
 sbatch_pid=""
@@ -162,11 +167,11 @@ wait_for() {
 }
 
 # munged with its own key and socket: the machine's /etc/munge is neither needed nor touched.
-dd if=/dev/urandom of="$tmp/munge/munge.key" bs=1024 count=1 status=none
-chmod 400 "$tmp/munge/munge.key"
-munged --key-file="$tmp/munge/munge.key" --socket="$tmp/munge/munge.socket" \
-  --pid-file="$tmp/munged.pid" --log-file="$tmp/logs/munged.log" --seed-file="$tmp/munge/seed" \
-  --force
+dd if=/dev/urandom of="$tmp/munge-key/munge.key" bs=1024 count=1 status=none
+chmod 400 "$tmp/munge-key/munge.key"
+munged --key-file="$tmp/munge-key/munge.key" --socket="$tmp/munge/munge.socket" \
+  --pid-file="$tmp/munged.pid" --log-file="$tmp/logs/munged.log" \
+  --seed-file="$tmp/munge-key/seed"
 wait_for 10 test -S "$tmp/munge/munge.socket" || { say "munged did not start"; exit 1; }
 slurmctld -f "$conf"
 wait_for 30 scontrol ping >/dev/null 2>&1 || { say "slurmctld did not answer"; exit 1; }
@@ -189,37 +194,41 @@ job=$(head -n 1 "$tmp/sbatch.out" | cut -d';' -f1)
 [ -n "$job" ] || { say "sbatch failed: $(cat "$tmp/sbatch.err")"; exit 1; }
 run_dir=results/ci-slurm$job
 shard=$run_dir/shard-$kill_task-of-$ntasks
-say "submitted array job $job ($ntasks tasks); will requeue task $kill_task ($shard)"
+say "submitted array job $job ($ntasks tasks); task to requeue: $kill_task"
 
-# --- Kill task $kill_task midway. Rows are flushed per instance and a shard takes seconds, so
-# the task is frozen (SIGSTOP) the moment its first rows appear: the requeue then certainly
-# lands midway, not after the task has finished.
-rows_in() { [ -f "$1" ] && echo $(( $(wc -l <"$1") - 1 )) || echo 0; }
-deadline=$(( $(date +%s) + 300 ))
-pid=""
-while :; do
-  if (( $(rows_in "$shard/results.csv") > 0 )); then
-    pid=$(pgrep -f "mowmill bench .*$shard( |\$)" | head -n 1 || true)
-    [ -z "$pid" ] || { kill -STOP "$pid"; break; }
+if [ "$kill_task" != none ]; then
+  # --- Kill task $kill_task midway. Rows are flushed per instance and a shard takes seconds, so
+  # the task is frozen (SIGSTOP) the moment its first rows appear: the requeue then certainly
+  # lands midway, not after the task has finished.
+  rows_in() { [ -f "$1" ] && echo $(( $(wc -l <"$1") - 1 )) || echo 0; }
+  deadline=$(( $(date +%s) + 300 ))
+  pid=""
+  while :; do
+    if (( $(rows_in "$shard/results.csv") > 0 )); then
+      pid=$(pgrep -f "mowmill bench .*$shard( |\$)" | head -n 1 || true)
+      [ -z "$pid" ] || { kill -STOP "$pid"; break; }
+    fi
+    kill -0 "$sbatch_pid" 2>/dev/null || { say "the array ended before task $kill_task wrote rows"; exit 1; }
+    (( $(date +%s) < deadline )) || { say "task $kill_task wrote no rows within 300 s"; exit 1; }
+    sleep 0.01
+  done
+  # The frozen task must not have finished: its manifest has no end time until the run is done.
+  if ! grep -q '"end": null' "$shard/manifest.json"; then
+    kill -CONT "$pid"
+    say "task $kill_task had already finished its run when frozen; nothing midway to requeue"
+    exit 1
   fi
-  kill -0 "$sbatch_pid" 2>/dev/null || { say "the array ended before task $kill_task wrote rows"; exit 1; }
-  (( $(date +%s) < deadline )) || { say "task $kill_task wrote no rows within 300 s"; exit 1; }
-  sleep 0.01
-done
-# The frozen task must not have finished: its manifest has no end time until the run is done.
-if ! grep -q '"end": null' "$shard/manifest.json"; then
-  kill -CONT "$pid"
-  say "task $kill_task had already finished its run when frozen; nothing midway to requeue"
-  exit 1
+  # A row cut in half by the SIGSTOP is not written yet (resume drops it), so it is left out.
+  python3 -c 'import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], "w").write(t[:t.rfind("\n") + 1])' \
+    "$shard/results.csv" "$tmp/before-requeue.csv"
+  before=$(rows_in "$tmp/before-requeue.csv")
+  task_job=$(squeue -h -j "${job}_$kill_task" -o %A)
+  say "task $kill_task (job $task_job, pid $pid) frozen after $before rows; requeueing it"
+  scontrol requeue "${job}_$kill_task"
+  # The requeue kills the frozen process (SIGCONT, SIGTERM, then SIGKILL after KillWait).
+  wait_for 30 bash -c "! kill -0 $pid 2>/dev/null" || { say "pid $pid survived the requeue"; exit 1; }
+  say "task $kill_task killed: $(squeue -h -j "${job}_$kill_task" -o '%T %r' 2>/dev/null || true)"
 fi
-cp "$shard/results.csv" "$tmp/before-requeue.csv"
-before=$(rows_in "$tmp/before-requeue.csv")
-task_job=$(squeue -h -j "${job}_$kill_task" -o %A)
-say "task $kill_task (job $task_job, pid $pid) frozen after $before rows; requeueing it"
-scontrol requeue "${job}_$kill_task"
-# The requeue kills the frozen process (SIGCONT, SIGTERM, then SIGKILL after KillWait).
-wait_for 30 bash -c "! kill -0 $pid 2>/dev/null" || { say "pid $pid survived the requeue"; exit 1; }
-say "task $kill_task killed: $(squeue -h -j "${job}_$kill_task" -o '%T %r' 2>/dev/null || true)"
 
 # --- Wait for the whole array, requeued task included.
 end=$(( $(date +%s) + timeout ))
@@ -237,16 +246,18 @@ for k in $(seq 0 $((ntasks - 1))); do
   tail -n 3 "$tmp/logs/task-${job}_$k.log" >&2 || true
 done
 [ "$sbatch_rc" = 0 ] || { say "sbatch --wait exited $sbatch_rc: a task failed (logs above)"; exit 1; }
-restarts=$(scontrol show job "${job}_$kill_task" | grep -oE 'Restarts=[0-9]+' | cut -d= -f2)
-[ "${restarts:-0}" -ge 1 ] || { say "task $kill_task was never requeued (Restarts=$restarts)"; exit 1; }
+if [ "$kill_task" != none ]; then
+  restarts=$(scontrol show job "${job}_$kill_task" | grep -oE 'Restarts=[0-9]+' | cut -d= -f2)
+  [ "${restarts:-0}" -ge 1 ] || { say "task $kill_task was never requeued (Restarts=$restarts)"; exit 1; }
 
-# --- Resume check: the requeued task kept the rows written before the kill (same timings, so not
-# recomputed) and wrote no row twice.
-python3 - "$tmp/before-requeue.csv" "$shard/results.csv" <<'EOF' || { say "task $kill_task did not resume correctly"; exit 1; }
+  # --- Resume check: the requeued task kept the rows written before the kill (same timings, so not
+  # recomputed) and wrote no row twice.
+  python3 - "$tmp/before-requeue.csv" "$shard/results.csv" <<'EOF' || { say "task $kill_task did not resume correctly"; exit 1; }
 import csv, sys
 key = lambda r: (r["instance"], r["algorithm"], r["objective"])
-before = list(csv.DictReader(open(sys.argv[1], newline="")))
-after = list(csv.DictReader(open(sys.argv[2], newline="")))
+# Timings compared as numbers: the final sort rewrites results.csv.
+rows = lambda p: [{**r, "seconds": float(r["seconds"])} for r in csv.DictReader(open(p, newline=""))]
+before, after = rows(sys.argv[1]), rows(sys.argv[2])
 seen, bad = {}, []
 for r in after:
     if key(r) in seen:
@@ -261,6 +272,7 @@ for r in before:
 print("\n".join(bad) or f"resume: {len(before)} rows from before the kill kept, {len(after) - len(before)} added, none twice")
 sys.exit(1 if bad else 0)
 EOF
+fi
 
 # --- Merge the shards, and compare with an unsharded run.
 "$bin" merge "$run_dir"/shard-*-of-$ntasks --out "$tmp/merged"
@@ -271,4 +283,8 @@ if [ -z "$ref" ]; then
 fi
 python3 scripts/compare-runs.py "$tmp/merged" "$ref"
 ok=1
-say "passed: $ntasks shards (task $kill_task killed after $before rows and requeued) merge to the unsharded run"
+if [ "$kill_task" != none ]; then
+  say "passed: task $kill_task killed after $before rows, requeued and resumed; the $ntasks shards merge to the unsharded run"
+else
+  say "passed (no task killed): the $ntasks shards merge to the unsharded run"
+fi
