@@ -213,7 +213,8 @@ if [ "$kill_task" != none ]; then
     sleep 0.01
   done
   # The frozen task must not have finished: its manifest has no end time until the run is done.
-  if ! grep -q '"end": null' "$shard/manifest.json"; then
+  if ! python3 -c 'import json, sys; sys.exit(json.load(open(sys.argv[1])).get("end") is not None)' \
+    "$shard/manifest.json"; then
     kill -CONT "$pid"
     say "task $kill_task had already finished its run when frozen; nothing midway to requeue"
     exit 1
