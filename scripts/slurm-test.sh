@@ -13,9 +13,10 @@
 # write none twice); then `mowmill merge` the 4 shards and compare with the unsharded run
 # (scripts/compare-runs.py: every row apart from seconds and run_id, and stats.csv).
 #
-# Knobs: MOWMILL_SLURM_REFERENCE (see above), MOWMILL_SLURM_KILL_TASK (the task to requeue,
-# default 1; `none` runs the array without killing anything), MOWMILL_SLURM_TIMEOUT (seconds the array may take, default 900),
-# MOWMILL_SLURM_KEEP=1 (keep the temporary directory and the shard directories on success too).
+# Knobs: MOWMILL_SLURM_REFERENCE (see above); MOWMILL_SLURM_KILL_TASK, the task to requeue
+# (0-3, default 1; `none` runs the array without killing anything); MOWMILL_SLURM_TIMEOUT,
+# the seconds the array may take (default 900); MOWMILL_SLURM_KEEP=1 keeps the temporary
+# directory and the shard directories on success too (they are always kept on failure).
 # Needs target/release/mowmill (cargo build --release) and python3.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +31,10 @@ ref=${MOWMILL_SLURM_REFERENCE:-}
 kill_task=${MOWMILL_SLURM_KILL_TASK:-1}
 timeout=${MOWMILL_SLURM_TIMEOUT:-900}
 ntasks=4
+case $kill_task in
+  none | [0-3]) ;;
+  *) say "MOWMILL_SLURM_KILL_TASK=$kill_task: expected 0 to $((ntasks - 1)) or none"; exit 2 ;;
+esac
 
 # --- Install what is missing (same style as scripts/setup.sh: apt-get, sudo only if not root).
 need=()
@@ -47,8 +52,58 @@ if ((${#need[@]})); then
 fi
 
 # --- The cluster: one node (this host), all state, logs and sockets in a temporary directory.
+# Under /tmp, not $TMPDIR: the munge socket's path must stay short (a Unix socket path has at
+# most 107 bytes).
 tmp=$(mktemp -d /tmp/mowmill-slurm.XXXXXX)
+# munged wants every folder above its socket reachable by every user.
 chmod 755 "$tmp"
+job=""
+sbatch_pid=""
+ok=0
+# Stops everything this script started, in reverse order, whatever the exit path.
+cleanup() {
+  local rc=$?
+  set +e
+  # A job whose sbatch --wait has not returned may still run: cancel it, and give its processes
+  # (children of slurmstepd, not of this script) time to go.
+  if [ -n "$job" ] && [ -n "$sbatch_pid" ]; then
+    scancel "$job" 2>/dev/null
+    for _ in $(seq 50); do
+      [ -z "$(squeue -h -j "$job" -t PD,R,S,CG,CF -o %A 2>/dev/null)" ] && break
+      sleep 0.2
+    done
+  fi
+  [ -z "$sbatch_pid" ] || kill "$sbatch_pid" 2>/dev/null
+  # The two Slurm daemons stop together (each takes 1-2 s), then munged, which they use.
+  local group name pid pids
+  for group in "slurmd slurmctld" munged; do
+    pids=()
+    for name in $group; do
+      [ -f "$tmp/$name.pid" ] || continue
+      pid=$(cat "$tmp/$name.pid")
+      kill "$pid" 2>/dev/null && pids+=("$pid")
+    done
+    for pid in "${pids[@]}"; do
+      for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
+      kill -0 "$pid" 2>/dev/null && kill -KILL "$pid" 2>/dev/null
+    done
+  done
+  if [ "$ok" = 1 ] && [ "${MOWMILL_SLURM_KEEP:-0}" != 1 ]; then
+    rm -rf "$tmp"
+    [ -z "$job" ] || rm -rf "results/ci-slurm$job"
+  else
+    say "kept $tmp (config, daemon logs, task logs)$([ -d "results/ci-slurm$job" ] && echo " and results/ci-slurm$job")"
+    for f in "$tmp"/logs/*.log; do
+      [ "$ok" = 1 ] || { echo "--- last lines of $f" >&2; tail -n 15 "$f" >&2; }
+    done
+  fi
+  say "wall time $(( $(date +%s) - started )) s"
+  exit "$rc"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
 host=$(hostname -s)
 user=$(id -un)
 # At most two CPUs, so that at most two tasks (each --cpus-per-task=1, hence --jobs 1) run at
@@ -119,52 +174,6 @@ EOF
 export SLURM_CONF=$conf
 say "$(sbatch --version), $(munged --version 2>&1 | awk '{print $1; exit}')"
 
-job=""
-sbatch_pid=""
-ok=0
-# Stops everything this script started, in reverse order, whatever the exit path.
-cleanup() {
-  local rc=$?
-  set +e
-  # A job whose sbatch --wait has not returned may still run: cancel it, and give its processes
-  # (children of slurmstepd, not of this script) time to go.
-  if [ -n "$job" ] && [ -n "$sbatch_pid" ]; then
-    scancel "$job" 2>/dev/null
-    for _ in $(seq 50); do
-      [ -z "$(squeue -h -j "$job" -t PD,R,S,CG,CF -o %A 2>/dev/null)" ] && break
-      sleep 0.2
-    done
-  fi
-  [ -z "$sbatch_pid" ] || kill "$sbatch_pid" 2>/dev/null
-  # The two Slurm daemons stop together (each takes 1-2 s), then munged, which they use.
-  local group name pid pids
-  for group in "slurmd slurmctld" munged; do
-    pids=()
-    for name in $group; do
-      [ -f "$tmp/$name.pid" ] || continue
-      pid=$(cat "$tmp/$name.pid")
-      kill "$pid" 2>/dev/null && pids+=("$pid")
-    done
-    for pid in "${pids[@]}"; do
-      for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.2; done
-      kill -0 "$pid" 2>/dev/null && kill -KILL "$pid" 2>/dev/null
-    done
-  done
-  if [ "$ok" = 1 ] && [ "${MOWMILL_SLURM_KEEP:-0}" != 1 ]; then
-    rm -rf "$tmp"
-    [ -z "$job" ] || rm -rf "results/ci-slurm$job"
-  else
-    say "kept $tmp (config, daemon logs, task logs)${job:+ and results/ci-slurm$job}"
-    for f in "$tmp"/logs/*.log; do
-      [ "$ok" = 1 ] || { echo "--- last lines of $f" >&2; tail -n 15 "$f" >&2; }
-    done
-  fi
-  say "wall time $(( $(date +%s) - started )) s"
-  exit "$rc"
-}
-trap cleanup EXIT
-trap 'exit 130' INT
-trap 'exit 143' TERM
 
 # Waits up to $1 seconds for the command $2... to succeed.
 wait_for() {
@@ -199,7 +208,7 @@ MOWMILL_CONFIG=experiments/ci.toml sbatch --wait --parsable --array=0-$((ntasks 
   scripts/slurm-array.sh >"$tmp/sbatch.out" 2>"$tmp/sbatch.err" &
 sbatch_pid=$!
 has_job() { [ -s "$tmp/sbatch.out" ] || ! kill -0 "$sbatch_pid" 2>/dev/null; }
-wait_for 30 has_job
+wait_for 30 has_job || { say "sbatch printed no job id within 30 s"; exit 1; }
 job=$(head -n 1 "$tmp/sbatch.out" | cut -d';' -f1)
 [ -n "$job" ] || { say "sbatch failed: $(cat "$tmp/sbatch.err")"; exit 1; }
 run_dir=results/ci-slurm$job
