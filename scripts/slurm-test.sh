@@ -270,7 +270,8 @@ say "array $job finished: sbatch --wait exited $sbatch_rc"
 for k in $(seq 0 $((ntasks - 1))); do
   state=$(scontrol show job "${job}_$k" 2>/dev/null | grep -oE '(JobState|Restarts|ExitCode)=[^ ]*' | tr '\n' ' ' || true)
   echo "--- task $k: ${state:-(record already purged)}" >&2
-  tail -n 3 "$tmp/logs/task-${job}_$k.log" >&2 || true
+  # Each attempt's summary line, the kill and any error (the full log stays in $tmp/logs).
+  grep -E 'rows written|CANCELLED|error:|lock' "$tmp/logs/task-${job}_$k.log" >&2 || true
 done
 [ "$sbatch_rc" = 0 ] || { say "sbatch --wait exited $sbatch_rc: a task failed (logs above)"; exit 1; }
 if [ "$kill_task" != none ]; then
@@ -306,8 +307,8 @@ fi
 "$bin" merge "$run_dir"/shard-*-of-$ntasks --out "$tmp/merged"
 if [ -z "$ref" ]; then
   ref=$tmp/unsharded
-  say "running the unsharded CI suite into $ref"
-  "$bin" bench --config experiments/ci.toml --out "$ref" --jobs "$cpus"
+  say "running the unsharded CI suite into $ref (log: $tmp/logs/unsharded.log)"
+  "$bin" bench --config experiments/ci.toml --out "$ref" --jobs "$cpus" >"$tmp/logs/unsharded.log" 2>&1
 fi
 python3 scripts/compare-runs.py "$tmp/merged" "$ref"
 ok=1
