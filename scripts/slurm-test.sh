@@ -174,7 +174,6 @@ EOF
 export SLURM_CONF=$conf
 say "$(sbatch --version), $(munged --version 2>&1 | awk '{print $1; exit}')"
 
-
 # Waits up to $1 seconds for the command $2... to succeed.
 wait_for() {
   local secs=$1; shift
