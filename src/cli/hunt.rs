@@ -73,6 +73,10 @@ pub struct HuntArgs {
     /// Seconds per exact solve.
     #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
     pub exact_time_limit: f64,
+    /// `anneal` (the search) or `random` (independent generated regions, the baseline a
+    /// search must beat).
+    #[arg(long, default_value = "anneal", value_parser = ["anneal", "random"])]
+    pub strategy: String,
     /// Merge strategy of cycle covers.
     #[arg(long, default_value = "smart", value_parser = algorithms::Merge::NAMES)]
     pub merge: String,
@@ -198,6 +202,11 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         chains: a.chains,
         patience: a.patience,
         exact_time_limit: a.exact_time_limit,
+        strategy: if a.strategy == "random" {
+            hunt::Strategy::Random
+        } else {
+            hunt::Strategy::Anneal
+        },
     };
     let out = a.out.clone().unwrap_or_else(|| {
         let stamp = mowmill::harness::manifest::now().replace([':', '-'], "");
@@ -235,6 +244,7 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         },
         "seed": opts.seed,
         "chains": opts.chains,
+        "strategy": a.strategy,
         "patience": opts.patience,
         "exact_time_limit": opts.exact_time_limit,
         "options": evaluate_options(&opts.options),

@@ -67,6 +67,15 @@ pub enum Stop {
     Seconds(f64),
 }
 
+/// How candidates are drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Strategy {
+    /// Simulated annealing over local moves (the hunt).
+    Anneal,
+    /// Independent regions from the family's generator: the baseline a hunt must beat.
+    Random,
+}
+
 /// The shape constraint every candidate keeps, from the family.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Shape {
@@ -132,6 +141,7 @@ pub struct HuntOptions {
     /// Seconds per exact solve; a solve that does not prove its optimum makes the candidate's
     /// ratio undecided (recorded, never accepted as a new best).
     pub exact_time_limit: f64,
+    pub strategy: Strategy,
 }
 
 /// One evaluated candidate (a line of `hunt.csv`).
@@ -181,6 +191,10 @@ pub struct HuntReport {
     pub seconds: f64,
 }
 
+/// The share of the evaluations (or of the budget) spent sampling the generator before the
+/// chains start.
+const EXPLORE: f64 = 0.3;
+
 /// The canonical key of a region up to the 8 symmetries of the square and translation.
 pub fn canonical(r: &Region) -> String {
     Symmetry::all()
@@ -199,11 +213,15 @@ enum Move {
     CloseHole,
     Stretch,
     Mirror,
+    Arm,
+    Cut,
 }
 
-const MOVES: [(Move, u32); 7] = [
-    (Move::AddPixel, 30),
-    (Move::RemovePixel, 30),
+const MOVES: [(Move, u32); 9] = [
+    (Move::AddPixel, 24),
+    (Move::RemovePixel, 24),
+    (Move::Arm, 8),
+    (Move::Cut, 8),
     (Move::Flip2x2, 12),
     (Move::OpenHole, 6),
     (Move::CloseHole, 6),
@@ -227,13 +245,28 @@ fn pick_move(rng: &mut ChaCha8Rng) -> Move {
 fn neighbour(r: &Region, rng: &mut ChaCha8Rng) -> Option<Region> {
     let mut set: BTreeSet<Pixel> = r.pixels().iter().copied().collect();
     let any = |rng: &mut ChaCha8Rng| r.pixel(rng.random_range(0..r.len()));
-    match pick_move(rng) {
+    let mv = pick_move(rng);
+    match mv {
         Move::AddPixel => {
             let p = any(rng);
             set.insert(topology::ring(p)[2 * rng.random_range(0..4usize)]);
         }
         Move::RemovePixel => {
             set.remove(&any(rng));
+        }
+        Move::Arm | Move::Cut => {
+            // A straight run of 2..=5 cells from a pixel: added (a corridor grows out of the
+            // region) or removed (a notch or a cut).
+            let p = any(rng);
+            let (dx, dy) = [(1, 0), (-1, 0), (0, 1), (0, -1)][rng.random_range(0..4usize)];
+            for k in 1..=rng.random_range(2..=5) {
+                let q = Pixel::new(p.x + k * dx, p.y + k * dy);
+                if matches!(mv, Move::Arm) {
+                    set.insert(q);
+                } else {
+                    set.remove(&Pixel::new(q.x - dx, q.y - dy));
+                }
+            }
         }
         Move::Flip2x2 => {
             let p = any(rng);
@@ -607,6 +640,10 @@ pub fn hunt(
     let mut seen_findings: BTreeSet<(String, String)> = BTreeSet::new();
     let mut evaluation = 0usize;
     let mut first_round = true;
+    let mut seeded = false;
+    let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
+    // The search keeps more distinct worst regions than it saves, to seed and restart chains.
+    let pool = opts.keep.max(2 * chains_n);
     loop {
         let remaining = match opts.stop {
             Stop::Evaluations(k) => k.saturating_sub(evaluation),
@@ -628,6 +665,26 @@ pub fn hunt(
             Stop::Seconds(_) => 5000.0,
         };
         let progress = (evaluation as f64 / total).min(1.0);
+        // The first part of the budget samples the generator widely; the chains then start
+        // from the worst distinct regions it found.
+        let exploring = opts.strategy == Strategy::Random
+            || match opts.stop {
+                Stop::Evaluations(k) => (evaluation as f64) < EXPLORE * k as f64,
+                Stop::Seconds(s) => start.elapsed().as_secs_f64() < EXPLORE * s,
+            };
+        if !exploring && !seeded {
+            seeded = true;
+            for (k, ch) in chains.iter_mut().enumerate() {
+                if k >= opts.starts.len()
+                    && let Some((_, f)) = worst.get(k - opts.starts.len())
+                {
+                    ch.region = f.region.clone();
+                    ch.ratio = f.ratio;
+                    ch.best = f.ratio;
+                }
+                ch.since_best = 0;
+            }
+        }
         let temperature = 0.05 * (0.02f64).powf(progress);
         // (candidate, acceptance threshold, screen threshold)
         let proposals: Vec<(Region, f64, f64)> = chains[..active]
@@ -636,10 +693,18 @@ pub fn hunt(
                 if first_round {
                     return (ch.region.clone(), f64::NEG_INFINITY, f64::NEG_INFINITY);
                 }
-                let candidate = (0..100)
+                if exploring {
+                    let r = generated(subject, shape, opts, &mut ch.rng)
+                        .unwrap_or_else(|| ch.region.clone());
+                    return (r, f64::NEG_INFINITY, best);
+                }
+                // A neighbour not evaluated before (up to symmetry): the algorithm is
+                // deterministic, so a second evaluation of a region would teach nothing.
+                let candidate = (0..200)
                     .find_map(|_| {
                         neighbour(&ch.region, &mut ch.rng)
                             .filter(|r| admissible(subject, shape, opts, r))
+                            .filter(|r| !seen.contains(&canonical(r)))
                     })
                     .unwrap_or_else(|| ch.region.clone());
                 // Metropolis: accept a ratio r with probability min(1, exp((r - current) / T)),
@@ -657,7 +722,7 @@ pub fn hunt(
         for (k, (out, accept)) in outcomes.into_iter().enumerate() {
             evaluation += 1;
             let ch = &mut chains[k];
-            let accepted = out.ratio.is_some_and(|r| r >= accept);
+            let accepted = !exploring && out.ratio.is_some_and(|r| r >= accept);
             if accepted {
                 ch.region = out.region.clone();
                 ch.ratio = out.ratio.unwrap_or(0.0);
@@ -670,6 +735,7 @@ pub fn hunt(
                 ch.since_best = 0;
             }
             let key = canonical(&out.region);
+            seen.insert(key.clone());
             for what in &out.findings {
                 if seen_findings.insert((key.clone(), what.clone())) {
                     report(&format!("FINDING at evaluation {evaluation}: {what}"));
@@ -693,7 +759,7 @@ pub fn hunt(
                         out.region.len()
                     ));
                 }
-                keep_worst(&mut worst, key, opts.keep, || Found {
+                keep_worst(&mut worst, key, pool, || Found {
                     region: out.region.clone(),
                     ratio: r,
                     value: out.value.unwrap_or(0),
@@ -726,8 +792,9 @@ pub fn hunt(
             if ch.since_best >= opts.patience {
                 ch.since_best = 0;
                 ch.best = 0.0;
-                let from_best = ch.rng.random_bool(0.5);
-                match worst.first() {
+                let from_best = ch.rng.random_bool(0.7);
+                let pick = ch.rng.random_range(0..worst.len().max(1));
+                match worst.get(pick) {
                     Some((_, f)) if from_best => {
                         ch.region = f.region.clone();
                         ch.ratio = f.ratio;
@@ -742,7 +809,26 @@ pub fn hunt(
             }
         }
     }
-    rep.worst = worst.into_iter().map(|(_, f)| f).collect();
+    rep.worst = worst.into_iter().take(opts.keep).map(|(_, f)| f).collect();
+    // A cache hit has no walk of this very region: solve the kept ones again for their figure.
+    if let Some(exact_obj) = exact_objective(opts.objective) {
+        for f in rep.worst.iter_mut().chain(rep.findings.iter_mut()) {
+            if f.optimal_walk.is_none() {
+                let res = exact::solve(
+                    &f.region,
+                    exact_obj,
+                    &exact::ExactOptions {
+                        time_limit: Some(opts.exact_time_limit),
+                        threads: 1,
+                        verbose: false,
+                        warm_start: None,
+                        max_coverage: None,
+                    },
+                );
+                f.optimal_walk = res.cover;
+            }
+        }
+    }
     let (solves, hits) = *cache.solves.lock().expect("count");
     rep.exact_solves = solves;
     rep.cache_hits = hits;
