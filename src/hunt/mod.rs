@@ -367,10 +367,20 @@ fn generated(
     opts: &HuntOptions,
     rng: &mut ChaCha8Rng,
 ) -> Option<Region> {
-    for _ in 0..200 {
-        let mut p = GenParams::new(opts.family, rng.random());
+    // After 100 failed tries of the family's generator, the papers' tight family of the same
+    // shape class (their members meet the preconditions the random ones rarely do).
+    let fallback = match shape {
+        Shape::Simple => Family::Band,
+        Shape::Holed => Family::Donut,
+        Shape::Thin => Family::Thin43,
+        Shape::Boundary | Shape::Any => opts.family,
+    };
+    for attempt in 0..200 {
+        let family = if attempt < 100 { opts.family } else { fallback };
+        let mut p = GenParams::new(family, rng.random());
+        p.no_cut = matches!(family, Family::RandomSimple | Family::RandomHoled) && rng.random_bool(0.5);
         let n = rng.random_range(opts.min_n..=opts.max_n);
-        match opts.family {
+        match family {
             Family::Rect => {
                 let w = rng.random_range(1..=n.max(1));
                 p.width = Some(w);
