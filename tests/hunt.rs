@@ -81,7 +81,11 @@ if any("#" * 6 in r for r in rows):
         out.to_str().unwrap(),
     ]);
     let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{stdout}\n{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let found = worst(&out);
     let top = &found[0];
     assert!(
@@ -124,7 +128,11 @@ fn hunts_are_reproducible_and_keep_their_constraints() {
     };
     let (a, b) = (run("a", "1"), run("b", "2"));
     assert_eq!(csv_without_time(&a), csv_without_time(&b));
-    assert_eq!(csv_without_time(&a).len(), 81, "a header and 80 evaluations");
+    assert_eq!(
+        csv_without_time(&a).len(),
+        81,
+        "a header and 80 evaluations"
+    );
     let algo = mowmill::algorithms::find("tsp65").unwrap();
     let found = worst(&a);
     assert_eq!(found.len(), 6);
@@ -134,13 +142,22 @@ fn hunts_are_reproducible_and_keep_their_constraints() {
         assert!((8..=24).contains(&r.len()));
         assert!(Shape::Simple.holds(r), "{}", r.to_ascii());
         assert!((algo.precondition)(r).is_ok(), "{}", r.to_ascii());
-        assert!(keys.insert(canonical(r)), "a symmetric duplicate:\n{}", r.to_ascii());
+        assert!(
+            keys.insert(canonical(r)),
+            "a symmetric duplicate:\n{}",
+            r.to_ascii()
+        );
         // Every image under the symmetries has the same key.
         for s in mowmill::region::Symmetry::all() {
             assert_eq!(canonical(&r.transformed(s)), canonical(r));
         }
     }
-    for file in ["manifest.json", "best.png", "worst/rank-01.svg", "worst/rank-01.walk.json"] {
+    for file in [
+        "manifest.json",
+        "best.png",
+        "worst/rank-01.svg",
+        "worst/rank-01.walk.json",
+    ] {
         assert!(a.join(file).exists(), "{file}");
     }
 }

@@ -378,7 +378,8 @@ fn generated(
     for attempt in 0..200 {
         let family = if attempt < 100 { opts.family } else { fallback };
         let mut p = GenParams::new(family, rng.random());
-        p.no_cut = matches!(family, Family::RandomSimple | Family::RandomHoled) && rng.random_bool(0.5);
+        p.no_cut =
+            matches!(family, Family::RandomSimple | Family::RandomHoled) && rng.random_bool(0.5);
         let n = rng.random_range(opts.min_n..=opts.max_n);
         match family {
             Family::Rect => {
@@ -413,9 +414,12 @@ fn exact_objective(o: Objective) -> Option<exact::Objective> {
     evaluate::exact_counterpart(o).and_then(|o| exact::Objective::parse(o.name(), None).ok())
 }
 
-/// The optimum of a region, cached by canonical form: (OPT if proven, its optimal walk).
+/// An exact solve's outcome: OPT if proven, the walk found, the proven lower bound.
+type Solved = (Option<u64>, Option<crate::tour::CycleCover>, u64);
+
+/// The optimum of a region, cached by canonical form.
 struct OptCache {
-    map: Mutex<HashMap<String, (Option<u64>, Option<crate::tour::CycleCover>, u64)>>,
+    map: Mutex<HashMap<String, Solved>>,
     solves: Mutex<(usize, usize)>,
 }
 
