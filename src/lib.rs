@@ -47,6 +47,7 @@ pub mod flow;
 pub mod generate;
 pub mod gridfile;
 pub mod harness;
+pub mod hunt;
 pub mod instance;
 pub mod lawn_check;
 pub mod outside;

@@ -14,7 +14,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 mod cli;
-use cli::{algos::*, bench::*, exact::*, generate::*, solve::*, tight::*};
+use cli::{algos::*, bench::*, exact::*, generate::*, hunt::*, solve::*, tight::*};
 
 #[derive(Parser)]
 #[command(
@@ -58,6 +58,8 @@ enum Command {
     Algos(AlgosArgs),
     /// Solve an instance exactly (MILP with HiGHS) with a proven lower bound.
     Exact(ExactArgs),
+    /// Search for the instances where an algorithm is worst (largest ratio to the optimum).
+    Hunt(HuntArgs),
     /// Run a benchmark suite: instances x algorithms x exact objectives -> CSV, stats, plots.
     Bench(BenchArgs),
     /// Redraw the plots of a run directory from its CSV files.
@@ -220,6 +222,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             claims_command(&from, &tight, out.as_deref(), findings.as_deref())
         }
         Command::Bench(args) => bench_command(args),
+        Command::Hunt(args) => hunt_command(args),
         Command::Exact(args) => exact_command(args),
         Command::Plot { dir } => {
             let rows = harness::rows::read_rows(&dir.join("results.csv"))?;

@@ -4,6 +4,7 @@ pub mod algos;
 pub mod bench;
 pub mod exact;
 pub mod generate;
+pub mod hunt;
 pub mod solve;
 pub mod tight;
 

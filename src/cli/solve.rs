@@ -58,7 +58,7 @@ pub struct SolveArgs {
 }
 
 /// Splits a command line on spaces; single or double quotes group words.
-fn split_command(s: &str) -> Vec<String> {
+pub fn split_command(s: &str) -> Vec<String> {
     let mut words = Vec::new();
     let mut word = String::new();
     let mut quote = None;

@@ -1,0 +1,249 @@
+//! A hunt's files: `hunt.csv` (one line per evaluation), `worst/` (the top-K distinct
+//! instances: `.grid`, the algorithm's walk, the optimal walk, a side-by-side figure with turns
+//! marked), `findings/` (violations, invalid walks, errors, false certificates, each with a
+//! note), `best.{png,svg}` (best ratio against evaluations) and `manifest.json`.
+
+use super::{Found, HuntOptions, HuntReport, Record};
+use crate::draw::{DrawOptions, draw};
+use crate::error::{Error, Result};
+use crate::gridfile::GridFile;
+use crate::harness::plots::{Figure, render};
+use crate::region::Region;
+use crate::tour::CycleCover;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The columns of `hunt.csv` (a contract; the first six are the issue's).
+pub const COLUMNS: [&str; 13] = [
+    "evaluation",
+    "elapsed",
+    "ratio",
+    "best_so_far",
+    "n",
+    "sha256",
+    "chain",
+    "ratio_bound",
+    "value",
+    "opt",
+    "lower_bound",
+    "accepted",
+    "note",
+];
+
+fn opt<T: ToString>(x: Option<T>) -> String {
+    x.map_or(String::new(), |v| v.to_string())
+}
+
+/// Writes `hunt.csv`; ratios with 6 decimals so that the same run gives the same bytes apart
+/// from `elapsed`.
+pub fn write_csv(path: &Path, records: &[Record]) -> Result<()> {
+    let mut w = csv::Writer::from_path(path)
+        .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
+    let csv_err = |e: csv::Error| Error::invalid(format!("{}: {e}", path.display()));
+    w.write_record(COLUMNS).map_err(csv_err)?;
+    let r6 = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v:.6}"));
+    for r in records {
+        w.write_record([
+            r.evaluation.to_string(),
+            format!("{:.3}", r.elapsed),
+            r6(r.ratio),
+            format!("{:.6}", r.best_so_far),
+            r.n.to_string(),
+            r.sha256.clone(),
+            r.chain.to_string(),
+            r6(r.ratio_bound),
+            opt(r.value),
+            opt(r.opt),
+            opt(r.lower_bound),
+            r.accepted.to_string(),
+            r.note.clone(),
+        ])
+        .map_err(csv_err)?;
+    }
+    w.flush().map_err(|e| Error::io(path, e))
+}
+
+/// Draws `region` with `walk` to an SVG string (via a scratch file).
+fn svg_of(
+    region: &Region,
+    walk: Option<&CycleCover>,
+    title: String,
+    scratch: &Path,
+) -> Result<String> {
+    let opts = DrawOptions {
+        title: Some(title),
+        ..DrawOptions::default()
+    };
+    draw(region, walk, scratch, &opts)?;
+    let text = std::fs::read_to_string(scratch).map_err(|e| Error::io(scratch, e))?;
+    let _ = std::fs::remove_file(scratch);
+    Ok(text)
+}
+
+/// The attribute `name="..."` of an SVG's opening tag, as a number.
+fn svg_size(svg: &str, name: &str) -> f64 {
+    let start = svg.find("<svg").unwrap_or(0);
+    let tag = &svg[start..start + svg[start..].find('>').unwrap_or(0)];
+    tag.split(&format!("{name}=\""))
+        .nth(1)
+        .and_then(|s| s.split('"').next())
+        .and_then(|s| s.trim_end_matches("px").parse().ok())
+        .unwrap_or(400.0)
+}
+
+/// Two SVG pictures side by side in one SVG.
+fn side_by_side(left: &str, right: &str) -> String {
+    let strip = |s: &str| {
+        s.lines()
+            .filter(|l| !l.trim_start().starts_with("<?xml"))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    let (wl, hl) = (svg_size(left, "width"), svg_size(left, "height"));
+    let (wr, hr) = (svg_size(right, "width"), svg_size(right, "height"));
+    let right = strip(right).replacen("<svg", &format!("<svg x=\"{wl}\""), 1);
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\">\n{}\n{}\n</svg>\n",
+        wl + wr,
+        hl.max(hr),
+        strip(left),
+        right
+    )
+}
+
+/// Saves one instance with its walks and figure as `dir/stem.*`.
+fn save(
+    dir: &Path,
+    stem: &str,
+    f: &Found,
+    algo: &str,
+    opts: &HuntOptions,
+    note: &str,
+) -> Result<()> {
+    std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    let meta = [
+        ("algorithm", algo.to_string()),
+        ("objective", opts.objective.to_string()),
+        ("ratio", format!("{:.6}", f.ratio)),
+        ("value", f.value.to_string()),
+        ("reference", opt(f.reference)),
+        ("evaluation", f.evaluation.to_string()),
+        ("hunt_seed", opts.seed.to_string()),
+    ];
+    GridFile::with_meta(f.region.clone(), &meta).write(&dir.join(format!("{stem}.grid")))?;
+    if let Some(w) = &f.walk {
+        w.write(&dir.join(format!("{stem}.walk.json")))?;
+    }
+    if let Some(w) = &f.optimal_walk {
+        w.write(&dir.join(format!("{stem}.optimal.json")))?;
+    }
+    let scratch = dir.join(format!(".{stem}.tmp.svg"));
+    let left = svg_of(
+        &f.region,
+        f.walk.as_ref(),
+        format!("{algo}: {} {}", opts.objective, f.value),
+        &scratch,
+    )?;
+    let right = svg_of(
+        &f.region,
+        f.optimal_walk.as_ref(),
+        match (f.optimal_walk.is_some(), f.reference) {
+            (true, Some(r)) => format!("optimal: {} {r}", opts.objective),
+            _ => "no optimal walk".to_string(),
+        },
+        &scratch,
+    )?;
+    let path = dir.join(format!("{stem}.svg"));
+    std::fs::write(&path, side_by_side(&left, &right)).map_err(|e| Error::io(&path, e))?;
+    if !note.is_empty() {
+        let path = dir.join(format!("{stem}.txt"));
+        std::fs::write(&path, format!("{note}\n")).map_err(|e| Error::io(&path, e))?;
+    }
+    Ok(())
+}
+
+/// The best ratio against evaluations.
+struct BestCurve<'a> {
+    records: &'a [Record],
+    title: String,
+}
+
+impl Figure for BestCurve<'_> {
+    fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<()> {
+        let err = |e: DrawingAreaErrorKind<DB::ErrorType>| Error::invalid(format!("plot: {e}"));
+        let pts: Vec<(f64, f64)> = self
+            .records
+            .iter()
+            .filter(|r| r.best_so_far > 0.0)
+            .map(|r| (r.evaluation as f64, r.best_so_far))
+            .collect();
+        let x_hi = pts.last().map_or(1.0, |p| p.0).max(1.0);
+        let y_lo = pts.first().map_or(1.0, |p| p.1).min(1.0) * 0.98;
+        let y_hi = pts.last().map_or(1.0, |p| p.1).max(1.0) * 1.05;
+        let mut chart = ChartBuilder::on(area)
+            .caption(&self.title, ("sans-serif", 20))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(0.0..x_hi, y_lo..y_hi)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("evaluations")
+            .y_desc("worst ratio found")
+            .draw()
+            .map_err(err)?;
+        chart
+            .draw_series(LineSeries::new(pts, &BLUE))
+            .map_err(err)?;
+        Ok(())
+    }
+}
+
+/// Writes every output of a hunt into `out`.
+pub fn write_all(out: &Path, report: &HuntReport, algo: &str, opts: &HuntOptions) -> Result<()> {
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    write_csv(&out.join("hunt.csv"), &report.records)?;
+    for (k, f) in report.worst.iter().enumerate() {
+        save(
+            &out.join("worst"),
+            &format!("rank-{:02}", k + 1),
+            f,
+            algo,
+            opts,
+            "",
+        )?;
+    }
+    for (k, f) in report.findings.iter().enumerate() {
+        let mut note = String::new();
+        let _ = writeln!(note, "{}", f.what);
+        let _ = writeln!(
+            note,
+            "algorithm {algo}, objective {}, evaluation {}, value {}, reference {}",
+            opts.objective,
+            f.evaluation,
+            f.value,
+            opt(f.reference)
+        );
+        save(
+            &out.join("findings"),
+            &format!("finding-{:03}", k + 1),
+            f,
+            algo,
+            opts,
+            &note,
+        )?;
+    }
+    crate::draw::ensure_fonts();
+    render(
+        &out.join("best"),
+        (900, 500),
+        &BestCurve {
+            records: &report.records,
+            title: format!("{algo} ({}): worst ratio found", opts.objective),
+        },
+    )?;
+    Ok(())
+}
