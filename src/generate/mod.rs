@@ -262,6 +262,16 @@ pub fn generate(p: &GenParams) -> Result<GridFile> {
     generate_traced(p).map(|(file, _)| file)
 }
 
+/// Refuses what [`generate`] refuses, without generating: the parameter ranges of
+/// [`PARAMS`], the parameters the family takes and needs, and every other refusal of the
+/// module documentation. Configs check each parameter combination with it before any job runs.
+///
+/// # Errors
+/// [`Error::Invalid`] as [`generate`].
+pub fn check(p: &GenParams) -> Result<()> {
+    Spec::resolve(p)?.check_feasible()
+}
+
 /// Which construction produced a region (for tests: the fallback must stay rare).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Provenance {
