@@ -290,7 +290,12 @@ fn careless_suites_are_refused_with_line_and_column() {
     std::fs::create_dir_all(dir.join("empty")).unwrap();
     std::fs::create_dir_all(dir.join("inst")).unwrap();
     std::fs::write(dir.join("inst/sq.grid"), "##\n##\n").unwrap();
-    let cases: [(&str, &str, &[&str]); 6] = [
+    std::fs::write(
+        dir.join("inst/sq.wkt"),
+        "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))\n",
+    )
+    .unwrap();
+    let cases: [(&str, &str, &[&str]); 7] = [
         // A misspelled key, at the top and in a table.
         (
             "name = \"t\"\nsed = 3\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n",
@@ -321,6 +326,12 @@ fn careless_suites_are_refused_with_line_and_column() {
             "name = \"t\"\n[[files]]\ndir = \"empty\"\n",
             "3:7",
             &["files[0].dir", "no .grid or .wkt file"],
+        ),
+        // Two files of one folder, or two folders of one family, with the same name.
+        (
+            "name = \"t\"\n[[files]]\ndir = \"inst\"\n",
+            "3:7",
+            &["files[0].dir", "instance name files_sq a second time"],
         ),
         (
             "name = \"t\"\n[[files]]\ndir = \"missing\"\n",

@@ -512,6 +512,8 @@ impl Config {
             }
             check_algorithms(&f.algorithms, &outside, &at)?;
         }
+        // Which table first gave each instance name `FAMILY_STEM`.
+        let mut file_names: BTreeMap<String, usize> = BTreeMap::new();
         for (i, f) in self.files.iter().enumerate() {
             let at = format!("files[{i}]");
             let family = f.family.as_deref().unwrap_or("files");
@@ -527,8 +529,22 @@ impl Config {
             }
             check_algorithms(&f.algorithms, &outside, &at)?;
             if read_dirs {
-                instance_files(&self.dir.join(&f.dir))
+                let files = instance_files(&self.dir.join(&f.dir))
                     .map_err(|e| Problem::value(format!("{at}.dir"), e))?;
+                for p in files {
+                    let stem = p.file_stem().unwrap_or_default().to_string_lossy();
+                    let name = format!("{family}_{stem}");
+                    if let Some(first) = file_names.insert(name.clone(), i) {
+                        return Err(Problem::value(
+                            format!("{at}.dir"),
+                            format!(
+                                "{} gives the instance name {name} a second time (also from files[{first}]): \
+                                 name the families apart or rename the file",
+                                p.display()
+                            ),
+                        ));
+                    }
+                }
             }
         }
         for (j, m) in self.options.merge.0.iter().enumerate() {
