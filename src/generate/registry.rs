@@ -219,15 +219,6 @@ impl ParamSpec {
         };
         Err(Error::invalid(message))
     }
-
-    /// The values [`ParamSpec::check`] accepts, for documentation and messages.
-    pub fn range(&self) -> String {
-        match self.kind {
-            ParamKind::Count if self.max == usize::MAX => format!("≥ {}", self.min),
-            ParamKind::Count => format!("{}..={}", self.min, self.max),
-            kind => kind.expected().to_string(),
-        }
-    }
 }
 
 impl Param {

@@ -932,15 +932,15 @@ mod tests {
                 "expected a usize or a list",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\nalgorithms = [\"nope\"]\n",
                 "family[0].algorithms",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n",
                 "exact[0].objective",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n",
                 "max_n",
             ),
             ("name = \"t\"\n", "no instances"),
