@@ -94,6 +94,11 @@
 //!
 //! # Refusals
 //!
+//! Every given value is first checked against the range of its row of [`PARAMS`]
+//! ([`ParamSpec::check`]; `n`, `width`, `height`, `k`, `parts` from 1, `side` from 3, up to
+//! [`MAX_PIXELS`]); [`check`] makes every refusal below without generating, and configs use it
+//! for each parameter combination before any job runs.
+//!
 //! [`Error::Invalid`] for a parameter that the family does not take, a missing parameter,
 //! N = 0, N > [`MAX_PIXELS`], a rectangle side 0, k = 0 or L < 2k + 1, P = 0 or P > N,
 //! `no_cut` for N = 3, 5 or 7 (every hole-free region of that size has a cut vertex), and H
@@ -260,6 +265,16 @@ impl GenParams {
 /// ```
 pub fn generate(p: &GenParams) -> Result<GridFile> {
     generate_traced(p).map(|(file, _)| file)
+}
+
+/// Refuses what [`generate`] refuses, without generating: the parameter ranges of
+/// [`PARAMS`], the parameters the family takes and needs, and every other refusal of the
+/// module documentation. Configs check each parameter combination with it before any job runs.
+///
+/// # Errors
+/// [`Error::Invalid`] as [`generate`].
+pub fn check(p: &GenParams) -> Result<()> {
+    Spec::resolve(p)?.check_feasible()
 }
 
 /// Which construction produced a region (for tests: the fallback must stay rare).

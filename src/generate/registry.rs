@@ -1,5 +1,6 @@
 //! The registry of families and parameters: every name `gen`, configs and the manifest use.
 
+use super::MAX_PIXELS;
 use super::styles::Style;
 use crate::error::Error;
 use crate::error::Result;
@@ -75,6 +76,11 @@ pub struct ParamSpec {
     /// The long flag of `mowmill gen` (without `--`).
     pub flag: &'static str,
     pub kind: ParamKind,
+    /// The smallest and largest value of a [`ParamKind::Count`] parameter (inclusive); the
+    /// largest is the generator's limit. A [`ParamKind::Fraction`] lies in [0, 1]. `mowmill
+    /// gen` and configs both check values with [`ParamSpec::check`] before generating.
+    pub min: usize,
+    pub max: usize,
     pub help: &'static str,
 }
 
@@ -86,6 +92,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "n",
         flag: "n",
         kind: ParamKind::Count,
+        min: 1,
+        max: MAX_PIXELS,
         help: "Number of pixels",
     },
     ParamSpec {
@@ -93,6 +101,9 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "holes",
         flag: "holes",
         kind: ParamKind::Count,
+        min: 0,
+        // No limit of its own: more holes than pixels is refused with the pixel count.
+        max: usize::MAX,
         help: "Number of holes (default 1 for random-holed, 0 otherwise)",
     },
     ParamSpec {
@@ -100,6 +111,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "width",
         flag: "width",
         kind: ParamKind::Count,
+        min: 1,
+        max: MAX_PIXELS,
         help: "Width of the rectangle",
     },
     ParamSpec {
@@ -107,6 +120,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "height",
         flag: "height",
         kind: ParamKind::Count,
+        min: 1,
+        max: MAX_PIXELS,
         help: "Height of the rectangle",
     },
     ParamSpec {
@@ -114,6 +129,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "k",
         flag: "k",
         kind: ParamKind::Count,
+        min: 1,
+        max: MAX_PIXELS,
         help: "Width of the annulus (donut), or the index of the band B_k (band)",
     },
     ParamSpec {
@@ -121,6 +138,9 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "side",
         flag: "side",
         kind: ParamKind::Count,
+        // A donut needs k ≥ 1 and side ≥ 2k + 1.
+        min: 3,
+        max: MAX_PIXELS,
         help: "Outer side of the annulus",
     },
     ParamSpec {
@@ -128,6 +148,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "parts",
         flag: "parts",
         kind: ParamKind::Count,
+        min: 1,
+        max: MAX_PIXELS,
         help: "Number of grass components (default 3)",
     },
     ParamSpec {
@@ -135,6 +157,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "style",
         flag: "style",
         kind: ParamKind::Style,
+        min: 0,
+        max: 0,
         help: "Shape style (default: mixed, one of the others drawn from the seed)",
     },
     ParamSpec {
@@ -142,6 +166,8 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "compactness",
         flag: "compactness",
         kind: ParamKind::Fraction,
+        min: 0,
+        max: 0,
         help: "Compactness of growth in [0, 1], 1 round, 0 ragged (default: drawn from the seed)",
     },
     ParamSpec {
@@ -149,6 +175,9 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "s",
         flag: "s",
         kind: ParamKind::Count,
+        min: 0,
+        // thin43 has 222 + 77s pixels.
+        max: (MAX_PIXELS - 222) / 77,
         help: "Parameter s of the 4/3 thin example",
     },
     ParamSpec {
@@ -156,9 +185,41 @@ pub const PARAMS: [ParamSpec; 11] = [
         name: "no_cut",
         flag: "no-cut",
         kind: ParamKind::Flag,
+        min: 0,
+        max: 0,
         help: "No cut vertices (random-simple) or no local cut vertices (random-holed)",
     },
 ];
+
+impl ParamSpec {
+    /// Checks one value: of the parameter's kind, a count within `min..=max`, a fraction a
+    /// number in [0, 1] (not NaN). The one check of the values of `mowmill gen`'s flags and of
+    /// a config's `[[family]]` keys.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the parameter, the bound and the value.
+    pub fn check(&self, value: ParamValue) -> Result<()> {
+        let name = self.name;
+        let message = match (self.kind, value) {
+            (ParamKind::Count, ParamValue::Count(v)) if v < self.min => {
+                format!("expected {name} ≥ {}, got {v}", self.min)
+            }
+            (ParamKind::Count, ParamValue::Count(v)) if v > self.max => format!(
+                "{name} = {v} is more than the generator's limit of {}",
+                self.max
+            ),
+            (ParamKind::Fraction, ParamValue::Fraction(v)) if !(0.0..=1.0).contains(&v) => {
+                format!("{name} must be between 0 and 1, got {v}")
+            }
+            (ParamKind::Count, ParamValue::Count(_))
+            | (ParamKind::Fraction, ParamValue::Fraction(_))
+            | (ParamKind::Flag, ParamValue::Flag(_))
+            | (ParamKind::Style, ParamValue::Style(_)) => return Ok(()),
+            _ => format!("{name}: expected {}, got {value}", self.kind.expected()),
+        };
+        Err(Error::invalid(message))
+    }
+}
 
 impl Param {
     /// The parameter's row of [`PARAMS`].
@@ -329,6 +390,41 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         random: true,
     },
 ];
+
+impl FamilyInfo {
+    /// Refuses a parameter the family does not take (shared by `mowmill gen` and configs).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the parameter and the ones the family takes.
+    pub fn check_takes(&self, param: Param) -> Result<()> {
+        if self.params.contains(&param) {
+            return Ok(());
+        }
+        let takes: Vec<&str> = self.params.iter().map(|q| q.name()).collect();
+        Err(Error::invalid(format!(
+            "parameter `{}` does not apply to family {} (it takes: {})",
+            param.name(),
+            self.name,
+            takes.join(", ")
+        )))
+    }
+
+    /// Refuses a request without one of the family's required parameters; `given` says which
+    /// parameters have a value.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming the first missing parameter.
+    pub fn check_required(&self, given: impl Fn(Param) -> bool) -> Result<()> {
+        match self.required.iter().find(|&&q| !given(q)) {
+            Some(q) => Err(Error::invalid(format!(
+                "family {} needs parameter `{}`",
+                self.name,
+                q.name()
+            ))),
+            None => Ok(()),
+        }
+    }
+}
 
 impl Family {
     pub const ALL: [Family; 11] = [

@@ -51,33 +51,13 @@ pub(super) const TAG_FALLBACK: u64 = u64::MAX - 1;
 impl Spec {
     pub(super) fn resolve(p: &GenParams) -> Result<Spec> {
         let info = p.family.info();
-        let takes: Vec<&str> = info.params.iter().map(|q| q.name()).collect();
-        for q in PARAMS.iter().map(|spec| spec.param) {
-            if p.get(q).is_some() && !info.params.contains(&q) {
-                return Err(Error::invalid(format!(
-                    "parameter `{}` does not apply to family {} (it takes: {})",
-                    q.name(),
-                    info.name,
-                    takes.join(", ")
-                )));
+        for spec in &PARAMS {
+            if let Some(value) = p.get(spec.param) {
+                info.check_takes(spec.param)?;
+                spec.check(value)?;
             }
         }
-        for &q in info.required {
-            if p.get(q).is_none() {
-                return Err(Error::invalid(format!(
-                    "family {} needs parameter `{}`",
-                    info.name,
-                    q.name()
-                )));
-            }
-        }
-        if let Some(c) = p.compactness
-            && !(0.0..=1.0).contains(&c)
-        {
-            return Err(Error::invalid(format!(
-                "compactness must be between 0 and 1, got {c}"
-            )));
-        }
+        info.check_required(|q| p.get(q).is_some())?;
         // Drawn values come from their own stream, so that giving them explicitly reproduces
         // the same instance.
         let mut rng = rng_for(p.seed, TAG_RESOLVE);

@@ -1,6 +1,8 @@
 //! Benchmark configuration: a TOML file naming instance families × parameters × seeds,
 //! algorithms, and exact objectives with a size cutoff and a time limit each. Lists expand into
-//! every combination. Every key is checked before any job runs; an error names the key.
+//! every combination. Every key and value is checked before any job runs (nothing is written
+//! and nothing runs on a refused config); an error names the file, the line and column, the
+//! key (`family[0].n[1]`) and what was expected, and `mowmill bench` exits with code 2.
 //!
 //! ```toml
 //! name = "ci"          # suite name, part of the run id
@@ -16,7 +18,7 @@
 //!                          # preconditions hold on the instance
 //!
 //! [[files]]            # existing instances: every .grid / .wkt file of a folder
-//! dir = "instances/fixtures"
+//! dir = "../instances/fixtures"   # relative to the config file's folder
 //! family = "fixtures"  # the family column of their rows
 //!
 //! [[exact]]
@@ -43,14 +45,50 @@
 //! record the options in the `merge`, `cutter` and `coverage4` columns, and a run with
 //! non-default options is named `NAME[merge=naive,coverage4]` in the `algorithm` column, so
 //! statistics never mix variants.
+//!
+//! # What is accepted
+//!
+//! * Unknown or misspelled keys, anywhere, are refused (at the key).
+//! * `name`: non-empty, without `/`, `\`, a leading `.` or control characters (it becomes a
+//!   folder name).
+//! * `[[family]]`: `family` one of the generator's families; each parameter one the family
+//!   takes (see `mowmill gen --help`), every value in the range of its row of [`PARAMS`]
+//!   ([`ParamSpec::check`](crate::generate::ParamSpec::check), the check `mowmill gen` uses):
+//!   `n`, `width`, `height`, `k`, `parts` from 1, `side` from 3, `holes` and `s` from 0, all
+//!   up to the generator's limit of [`MAX_PIXELS`](crate::generate::MAX_PIXELS) pixels (`s` ≤ 259737); `compactness` a
+//!   number in [0, 1]; `style` a style name; `no_cut` true or false. An empty list is the same
+//!   as leaving the key out (the manifest records parameters not given so), so a required
+//!   parameter given as `[]` is refused. Every combination is then checked as `mowmill gen`
+//!   would check it ([`generate::check`]: pixel limits of `width × height`, holes that do not
+//!   fit in `n`, `side ≥ 2k + 1`, ...), before any instance is generated. `count` is from 1 to
+//!   [`MAX_INSTANCES`], and so is the whole suite. Two tables may name the same family, but
+//!   not the same parameter combination (the same seeds and names twice).
+//! * `[[files]]`: `dir` is resolved against the config file's folder (as outside algorithms'
+//!   commands run there) and must hold at least one `.grid` or `.wkt` file; `family` (default
+//!   `files`) obeys the rule of `name` and is not the family of a `[[family]]` table.
+//! * `algorithms` lists: registered names or the names of `[[algorithm]]` tables.
+//! * `[[exact]]`: `objective` one of length, cc-turns, turns, weighted, lawn-tsp, at most one
+//!   table per objective (and turn cost); `turn_cost` for weighted only and required there;
+//!   `max_n` ≥ 1; `time_limit` a number of seconds in (0, [`MAX_TIME_LIMIT`]]; the same
+//!   bounds for the `time_limit` of an `[[algorithm]]`.
+//! * A suite without any instance is refused.
 
 use crate::algorithms::{Cutter, Merge, Options};
 use crate::error::{Error, Result};
-use crate::generate::{Family, GenParams, PARAMS, Param, ParamKind, ParamValue};
+use crate::generate::{self, Family, GenParams, PARAMS, Param, ParamKind, ParamValue};
 use crate::outside::{OutsideAlgorithm, OutsideSpec};
 use serde::{Deserialize, Deserializer, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+
+/// The most instances a suite may have (and the most per parameter combination): far above
+/// the suites of `experiments/` (validate has about 2·10^4), far below a count that would
+/// exhaust memory before the first job.
+pub const MAX_INSTANCES: usize = 1_000_000;
+
+/// The longest time limit (seconds) of an exact objective or an outside algorithm: 30 days.
+/// Anything longer is a typo, and near 1.8·10^19 s the timers themselves overflow.
+pub const MAX_TIME_LIMIT: f64 = 2_592_000.0;
 
 /// A whole benchmark configuration.
 #[derive(Clone, Debug, Deserialize, Serialize)]
@@ -211,18 +249,24 @@ impl<'de> Deserialize<'de> for FamilySpec {
 }
 
 /// As in the file: `family`, every parameter of [`PARAMS`] (an empty list when not given),
-/// `count`, `algorithms`; this is what the manifest records.
+/// `count`, `algorithms` (when given); this is what the manifest records.
 impl Serialize for FamilySpec {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
-        let mut map = s.serialize_map(Some(PARAMS.len() + 3))?;
+        let mut map = s.serialize_map(Some(
+            PARAMS.len() + 2 + usize::from(self.algorithms.is_some()),
+        ))?;
         map.serialize_entry("family", &self.family)?;
         for spec in &PARAMS {
             let values = self.params.get(&spec.param).map_or(&[][..], Vec::as_slice);
             map.serialize_entry(spec.name, values)?;
         }
         map.serialize_entry("count", &self.count)?;
-        map.serialize_entry("algorithms", &self.algorithms)?;
+        // Left out when not given, as below: TOML has no null, and `bench --resume` re-reads
+        // the recorded config as TOML.
+        if let Some(algorithms) = &self.algorithms {
+            map.serialize_entry("algorithms", algorithms)?;
+        }
         map.end()
     }
 }
@@ -232,9 +276,9 @@ impl Serialize for FamilySpec {
 #[serde(deny_unknown_fields)]
 pub struct FilesSpec {
     pub dir: PathBuf,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub family: Option<String>,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub algorithms: Option<Vec<String>>,
 }
 
@@ -245,7 +289,7 @@ pub struct ExactSpec {
     pub objective: String,
     pub max_n: usize,
     pub time_limit: f64,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub turn_cost: Option<u32>,
 }
 
@@ -303,15 +347,16 @@ pub enum Source {
 }
 
 impl Config {
-    /// Reads and validates a config file. Errors name the file and the offending key.
+    /// Reads and validates a config file. Relative `[[files]]` folders and outside
+    /// algorithms' commands are resolved against the file's folder, and the folders must hold
+    /// instances. Errors name the file, line, column and the offending key.
     pub fn read(path: &Path) -> Result<Config> {
         let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        let mut config = Config::parse(&text, &path.display().to_string())?;
-        config.dir = match path.parent() {
+        let dir = match path.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        Ok(config)
+        Config::parse_in(&text, &path.display().to_string(), Some(&dir))
     }
 
     /// Every combination of the `[options]` lists (one set of defaults when none is given).
@@ -346,75 +391,231 @@ impl Config {
             .collect()
     }
 
+    /// Parses and validates a config given as text (`file` names it in messages). Relative
+    /// paths stay relative to the current folder (`dir` is empty) and `[[files]]` folders are
+    /// not read: a resumed run sets `dir` afterwards, and [`Config::instances`] reads them.
     pub fn parse(text: &str, file: &str) -> Result<Config> {
-        let config: Config = toml::from_str(text).map_err(|e| {
-            let (line, column) = e
-                .span()
-                .map(|s| {
-                    let before = &text[..s.start.min(text.len())];
-                    let line = before.matches('\n').count() + 1;
-                    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-                    (line, column)
-                })
-                .unwrap_or((1, 1));
+        Config::parse_in(text, file, None)
+    }
+
+    /// [`Config::parse`] for a config whose folder `dir` is known (then also checked: the
+    /// `[[files]]` folders).
+    fn parse_in(text: &str, file: &str, dir: Option<&Path>) -> Result<Config> {
+        let mut config: Config = toml::from_str(text).map_err(|e| {
+            let (line, column) = e.span().map_or((1, 1), |s| line_column(text, s.start));
             Error::parse(file, line, column, e.message().to_string())
         })?;
+        if let Some(dir) = dir {
+            config.dir = dir.to_path_buf();
+        }
         config
-            .validate()
-            .map_err(|m| Error::invalid(format!("{file}: {m}")))?;
+            .validate(dir.is_some())
+            .map_err(|p| p.into_error(text, file))?;
         Ok(config)
     }
 
-    /// Checks names and values that TOML types cannot: family and algorithm names, styles,
-    /// exact objectives, counts.
-    fn validate(&self) -> std::result::Result<(), String> {
+    /// Checks names and values that TOML types cannot, in the order of the file's sections:
+    /// see "What is accepted" in the module documentation. With `read_dirs`, also that every
+    /// `[[files]]` folder holds instances.
+    fn validate(&self, read_dirs: bool) -> std::result::Result<(), Problem> {
+        check_file_name(&self.name).map_err(|m| Problem::value("name", m))?;
         if self.family.is_empty() && self.files.is_empty() {
-            return Err("no instances: give at least one [[family]] or [[files]]".into());
+            return Err(Problem::value(
+                "",
+                "no instances: give at least one [[family]] or [[files]]",
+            ));
         }
+        let outside: Vec<&str> = self.algorithm.iter().map(|a| a.name.as_str()).collect();
+        let mut total = 0usize;
+        // Which table first gave each (family, parameters) combination.
+        let mut combinations: BTreeMap<(String, String), usize> = BTreeMap::new();
         for (i, f) in self.family.iter().enumerate() {
             let at = format!("family[{i}]");
-            f.family
-                .parse::<Family>()
-                .map_err(|e| format!("{at}.family: {e}"))?;
-            if f.count == 0 {
-                return Err(format!("{at}.count: expected at least 1"));
+            let family: Family = f
+                .family
+                .parse()
+                .map_err(|e| Problem::value(format!("{at}.family"), e))?;
+            let info = family.info();
+            for (&param, values) in &f.params {
+                let key = format!("{at}.{}", param.name());
+                if values.is_empty() {
+                    // `[]` means "not given", as the manifest records it; required ones below.
+                    continue;
+                }
+                info.check_takes(param).map_err(|e| Problem::key(&key, e))?;
+                for (j, &v) in values.iter().enumerate() {
+                    param
+                        .spec()
+                        .check(v)
+                        .map_err(|e| Problem::value(format!("{key}[{j}]"), e))?;
+                }
             }
-            check_algorithms(&f.algorithms, &self.algorithm, &at)?;
+            let given = |q: Param| f.params.get(&q).is_some_and(|v| !v.is_empty());
+            info.check_required(given).map_err(|e| {
+                // At the `[]` that gives no value, or at the table when the key is missing.
+                match info
+                    .required
+                    .iter()
+                    .find(|&&q| f.params.contains_key(&q) && !given(q))
+                {
+                    Some(q) => Problem::value(
+                        format!("{at}.{}", q.name()),
+                        format!("{e}: `[]` gives no value"),
+                    ),
+                    None => Problem::value(&at, e),
+                }
+            })?;
+            if !(1..=MAX_INSTANCES).contains(&f.count) {
+                return Err(Problem::value(
+                    format!("{at}.count"),
+                    format!(
+                        "expected from 1 to {MAX_INSTANCES} instances per parameter combination, got {}",
+                        f.count
+                    ),
+                ));
+            }
+            let table_instances = f
+                .params
+                .values()
+                .filter(|v| !v.is_empty())
+                .try_fold(f.count, |acc, v| acc.checked_mul(v.len()));
+            total = match table_instances.and_then(|t| total.checked_add(t)) {
+                Some(t) if t <= MAX_INSTANCES => t,
+                _ => {
+                    return Err(Problem::value(
+                        &at,
+                        format!(
+                            "the suite would have more than {MAX_INSTANCES} instances (combinations of the \
+                             parameter lists × count)"
+                        ),
+                    ));
+                }
+            };
+            for combo in expand(f) {
+                let params = params_string(&combo);
+                // The seed does not decide refusals; the one of the first instance is at hand.
+                let mut g = GenParams::new(family, derive_seed(self.seed, &f.family, &params, 0));
+                for &(k, v) in &combo {
+                    g.set(k, v).map_err(|e| Problem::value(&at, e))?;
+                }
+                generate::check(&g).map_err(|e| Problem::value(&at, format!("{params}: {e}")))?;
+                if let Some(first) = combinations.insert((f.family.clone(), params.clone()), i) {
+                    return Err(Problem::value(
+                        &at,
+                        format!(
+                            "{} {params} is also in family[{first}]: the same family and parameters give \
+                             the same instances (seeds and names) twice",
+                            f.family
+                        ),
+                    ));
+                }
+            }
+            check_algorithms(&f.algorithms, &outside, &at)?;
         }
+        // Which table first gave each instance name `FAMILY_STEM`.
+        let mut file_names: BTreeMap<String, usize> = BTreeMap::new();
         for (i, f) in self.files.iter().enumerate() {
-            check_algorithms(&f.algorithms, &self.algorithm, &format!("files[{i}]"))?;
+            let at = format!("files[{i}]");
+            let family = f.family.as_deref().unwrap_or("files");
+            check_file_name(family).map_err(|m| Problem::value(format!("{at}.family"), m))?;
+            if self.family.iter().any(|g| g.family == family) {
+                return Err(Problem::value(
+                    format!("{at}.family"),
+                    format!(
+                        "{family:?} is also a [[family]] of this suite: the files' rows would mix with the \
+                         generated ones in its statistics; name the files' family apart"
+                    ),
+                ));
+            }
+            check_algorithms(&f.algorithms, &outside, &at)?;
+            if read_dirs {
+                let files = instance_files(&self.dir.join(&f.dir))
+                    .map_err(|e| Problem::value(format!("{at}.dir"), e))?;
+                for p in files {
+                    let stem = p.file_stem().unwrap_or_default().to_string_lossy();
+                    let name = format!("{family}_{stem}");
+                    if let Some(first) = file_names.insert(name.clone(), i) {
+                        return Err(Problem::value(
+                            format!("{at}.dir"),
+                            format!(
+                                "{} gives the instance name {name} a second time (also from files[{first}]): \
+                                 name the families apart or rename the file",
+                                p.display()
+                            ),
+                        ));
+                    }
+                }
+            }
         }
-        for m in &self.options.merge.0 {
+        for (j, m) in self.options.merge.0.iter().enumerate() {
             m.parse::<Merge>()
-                .map_err(|e| format!("options.merge: {e}"))?;
+                .map_err(|e| Problem::value(format!("options.merge[{j}]"), e))?;
         }
-        for c in &self.options.cutter.0 {
+        for (j, c) in self.options.cutter.0.iter().enumerate() {
             c.parse::<Cutter>()
-                .map_err(|e| format!("options.cutter: {e}"))?;
+                .map_err(|e| Problem::value(format!("options.cutter[{j}]"), e))?;
         }
         let mut outside_names = std::collections::BTreeSet::new();
         for (i, a) in self.algorithm.iter().enumerate() {
-            OutsideAlgorithm::from_spec(a, &self.dir)
-                .map_err(|e| format!("algorithm[{i}] ({}): {e}", a.name))?;
+            let at = format!("algorithm[{i}]");
+            check_time_limit(a.time_limit)
+                .map_err(|m| Problem::value(format!("{at}.time_limit"), m))?;
+            OutsideAlgorithm::from_spec(a, &self.dir).map_err(|e| {
+                // Its messages start with the key at fault (`command: ...`).
+                let key = e.split_once(':').map(|(k, _)| k).filter(|k| {
+                    k.chars()
+                        .all(|c| c.is_ascii_lowercase() || c == '_' || c == '.')
+                });
+                match (key, e.split_once(':')) {
+                    (Some(k), Some((_, rest))) => Problem::value(format!("{at}.{k}"), rest.trim()),
+                    _ => Problem::value(format!("{at}.name"), e),
+                }
+            })?;
             if !outside_names.insert(a.name.clone()) {
-                return Err(format!(
-                    "algorithm[{i}]: a second algorithm named {:?}",
-                    a.name
+                return Err(Problem::value(
+                    format!("{at}.name"),
+                    format!("a second algorithm named {:?}", a.name),
                 ));
             }
         }
+        let mut objectives = Vec::new();
         for (i, e) in self.exact.iter().enumerate() {
             let at = format!("exact[{i}]");
             e.objective
                 .parse::<crate::exact::Objective>()
-                .map_err(|err| format!("{at}.objective: {err}"))?;
-            crate::exact::Objective::parse(&e.objective, e.turn_cost)
-                .map_err(|err| format!("{at}.turn_cost: {err}"))?;
-            if e.time_limit.is_nan() || e.time_limit <= 0.0 {
-                return Err(format!(
-                    "{at}.time_limit: expected a positive number of seconds"
+                .map_err(|err| Problem::value(format!("{at}.objective"), err))?;
+            let objective =
+                crate::exact::Objective::parse(&e.objective, e.turn_cost).map_err(|err| {
+                    // At `turn_cost` when given, else at the table that lacks it.
+                    let key = if e.turn_cost.is_some() {
+                        format!("{at}.turn_cost")
+                    } else {
+                        at.clone()
+                    };
+                    // Its message speaks of the command line's flag.
+                    let err = err
+                        .replace("--turn-cost C", "turn_cost = C")
+                        .replace("--turn-cost", "turn_cost");
+                    Problem::value(key, err)
+                })?;
+            if e.max_n == 0 {
+                return Err(Problem::value(
+                    format!("{at}.max_n"),
+                    "expected at least 1 (the largest number of pixels to solve exactly)",
                 ));
             }
+            check_time_limit(e.time_limit)
+                .map_err(|m| Problem::value(format!("{at}.time_limit"), m))?;
+            if let Some(first) = objectives.iter().position(|&o| o == objective) {
+                return Err(Problem::value(
+                    &at,
+                    format!(
+                        "objective {} is also solved by exact[{first}]: its rows would be written twice",
+                        e.objective
+                    ),
+                ));
+            }
+            objectives.push(objective);
         }
         Ok(())
     }
@@ -425,11 +626,7 @@ impl Config {
         for f in &self.family {
             let family: Family = f.family.parse()?;
             for combo in expand(f) {
-                let params = combo
-                    .iter()
-                    .map(|(k, v)| format!("{}={v}", k.name()))
-                    .collect::<Vec<_>>()
-                    .join(" ");
+                let params = params_string(&combo);
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
                     let mut g = GenParams::new(family, seed);
@@ -463,23 +660,23 @@ impl Config {
                 }
             }
         }
-        for f in &self.files {
-            let mut files: Vec<PathBuf> = std::fs::read_dir(&f.dir)
-                .map_err(|e| Error::io(&f.dir, e))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.extension().is_some_and(|x| x == "grid" || x == "wkt"))
-                .collect();
-            files.sort();
+        for (i, f) in self.files.iter().enumerate() {
+            // Relative to the config file's folder, where outside algorithms run too.
+            let files = instance_files(&self.dir.join(&f.dir))
+                .map_err(|e| Error::invalid(format!("files[{i}].dir: {e}")))?;
             let family = f.family.clone().unwrap_or_else(|| "files".to_string());
             for p in files {
                 let stem = p
                     .file_stem()
                     .map(|s| s.to_string_lossy().into_owned())
                     .unwrap_or_default();
+                // The path as the config gives it, so that the column does not depend on
+                // where the run was started.
+                let given = f.dir.join(p.file_name().unwrap_or_default());
                 out.push(InstanceSpec {
                     name: format!("{family}_{stem}"),
                     family: family.clone(),
-                    params: format!("file={}", p.display()),
+                    params: format!("file={}", given.display()),
                     seed: 0,
                     source: Source::File(p),
                     algorithms: f.algorithms.clone(),
@@ -498,20 +695,179 @@ impl Config {
     }
 }
 
+/// Refuses an `algorithms` entry that is neither registered nor an `[[algorithm]]` table.
 fn check_algorithms(
     algos: &Option<Vec<String>>,
-    outside: &[OutsideSpec],
+    outside: &[&str],
     at: &str,
-) -> std::result::Result<(), String> {
-    for a in algos.iter().flatten() {
-        if crate::algorithms::find(a).is_none() && !outside.iter().any(|o| &o.name == a) {
-            return Err(format!(
-                "{at}.algorithms: unknown algorithm {a:?}; registered: {}",
-                crate::algorithms::names().join(", ")
+) -> std::result::Result<(), Problem> {
+    for (j, a) in algos.iter().flatten().enumerate() {
+        if crate::algorithms::find(a).is_none() && !outside.contains(&a.as_str()) {
+            let mut known = crate::algorithms::names();
+            known.extend_from_slice(outside);
+            return Err(Problem::value(
+                format!("{at}.algorithms[{j}]"),
+                format!("unknown algorithm {a:?}; known: {}", known.join(", ")),
             ));
         }
     }
     Ok(())
+}
+
+/// Refuses a name that becomes part of a file or folder name (the suite name in the run id,
+/// a `[[files]]` family in instance names) and would leave or break that folder.
+fn check_file_name(name: &str) -> std::result::Result<(), String> {
+    if name.is_empty()
+        || name.starts_with('.')
+        || name.contains(['/', '\\'])
+        || name.chars().any(char::is_control)
+    {
+        return Err(format!(
+            "{name:?}: expected a non-empty name without / \\, a leading . or control characters (it becomes part of file names)"
+        ));
+    }
+    Ok(())
+}
+
+/// Refuses a time limit that is not a number of seconds in (0, [`MAX_TIME_LIMIT`]].
+fn check_time_limit(seconds: f64) -> std::result::Result<(), String> {
+    if seconds > 0.0 && seconds <= MAX_TIME_LIMIT {
+        return Ok(());
+    }
+    Err(format!(
+        "expected a positive number of seconds, at most {MAX_TIME_LIMIT} (30 days), got {seconds:?}"
+    ))
+}
+
+/// The `.grid` and `.wkt` files of a folder, sorted; an error if it cannot be read or holds
+/// none.
+fn instance_files(dir: &Path) -> std::result::Result<Vec<PathBuf>, String> {
+    let entries = std::fs::read_dir(dir).map_err(|e| {
+        format!(
+            "cannot read folder {}: {e} (a relative dir is relative to the config file's folder)",
+            dir.display()
+        )
+    })?;
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "grid" || x == "wkt"))
+        .collect();
+    if files.is_empty() {
+        return Err(format!("no .grid or .wkt file in {}", dir.display()));
+    }
+    files.sort();
+    Ok(files)
+}
+
+/// A value [`Config::validate`] refuses: its key path (`family[0].n[1]`, empty for the whole
+/// suite), whether the key itself rather than its value is at fault, and what was expected.
+#[derive(Debug)]
+struct Problem {
+    path: String,
+    at_key: bool,
+    message: String,
+}
+
+impl Problem {
+    fn value(path: impl Into<String>, message: impl std::fmt::Display) -> Problem {
+        Problem {
+            path: path.into(),
+            at_key: false,
+            message: message.to_string(),
+        }
+    }
+
+    fn key(path: impl Into<String>, message: impl std::fmt::Display) -> Problem {
+        Problem {
+            at_key: true,
+            ..Problem::value(path, message)
+        }
+    }
+
+    /// The error at the problem's place in `text`: `file:line:column: path: message`.
+    fn into_error(self, text: &str, file: &str) -> Error {
+        // The typed config parsed, so the spanned document parses too; without it (or for
+        // the whole suite) the message still names the file and the key.
+        let located = toml::de::DeTable::parse(text)
+            .ok()
+            .and_then(|doc| locate(&doc, &self.path, self.at_key));
+        match located {
+            Some((offset, path)) => {
+                let (line, column) = line_column(text, offset);
+                Error::parse(file, line, column, format!("{path}: {}", self.message))
+            }
+            None if self.path.is_empty() => Error::invalid(format!("{file}: {}", self.message)),
+            None => Error::invalid(format!("{file}: {}: {}", self.path, self.message)),
+        }
+    }
+}
+
+/// The byte offset of the key path `path` (`family[0].n[1]`) in a parsed document, and the
+/// path as shown: the deepest part of it present in the file (a missing key points at its
+/// table, an index into a scalar at the scalar, which the shown path then leaves out).
+fn locate(
+    doc: &toml::Spanned<toml::de::DeTable>,
+    path: &str,
+    at_key: bool,
+) -> Option<(usize, String)> {
+    if path.is_empty() {
+        return None;
+    }
+    let mut table = doc.get_ref();
+    let mut found: Option<(usize, String)> = None;
+    let mut shown = String::new();
+    let parts: Vec<&str> = path.split('.').collect();
+    for (p, part) in parts.iter().enumerate() {
+        let (name, indices) = part.split_once('[').unwrap_or((part, ""));
+        let Some((key, value)) = table.iter().find(|(k, _)| k.get_ref() == name) else {
+            break;
+        };
+        if !shown.is_empty() {
+            shown.push('.');
+        }
+        shown.push_str(name);
+        let last = p + 1 == parts.len();
+        let offset = if at_key && last && indices.is_empty() {
+            key.span().start
+        } else {
+            value.span().start
+        };
+        found = Some((offset, shown.clone()));
+        let mut current = value;
+        for index in indices.split('[').filter(|s| !s.is_empty()) {
+            let element = index
+                .trim_end_matches(']')
+                .parse::<usize>()
+                .ok()
+                .and_then(|i| current.get_ref().as_array().and_then(|a| a.get(i)));
+            let Some(element) = element else { break };
+            shown.push_str(&format!("[{index}"));
+            found = Some((element.span().start, shown.clone()));
+            current = element;
+        }
+        match current.get_ref().as_table() {
+            Some(t) if !last => table = t,
+            _ => break,
+        }
+    }
+    found
+}
+
+/// Line and column (from 1, the column in characters) of a byte offset of `text`.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+/// The `params` column of a combination: `key=value` in the order of [`PARAMS`].
+fn params_string(combo: &[(Param, ParamValue)]) -> String {
+    combo
+        .iter()
+        .map(|(k, v)| format!("{}={v}", k.name()))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// The cartesian product of the given parameter lists, in the order of [`PARAMS`] (the order of
@@ -576,15 +932,15 @@ mod tests {
                 "expected a usize or a list",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nalgorithms = [\"nope\"]\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\nalgorithms = [\"nope\"]\n",
                 "family[0].algorithms",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n[[exact]]\nobjective = \"len\"\nmax_n = 3\ntime_limit = 1\n",
                 "exact[0].objective",
             ),
             (
-                "name = \"t\"\n[[family]]\nfamily = \"rect\"\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n",
+                "name = \"t\"\n[[family]]\nfamily = \"rect\"\nwidth = 2\nheight = 2\n[[exact]]\nobjective = \"length\"\ntime_limit = 1\n",
                 "max_n",
             ),
             ("name = \"t\"\n", "no instances"),
