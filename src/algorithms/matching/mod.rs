@@ -77,7 +77,7 @@ use rustworkx_core::petgraph::graph::UnGraph;
 use std::collections::HashMap;
 use turn_distance::{Port, TurnSearch, bit, cheapest_sources};
 /// Up to this many endpoints, the candidate graph is complete (the matching is exact).
-pub const COMPLETE_LIMIT: usize = 600;
+pub(crate) const COMPLETE_LIMIT: usize = 600;
 
 /// Larger instances start from, per endpoint, at least this many nearest endpoints (in turns).
 pub(crate) const NEAR: usize = 6;
@@ -156,7 +156,7 @@ pub enum Candidates {
 /// for 6,566 ends and 5 s for 24,672 on thin pockets). Other endpoints: O(P · A) for the initial candidates (A the area a BFS
 /// explores before meeting [`NEAR`] endpoints), then per round one HiGHS dual simplex
 /// re-solve and one O(N log N) pricing search; blossom only where the LP is fractional.
-pub fn match_ports(
+pub(crate) fn match_ports(
     region: &Region,
     ports: &[Port],
     partner: &[usize],

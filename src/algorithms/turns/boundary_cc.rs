@@ -189,7 +189,7 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
 /// paper does not discuss). This only lowers the count, and with a matching proven minimum it
 /// never applies: the cover would then beat the minimum, which the module docs prove is a
 /// lower bound.
-pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
+pub(crate) fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
     let mut visited: std::collections::HashSet<crate::region::Pixel> = cover
         .cycles
         .iter()
@@ -208,7 +208,7 @@ pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
 /// `boundary-cc` applies when every pixel is a boundary pixel (then it covers the region). A
 /// cycle cover needs no connectivity: on a region of several components it is a cycle cover
 /// of each (the matching never pairs ports of different components, which no path joins).
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::precondition("the region is empty"));
     }
@@ -224,7 +224,7 @@ pub fn precondition(region: &Region) -> Result<()> {
 /// Runs `boundary-cc`: the boundary cycle cover (objective `cc-turns`), certificates `w_m`,
 /// `links` and the matching's (`matching_complete`, `matching_optimal`, always 1 here,
 /// `matching_lower_bound`, `matching_candidates`).
-pub fn run(
+pub(crate) fn run(
     region: &Region,
     opts: &crate::algorithms::Options,
 ) -> Result<crate::algorithms::Solution> {

@@ -37,10 +37,10 @@ use std::collections::BTreeMap;
 
 /// The cycle cover of Theorem 5.5, with s, w(M) and the matching.
 #[derive(Clone, Debug)]
-pub struct StripMatchingCover {
-    pub cover: CycleCover,
-    pub s: usize,
-    pub matching: PortMatching,
+pub(crate) struct StripMatchingCover {
+    pub(crate) cover: CycleCover,
+    pub(crate) s: usize,
+    pub(crate) matching: PortMatching,
 }
 
 /// The ports of strips: port `2k` at strip k's start, `2k + 1` at its end.
@@ -59,7 +59,7 @@ pub fn strip_ports(region: &Region, strips: &[Strip]) -> (Vec<(usize, usize)>, V
 
 /// The least turn distance of every strip end to its partner (the other end of its strip): a
 /// one-pixel strip closed on itself is a still walk of 4 turns, 2 for the strip and 2 here.
-pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
+pub(crate) fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
     (0..2 * links.len())
         .map(|i| {
             if links[i / 2].0 == links[i / 2].1 {
@@ -76,7 +76,7 @@ pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
 /// # Complexity
 /// O(N √N) for the strip cover; the matching dominates (see
 /// [`match_ports`](crate::algorithms::endpoint_matching::match_ports)).
-pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
+pub(crate) fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
     let cover = strip_cover(region);
     let (links, ports) = strip_ports(region, &cover.strips);
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
@@ -93,7 +93,7 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
 /// Runs `strips-matching`: the cycle cover and its merged tour, with certificates s, w(M)
 /// (`w_m`), `matching_complete` (complete candidate graph), `matching_optimal` (w(M) proven
 /// minimum over all pairs), `matching_lower_bound` (proven) and `matching_candidates`.
-pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let smc = strips_matching_cover(region)?;
     let mut certificates = BTreeMap::new();
     certificates.insert("s".to_string(), smc.s as i64);
@@ -144,7 +144,7 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 8);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 8);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "strips-matching",
     summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",
     objectives: &[Objective::CcTurns, Objective::Turns],
@@ -172,15 +172,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             theorem: &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
         },
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_5,
             &[crate::algorithms::Objective::CcTurns],
@@ -203,7 +195,7 @@ mod tests {
     use crate::region::Pixel;
 
     /// The square donut of Fig. 5: outer side `l`, width `k`.
-    pub fn donut(l: i32, k: i32) -> Region {
+    fn donut(l: i32, k: i32) -> Region {
         Region::from_pixels(
             (0..l)
                 .flat_map(|y| (0..l).map(move |x| Pixel::new(x, y)))
