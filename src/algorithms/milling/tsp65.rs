@@ -713,17 +713,13 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
               length <= (6N-4)/5 without cut vertices (certificate bound_6n_4_5)",
     objectives: &[Objective::Length],
     guarantees: &[
-        Guarantee {
-            objective: Objective::Length,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 6,
-            den: 5,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
-            theorem: &crate::algorithms::theorems::MILLING_COR_3,
-        },
+        Guarantee::vs_opt(
+            Objective::Length,
+            6,
+            5,
+            &crate::algorithms::theorems::MILLING_COR_3,
+            "Theorem 5 and Corollary 3 of Lawn mowing and milling",
+        ),
         Guarantee {
             objective: Objective::Length,
             quantity: crate::algorithms::Quantity::Value,

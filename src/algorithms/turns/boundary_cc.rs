@@ -56,7 +56,7 @@
 
 use crate::algorithms::matching::turn_distance::{Port, bit};
 use crate::algorithms::matching::{COMPLETE_LIMIT, PortMatching, join_links, match_ports};
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective};
+use crate::algorithms::{Algorithm, Guarantee, Objective};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology::is_boundary;
@@ -292,17 +292,13 @@ pub const ALGORITHM: Algorithm = Algorithm {
     name: "boundary-cc",
     summary: "minimum-turn cycle cover of the boundary links by a minimum-weight perfect matching (regions of boundary pixels only)",
     objectives: &[Objective::CcTurns],
-    guarantees: &[Guarantee {
-        objective: Objective::CcTurns,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 1,
-        den: 1,
-        add: 0,
-        against: Against::Opt,
-        when: crate::algorithms::When::Always,
-        source: "Theorem 4.1 of Optimal covering tours with turn costs",
-        theorem: &crate::algorithms::theorems::TURNS_THM_4_1,
-    }],
+    guarantees: &[Guarantee::vs_opt(
+        Objective::CcTurns,
+        1,
+        1,
+        &crate::algorithms::theorems::TURNS_THM_4_1,
+        "Theorem 4.1 of Optimal covering tours with turn costs",
+    )],
     claims: &[crate::algorithms::theorems::Claim::reading(
         &crate::algorithms::theorems::TURNS_THM_4_1,
         &[crate::algorithms::Objective::CcTurns],

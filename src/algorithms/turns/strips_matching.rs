@@ -27,7 +27,7 @@
 use crate::algorithms::matching::turn_distance::Port;
 use crate::algorithms::matching::{PortMatching, join_links, match_ports};
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::Region;
 use crate::strip_cover::strip_cover;
@@ -149,28 +149,20 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 5,
-            den: 2,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.5 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_5,
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 15,
-            den: 4,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
-        },
+        Guarantee::vs_opt(
+            Objective::CcTurns,
+            5,
+            2,
+            &crate::algorithms::theorems::TURNS_THM_5_5,
+            "Theorem 5.5 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::vs_opt(
+            Objective::Turns,
+            15,
+            4,
+            &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
+            "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
+        ),
     ],
     claims: crate::algorithms::theorems::merged_tour_claims![
         crate::algorithms::theorems::Claim::paper(

@@ -31,7 +31,7 @@
 use crate::algorithms::boundary_cc::boundary_cycle_cover;
 use crate::algorithms::matching::PortMatching;
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
 use crate::region::Region;
 use crate::topology::{components, is_thin};
@@ -146,17 +146,13 @@ pub(crate) fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
 }
 
 /// The guarantee of the cycle cover both thin entries build (the same optimal cover).
-const CYCLE_COVER_GUARANTEE: Guarantee = Guarantee {
-    objective: Objective::CcTurns,
-    quantity: crate::algorithms::Quantity::Value,
-    num: 1,
-    den: 1,
-    add: 0,
-    against: Against::Opt,
-    when: crate::algorithms::When::Always,
-    source: "Corollary 5.3 of Optimal covering tours with turn costs",
-    theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
-};
+const CYCLE_COVER_GUARANTEE: Guarantee = Guarantee::vs_opt(
+    Objective::CcTurns,
+    1,
+    1,
+    &crate::algorithms::theorems::TURNS_COR_5_3,
+    "Corollary 5.3 of Optimal covering tours with turn costs",
+);
 
 /// The claim of the cycle cover both thin entries build, written once.
 const CYCLE_COVER_CLAIM: crate::algorithms::theorems::Claim =
@@ -210,17 +206,13 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
         CYCLE_COVER_GUARANTEE,
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 3,
-            den: 2,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Corollary 5.3 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
-        },
+        Guarantee::vs_opt(
+            Objective::Turns,
+            3,
+            2,
+            &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
+            "Corollary 5.3 of Optimal covering tours with turn costs",
+        ),
     ],
     claims: crate::algorithms::theorems::merged_tour_claims![
         CYCLE_COVER_CLAIM,
@@ -278,17 +270,13 @@ pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
         CYCLE_COVER_GUARANTEE,
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 4,
-            den: 3,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.9 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_9,
-        },
+        Guarantee::vs_opt(
+            Objective::Turns,
+            4,
+            3,
+            &crate::algorithms::theorems::TURNS_THM_5_9,
+            "Theorem 5.9 of Optimal covering tours with turn costs",
+        ),
     ],
     claims: crate::algorithms::theorems::merged_tour_claims![
         CYCLE_COVER_CLAIM,

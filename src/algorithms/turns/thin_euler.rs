@@ -19,9 +19,7 @@
 
 use crate::algorithms::merge::merge_cycles;
 use crate::algorithms::precondition::connected;
-use crate::algorithms::{
-    Against, Algorithm, Guarantee, Merge, Objective, Options, Output, Solution,
-};
+use crate::algorithms::{Algorithm, Guarantee, Merge, Objective, Options, Output, Solution};
 use crate::checker::{Mode, check};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
@@ -166,17 +164,13 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "thin-euler",
     summary: "thin Eulerian pocket: straight-through Euler decomposition joined at crossings (+2 turns each)",
     objectives: &[Objective::CcTurns, Objective::Turns],
-    guarantees: &[Guarantee {
-        objective: Objective::Turns,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 6,
-        den: 5,
-        add: 0,
-        against: Against::Opt,
-        when: crate::algorithms::When::Always,
-        source: "Theorem 5.8 of Optimal covering tours with turn costs",
-        theorem: &crate::algorithms::theorems::TURNS_THM_5_8,
-    }],
+    guarantees: &[Guarantee::vs_opt(
+        Objective::Turns,
+        6,
+        5,
+        &crate::algorithms::theorems::TURNS_THM_5_8,
+        "Theorem 5.8 of Optimal covering tours with turn costs",
+    )],
     claims: &[crate::algorithms::theorems::Claim::paper(
         &crate::algorithms::theorems::TURNS_THM_5_8,
         &[crate::algorithms::Objective::Turns],
