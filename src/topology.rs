@@ -295,7 +295,7 @@ pub fn cut_vertices(region: &Region) -> Vec<bool> {
 /// it reduces the number of holes exactly when those neighbours touch two or more distinct
 /// complement components; with the cut vertices, these are the pixels whose 8-neighbourhood
 /// holds two or more 4-connected arcs of the region, that is whose Yokoi
-/// [`connectivity_number`] is at least 2 (a closed path through two arcs separates the
+/// `connectivity_number` is at least 2 (a closed path through two arcs separates the
 /// complement cells between them). That local test needs no global pass.
 ///
 /// # Complexity

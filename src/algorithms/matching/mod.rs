@@ -2,7 +2,7 @@
 //! proof of Theorem 5.5 of *Optimal covering tours with turn costs*).
 //!
 //! # Which pairs are candidates, and what is proven
-//! - Up to [`COMPLETE_LIMIT`] endpoints every reachable pair is a candidate and rustworkx-core's
+//! - Up to `COMPLETE_LIMIT` endpoints every reachable pair is a candidate and rustworkx-core's
 //!   blossom algorithm (`max_weight_matching`, maximum cardinality, weights `BIG − w`) finds
 //!   the exact minimum (certificates `matching_complete = 1`, `matching_optimal = 1`).
 //! - Beyond that, for strip ends (`strips-matching`), no pair is listed at all
@@ -170,7 +170,7 @@ pub(crate) fn match_ports(
     match_ports_with(region, ports, partner, floor, how)
 }
 
-/// [`match_ports`] with the candidate pairs chosen as asked.
+/// `match_ports` with the candidate pairs chosen as asked.
 pub fn match_ports_with(
     region: &Region,
     ports: &[Port],

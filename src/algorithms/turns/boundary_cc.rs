@@ -28,7 +28,7 @@
 //!   both only when one of them has several pixels, which moves, so the walk is one one-pixel
 //!   link joined to itself: priced at least 4, counted 4. (Before this rule, a one-pixel
 //!   horizontal and a one-pixel vertical link at p could close a still walk priced 1 + 1 = 2
-//!   and counted 4: the +2 of issue 12.) [`drop_still_duplicates`] may only lower the count.
+//!   and counted 4: the +2 of issue 12.) `drop_still_duplicates` may only lower the count.
 //! - *Every cycle cover C costs at least the minimum.* By Lemma 4.1 (the paper's, with our
 //!   grid reading of shared lines), C's walks can be taken to contain every link, kept or left
 //!   out, as part of a straight stretch, without more turns; a one-pixel link at p is contained
@@ -159,7 +159,7 @@ pub fn boundary_ports(links: &[BoundaryLink]) -> (Vec<Port>, Vec<usize>, Vec<u32
 /// The minimum-turn cycle cover of the boundary links, with its matching.
 ///
 /// # Complexity
-/// The matching dominates: see [`match_ports`]. Beyond [`COMPLETE_LIMIT`] ends it is exact
+/// The matching dominates: see `match_ports`. Beyond `COMPLETE_LIMIT` ends it is exact
 /// over all pairs through the ray graph (measured for all of `thin-merge`: 0.06 s for 682
 /// ends, 0.74 s for 8,274, 5.7 s for 24,672).
 pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching)> {
@@ -249,7 +249,7 @@ pub(crate) fn run(
 }
 
 /// The registry entry of `boundary-cc`: the minimum-turn cycle cover of the boundary links by a
-/// minimum-weight perfect matching of their ports ([`run`]).
+/// minimum-weight perfect matching of their ports (`run`).
 ///
 /// # Guarantee
 ///

@@ -19,7 +19,7 @@
 //! tour crosses each strip end orthogonally; Theorem 5.5). Tour: ≤ 3/2 of that, 3.75·OPT
 //! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching over all pairs: it is
 //! proven so when `matching_optimal = 1` (always up to
-//! [`COMPLETE_LIMIT`](crate::algorithms::endpoint_matching::COMPLETE_LIMIT) ports, where the candidate
+//! `COMPLETE_LIMIT` ports, where the candidate
 //! graph is complete; beyond, when the matching reaches the LP bound). Otherwise
 //! `matching_lower_bound` is a proven lower bound on the minimum, and the guarantee holds
 //! with w(M) − `matching_lower_bound` added; see [`endpoint_matching`](crate::algorithms::endpoint_matching).
