@@ -15,6 +15,7 @@
 
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
+use crate::topology::{Saddle, boundary_rings};
 use crate::tour::CycleCover;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -28,7 +29,7 @@ use std::sync::Once;
 ///
 /// It is the generic `sans-serif`, so that an SVG, which names the family rather than
 /// embedding the font, still renders in a sans-serif face where DejaVu is not installed.
-pub const FONT_FAMILY: &str = "sans-serif";
+pub(crate) const FONT_FAMILY: &str = "sans-serif";
 
 static DEJAVU_SANS: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
 
@@ -36,7 +37,7 @@ static DEJAVU_SANS: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
 ///
 /// plotters' `ab_glyph` text renderer knows no system fonts: call this before drawing any
 /// text with plotters. [`draw`] calls it itself.
-pub fn ensure_fonts() {
+pub(crate) fn ensure_fonts() {
     static REGISTER: Once = Once::new();
     REGISTER.call_once(|| {
         if register_font(FONT_FAMILY, FontStyle::Normal, DEJAVU_SANS).is_err() {
@@ -146,7 +147,11 @@ pub fn draw(
         } else {
             Vec::new()
         },
-        contours: crate::topology::boundary_polygons(region),
+        // Saddles kept apart, as the outline has always been drawn (each pixel its own corner).
+        contours: boundary_rings(region, Saddle::Apart)
+            .into_iter()
+            .map(|ring| ring.corners)
+            .collect(),
         walks,
         detailed,
         mark_turns: opts.mark_turns,
@@ -508,7 +513,7 @@ const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
 /// Walk colours: the Okabe–Ito colour-blind-safe palette without its yellow and black (too
 /// faint and too close to the outline), then two more; cycled when there are more walks. The
 /// plots of `harness::plots` use it too.
-pub const PALETTE: [RGBColor; 8] = [
+pub(crate) const PALETTE: [RGBColor; 8] = [
     RGBColor(0x00, 0x72, 0xb2), // blue
     RGBColor(0xd5, 0x5e, 0x00), // vermillion
     RGBColor(0x00, 0x9e, 0x73), // bluish green
@@ -597,7 +602,7 @@ struct Scene<'a> {
     layout: Layout,
     rects: Vec<[i32; 4]>,
     grid: Vec<[(i32, i32); 2]>,
-    contours: Vec<Vec<(i32, i32)>>,
+    contours: Vec<Vec<(i64, i64)>>,
     walks: Vec<WalkShape>,
     detailed: bool,
     mark_turns: bool,
@@ -719,7 +724,8 @@ fn render<DB: DrawingBackend>(
             stroke_closed(
                 area,
                 strokes,
-                contour.iter().map(|&p| lattice(p)),
+                // Lattice corners of drawable regions are far below 2^53: exact in f64.
+                contour.iter().map(|&(x, y)| at(x as f64, y as f64)),
                 OUTLINE,
                 w,
             )?;
@@ -1059,12 +1065,18 @@ mod tests {
 
     #[test]
     fn contours_separate_outer_boundary_holes_and_diagonal_touches() {
+        let corners = |r: &Region| -> Vec<Vec<(i64, i64)>> {
+            boundary_rings(r, Saddle::Apart)
+                .into_iter()
+                .map(|ring| ring.corners)
+                .collect()
+        };
         let ring = Region::from_ascii(
             "###
              #.#
              ###",
         );
-        let contours = crate::topology::boundary_polygons(&ring);
+        let contours = corners(&ring);
         assert_eq!(contours.len(), 2);
         let outer = contours.iter().find(|c| c.contains(&(0, 0))).unwrap();
         let hole = contours.iter().find(|c| c.contains(&(1, 1))).unwrap();
@@ -1077,7 +1089,7 @@ mod tests {
             ".#
              #.",
         );
-        let contours = crate::topology::boundary_polygons(&diagonal);
+        let contours = corners(&diagonal);
         assert_eq!(contours.len(), 2);
         assert!(contours.iter().all(|c| c.len() == 4));
     }

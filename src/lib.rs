@@ -7,6 +7,34 @@
 //! runs an algorithm and judges its output; the command line, the benchmark runner and the
 //! tight families all call it.
 //!
+//! # Public surface
+//!
+//! Only what a library user (and the `mowmill` binary, the tests, examples and benches) needs:
+//!
+//! - [`region`]: the pixel set [`Region`], with [`Pixel`], [`Dir`] and [`Symmetry`].
+//! - [`instance`], [`gridfile`], [`wkt`]: reading regions (`.grid` text or WKT) and writing
+//!   them back ([`gridfile::GridFile`], [`wkt::to_wkt`]).
+//! - [`generate`]: deterministic instance families ([`generate::generate`]).
+//! - [`tour`]: closed walks and cycle covers ([`CycleCover`], [`Walk`]) and tour files.
+//! - [`algorithms`]: the one registry ([`algorithms::REGISTRY`], [`algorithms::find`]), what its
+//!   entries declare (objectives, guarantees, options) and [`algorithms::theorems`], the papers'
+//!   theorems they claim. The algorithms themselves are run through [`evaluate`].
+//! - [`evaluate`]: run a registered or outside algorithm and judge its outputs.
+//! - [`checker`], [`lawn_check`]: the independent checkers of milling and lawn-mowing walks.
+//! - [`exact`]: exact optima by integer programming and their lower bounds; [`bounds`]: the
+//!   cheap proven lower bounds.
+//! - [`topology`], [`strip_cover`]: facts about a region (components, holes, cut vertices,
+//!   strips, the minimum strip cover).
+//! - [`outside`]: programs in any language run as algorithms.
+//! - [`draw`]: SVG and PNG pictures of a region and its walks.
+//! - [`tight`]: the papers' tight families, measured.
+//! - [`harness`]: the benchmark runner, its statistics, plots and regression gate.
+//! - [`error`]: the library's [`Error`] type.
+//!
+//! A few algorithm internals that the integration tests drive directly (the boundary cycle
+//! cover, the endpoint matching, turn distances, cycle merging, the coverage-4 rewrite) are
+//! public but hidden from the documentation; they are not part of the supported surface.
+//!
 //! # Example
 //!
 //! Read a region, run a registered algorithm through the evaluation pipeline, and look at the
@@ -43,7 +71,8 @@ pub mod draw;
 pub mod error;
 pub mod evaluate;
 pub mod exact;
-pub mod flow;
+// Dinic max-flow only serves the cuts of the exact models and the matching LP.
+pub(crate) mod flow;
 pub mod generate;
 pub mod gridfile;
 pub mod harness;

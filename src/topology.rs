@@ -10,6 +10,7 @@
 //! pixels), never to the area of the bounding box.
 
 use crate::region::{Dir, Pixel, Region};
+use petgraph::unionfind::UnionFind;
 use serde::Serialize;
 
 /// The counts `mowmill info` reports (its JSON keys are these field names).
@@ -157,42 +158,6 @@ impl Holes {
     }
 }
 
-/// Union-find by size with path halving over `0..n`.
-struct DisjointSets {
-    parent: Vec<u32>,
-    size: Vec<u32>,
-}
-
-impl DisjointSets {
-    fn new(n: usize) -> DisjointSets {
-        DisjointSets {
-            parent: (0..n as u32).collect(),
-            size: vec![1; n],
-        }
-    }
-
-    fn find(&mut self, mut a: u32) -> u32 {
-        while self.parent[a as usize] != a {
-            let up = self.parent[self.parent[a as usize] as usize];
-            self.parent[a as usize] = up;
-            a = up;
-        }
-        a
-    }
-
-    fn union(&mut self, a: u32, b: u32) {
-        let (mut ra, mut rb) = (self.find(a), self.find(b));
-        if ra == rb {
-            return;
-        }
-        if self.size[ra as usize] < self.size[rb as usize] {
-            (ra, rb) = (rb, ra);
-        }
-        self.parent[rb as usize] = ra;
-        self.size[ra as usize] += self.size[rb as usize];
-    }
-}
-
 /// The holes of a region: bounded 8-connected components of its complement.
 ///
 /// In every row the empty cells between two runs of pixels form a gap; the cells left of the
@@ -228,8 +193,9 @@ pub fn holes(region: &Region) -> Holes {
     }
     row_gap.push(gaps.len() as u32);
 
-    // Node 0 is the outside, node k + 1 the gap k.
-    let mut sets = DisjointSets::new(gaps.len() + 1);
+    // Node 0 is the outside, node k + 1 the gap k; petgraph's union-find, as elsewhere in the
+    // crate (holes are renumbered below, so which root a union keeps does not matter).
+    let mut sets = UnionFind::<u32>::new(gaps.len() + 1);
     // Row r's gaps with the outer cells on both ends, as (x0, x1, node), in i64 so that the
     // outer ends can be infinite.
     let extended = |r: usize| {
@@ -277,11 +243,11 @@ pub fn holes(region: &Region) -> Holes {
         }
     }
     // Number the holes in gap order: by lowest, then leftmost, cell.
-    let outside = sets.find(0);
+    let outside = sets.find_mut(0);
     let mut hole_of_root = vec![0u32; gaps.len() + 1];
     let mut count = 0;
     for (k, gap) in gaps.iter_mut().enumerate() {
-        let root = sets.find(k as u32 + 1) as usize;
+        let root = sets.find_mut(k as u32 + 1) as usize;
         if root != outside as usize {
             if hole_of_root[root] == 0 {
                 count += 1;
@@ -329,7 +295,7 @@ pub fn cut_vertices(region: &Region) -> Vec<bool> {
 /// it reduces the number of holes exactly when those neighbours touch two or more distinct
 /// complement components; with the cut vertices, these are the pixels whose 8-neighbourhood
 /// holds two or more 4-connected arcs of the region, that is whose Yokoi
-/// [`connectivity_number`] is at least 2 (a closed path through two arcs separates the
+/// `connectivity_number` is at least 2 (a closed path through two arcs separates the
 /// complement cells between them). That local test needs no global pass.
 ///
 /// # Complexity
@@ -345,7 +311,7 @@ pub fn local_cut_vertices(region: &Region) -> Vec<bool> {
 /// # Complexity
 /// O(1) when pixel `i` has a side neighbour next to each diagonal, else O(log r) for r runs in
 /// the row of that diagonal.
-pub fn ring_occupancy(region: &Region, i: usize) -> [bool; 8] {
+pub(crate) fn ring_occupancy(region: &Region, i: usize) -> [bool; 8] {
     let side = Dir::ALL.map(|d| region.neighbor(i, d));
     let p = region.pixel(i);
     let mut occupied = [false; 8];
@@ -383,7 +349,7 @@ pub fn ring(p: Pixel) -> [Pixel; 8] {
 /// touch its sides. 1 means the pixel is *simple* (adding or removing it changes neither the
 /// components nor the holes); 2 or more means it is a local cut vertex when it belongs to the
 /// region.
-pub fn connectivity_number(occupied: [bool; 8]) -> u32 {
+pub(crate) fn connectivity_number(occupied: [bool; 8]) -> u32 {
     (0..4)
         .map(|k| {
             let (a, b, c) = (
@@ -397,12 +363,14 @@ pub fn connectivity_number(occupied: [bool; 8]) -> u32 {
 }
 
 /// [`connectivity_number`] of pixel `p` (in the region or not) with respect to `region`.
-pub fn connectivity_number_at(region: &Region, p: Pixel) -> u32 {
+// Only the tests ask this of a single pixel; the crate's callers work on ring occupancies.
+#[cfg(test)]
+fn connectivity_number_at(region: &Region, p: Pixel) -> u32 {
     connectivity_number(ring(p).map(|q| region.contains(q)))
 }
 
 /// Colour classes of the checkerboard: (#black, #white), black when x + y is even.
-pub fn colour_counts(region: &Region) -> (usize, usize) {
+pub(crate) fn colour_counts(region: &Region) -> (usize, usize) {
     let black = region.pixels().iter().filter(|p| p.is_black()).count();
     (black, region.len() - black)
 }
@@ -482,7 +450,7 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
 /// The biconnected components (blocks) of the grid graph, as pixel lists: iterative
 /// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels. Blocks come in the
 /// order the search closes them (the order Theorem 5's tours of the blocks are built in).
-pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
+pub(crate) fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
     let mut blocks = Vec::new();
     for_each_block(region, |block| blocks.push(std::mem::take(block)));
     blocks
@@ -557,69 +525,110 @@ fn for_each_block(region: &Region, mut f: impl FnMut(&mut Vec<usize>)) {
     }
 }
 
-/// The region's boundary as closed lattice polygons (corners only, the first not repeated),
-/// traced with the region on the left: outer boundaries counter-clockwise, holes clockwise.
+/// What the boundary does at a saddle: a lattice point where two region pixels touch only
+/// diagonally (the other two pixels around it are empty).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Saddle<'a> {
+    /// Each pixel keeps its own corner, as 4-adjacency has it: rings of different components
+    /// stay apart, and a ring may pass a saddle twice (the drawn outline).
+    Apart,
+    /// Pixels with equal labels are joined around the empty pixel, others kept apart: no ring
+    /// passes a point twice and rings only touch, as OGC requires of polygon rings (WKT).
+    JoinSameLabel(&'a [u32]),
+}
+
+/// A closed boundary ring of a region.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Ring {
+    /// Corners (collinear points dropped, the first not repeated), traced with the region on
+    /// the left (outer boundaries counter-clockwise, holes clockwise), from the lowest, then
+    /// leftmost, one.
+    pub(crate) corners: Vec<(i64, i64)>,
+    /// Index of a pixel the ring bounds (one on its left).
+    pub(crate) pixel: usize,
+}
+
+/// The region's boundary as closed rings, in the order of their first corner (lowest, then
+/// leftmost); `saddle` decides what happens where pixels touch only diagonally. The crate's one
+/// boundary tracer: the drawn outline and the WKT writer both use it.
 ///
-/// Where two region pixels touch only at a corner, the tracing turns left (towards the
-/// region), so they end up on separate contours, as 4-adjacency has it.
-pub fn boundary_polygons(region: &Region) -> Vec<Vec<(i32, i32)>> {
-    if region.is_empty() {
-        return Vec::new();
-    }
-    let b = region.bbox();
-    let (w1, h1) = (b.width() + 1, b.height() + 1);
-    let vertex = |x: i32, y: i32| (y - b.min_y) as usize * w1 + (x - b.min_x) as usize;
-    // out[v]: bit d set when a boundary edge leaves lattice point v in direction d.
-    let mut out = vec![0u8; w1 * h1];
-    let mut edges = 0usize;
-    for &p in region.pixels() {
-        let (x, y) = (p.x, p.y);
-        for (side, start, d) in [
-            (Dir::S, (x, y), Dir::E),
-            (Dir::E, (x + 1, y), Dir::N),
-            (Dir::N, (x + 1, y + 1), Dir::W),
-            (Dir::W, (x, y + 1), Dir::S),
-        ] {
-            if !region.contains(p.step(side)) {
-                out[vertex(start.0, start.1)] |= 1 << d.index();
-                edges += 1;
+/// A unit boundary edge is named by the pixel on its left and the side of that pixel it lies
+/// on; the walk goes from edge to edge, turning left around its own pixel, going straight onto
+/// the next pixel, or turning right around an empty pixel onto a diagonal one.
+///
+/// # Complexity
+/// O(N + P log P) time and O(N) extra space for N pixels and P rings (i64 corners, so a pixel
+/// at `i32::MAX` has its far corners), never the area of the bounding box.
+pub(crate) fn boundary_rings(region: &Region, saddle: Saddle) -> Vec<Ring> {
+    let mut visited = vec![false; 4 * region.len()];
+    let mut rings = Vec::new();
+    for i in 0..region.len() {
+        for side in Dir::ALL {
+            if region.neighbor(i, side).is_none() && !visited[4 * i + side.index()] {
+                let corners = trace_ring(region, saddle, &mut visited, i, side);
+                rings.push(Ring { corners, pixel: i });
             }
         }
     }
-    let next_dir = |v: usize, arriving: Dir| {
-        [arriving.left(), arriving, arriving.right()]
-            .into_iter()
-            .find(|d| out[v] & (1 << d.index()) != 0)
+    // At most one ring has its lowest-leftmost corner at a given point (a saddle has one
+    // outgoing edge west or south), so this order is total.
+    rings.sort_unstable_by_key(|r| r.corners.first().map(|&(x, y)| (y, x)));
+    rings
+}
+
+/// Walks the boundary ring through the unit edge on side `start_side` of pixel `start`,
+/// keeping the region on the left, and returns its corners from the lowest, then leftmost, one.
+fn trace_ring(
+    region: &Region,
+    saddle: Saddle,
+    visited: &mut [bool],
+    start: usize,
+    start_side: Dir,
+) -> Vec<(i64, i64)> {
+    let apart = |a: usize, b: usize| match saddle {
+        Saddle::Apart => true,
+        Saddle::JoinSameLabel(label) => label[a] != label[b],
     };
-    let mut left = out.clone();
-    let mut contours = Vec::new();
-    for v0 in 0..left.len() {
-        while left[v0] != 0 {
-            let d0 = Dir::from_index(left[v0].trailing_zeros() as usize);
-            let mut steps: Vec<(usize, Dir)> = Vec::new();
-            let (mut v, mut d) = (v0, d0);
-            loop {
-                steps.push((v, d));
-                left[v] &= !(1 << d.index());
-                let (x, y) = ((v % w1) as i32, (v / w1) as i32);
-                let (dx, dy) = d.delta();
-                v = (y + dy) as usize * w1 + (x + dx) as usize;
-                match next_dir(v, d) {
-                    Some(nd) if (v, nd) != (v0, d0) && steps.len() <= edges => d = nd,
-                    _ => break,
-                }
-            }
-            let corners = (0..steps.len())
-                .filter(|&i| steps[(i + steps.len() - 1) % steps.len()].1 != steps[i].1)
-                .map(|i| {
-                    let v = steps[i].0;
-                    ((v % w1) as i32 + b.min_x, (v / w1) as i32 + b.min_y)
-                })
-                .collect();
-            contours.push(corners);
+    let mut corners = Vec::new();
+    let (mut i, mut side) = (start, start_side);
+    // Every step visits a new unit edge, so the walk is back at the start after at most 4N.
+    for _ in 0..visited.len() {
+        visited[4 * i + side.index()] = true;
+        let heading = side.left();
+        let pixel = region.pixel(i);
+        let ahead_left = pixel.step(heading);
+        let ahead_right = region.index_of(ahead_left.step(side));
+        let (next, next_side) = match (region.index_of(ahead_left), ahead_right) {
+            (Some(a), None) => (a, side),
+            (None, None) => (i, heading),
+            (None, Some(b)) if apart(i, b) => (i, heading),
+            (_, Some(b)) => (b, heading.opposite()),
+        };
+        if next_side != side {
+            corners.push(edge_end(pixel, side));
+        }
+        (i, side) = (next, next_side);
+        if (i, side) == (start, start_side) {
+            break;
         }
     }
-    contours
+    let first = (0..corners.len())
+        .min_by_key(|&k| (corners[k].1, corners[k].0))
+        .unwrap_or(0);
+    corners.rotate_left(first);
+    corners
+}
+
+/// The corner where the unit edge on side `side` of `pixel` ends, walking with the pixel on
+/// the left.
+fn edge_end(pixel: Pixel, side: Dir) -> (i64, i64) {
+    let (sx, sy) = side.delta();
+    let (hx, hy) = side.left().delta();
+    // Exactly one of sx, hx is non-zero, so (sx + hx + 1) / 2 is 0 or 1; likewise for y.
+    (
+        i64::from(pixel.x) + i64::from((sx + hx + 1) / 2),
+        i64::from(pixel.y) + i64::from((sy + hy + 1) / 2),
+    )
 }
 
 /// Connected components of the graph on nodes `0..n` with the given edges: a label per node in
@@ -627,11 +636,11 @@ pub fn boundary_polygons(region: &Region) -> Vec<Vec<(i32, i32)>> {
 ///
 /// # Complexity
 /// O((n + edges) α(n)) (petgraph's union-find).
-pub fn graph_components(
+pub(crate) fn graph_components(
     n: usize,
     edges: impl IntoIterator<Item = (usize, usize)>,
 ) -> (Vec<u32>, usize) {
-    let mut uf = petgraph::unionfind::UnionFind::<usize>::new(n);
+    let mut uf = UnionFind::<usize>::new(n);
     for (a, b) in edges {
         uf.union(a, b);
     }

@@ -11,31 +11,31 @@ use crate::tour::Walk;
 /// Edge multiplicities of a multigraph on the grid graph of a region: `mult[i][d]` copies of
 /// the edge from pixel `i` in direction `d` (kept symmetric).
 #[derive(Clone, Debug)]
-pub struct GridMultigraph {
+pub(crate) struct GridMultigraph {
     mult: Vec<[u32; 4]>,
 }
 
 impl GridMultigraph {
     /// The empty multigraph on `n` pixels.
-    pub fn new(n: usize) -> Self {
+    pub(crate) fn new(n: usize) -> Self {
         GridMultigraph {
             mult: vec![[0; 4]; n],
         }
     }
 
     /// Copies of the edge from `i` in direction `d`.
-    pub fn count(&self, i: usize, d: Dir) -> u32 {
+    pub(crate) fn count(&self, i: usize, d: Dir) -> u32 {
         self.mult[i][d.index()]
     }
 
     /// Adds one copy of the edge from `i` to its neighbour `j` in direction `d`.
-    pub fn add(&mut self, i: usize, j: usize, d: Dir) {
+    pub(crate) fn add(&mut self, i: usize, j: usize, d: Dir) {
         self.mult[i][d.index()] += 1;
         self.mult[j][d.opposite().index()] += 1;
     }
 
     /// Removes one copy of the edge from `i` to `j` (direction `d`); false if there is none.
-    pub fn remove(&mut self, i: usize, j: usize, d: Dir) -> bool {
+    pub(crate) fn remove(&mut self, i: usize, j: usize, d: Dir) -> bool {
         if self.mult[i][d.index()] == 0 {
             return false;
         }
@@ -45,7 +45,7 @@ impl GridMultigraph {
     }
 
     /// Adds the edge between two adjacent pixels, looked up in `region`.
-    pub fn add_between(&mut self, region: &Region, a: usize, b: usize) {
+    pub(crate) fn add_between(&mut self, region: &Region, a: usize, b: usize) {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -54,7 +54,7 @@ impl GridMultigraph {
     }
 
     /// Removes one copy of the edge between two adjacent pixels; false if there is none.
-    pub fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
+    pub(crate) fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -63,7 +63,7 @@ impl GridMultigraph {
     }
 
     /// Whether the edge between two adjacent pixels has at least one copy.
-    pub fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
+    pub(crate) fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -72,7 +72,7 @@ impl GridMultigraph {
     }
 
     /// Adds every step of a closed walk of region pixels (wrap-around included).
-    pub fn add_closed_walk(&mut self, region: &Region, walk: &[usize]) {
+    pub(crate) fn add_closed_walk(&mut self, region: &Region, walk: &[usize]) {
         if walk.len() < 2 {
             return;
         }
@@ -82,19 +82,21 @@ impl GridMultigraph {
     }
 
     /// Adds every step of an open path of region pixels.
-    pub fn add_path(&mut self, region: &Region, path: &[usize]) {
+    pub(crate) fn add_path(&mut self, region: &Region, path: &[usize]) {
         for w in path.windows(2) {
             self.add_between(region, w[0], w[1]);
         }
     }
 
-    /// Degree of pixel `i` (with multiplicities).
-    pub fn degree(&self, i: usize) -> u32 {
+    /// Degree of pixel `i` (with multiplicities); the tests' check of a multigraph.
+    #[cfg(test)]
+    fn degree(&self, i: usize) -> u32 {
         self.mult[i].iter().sum()
     }
 
-    /// Total number of edges (with multiplicities).
-    pub fn edge_count(&self) -> u64 {
+    /// Total number of edges (with multiplicities); the tests' check of a multigraph.
+    #[cfg(test)]
+    fn edge_count(&self) -> u64 {
         self.mult.iter().map(|m| u64::from(m[0] + m[1])).sum()
     }
 
@@ -104,7 +106,7 @@ impl GridMultigraph {
     ///
     /// # Complexity
     /// O(number of edges + N).
-    pub fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
+    pub(crate) fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
         let mut circuit = Vec::new();
         let mut stack = vec![start];
         while let Some(&v) = stack.last() {
@@ -129,17 +131,12 @@ impl GridMultigraph {
     }
 
     /// The Euler circuit as a walk of pixels; a single pixel when there are no edges.
-    pub fn into_walk(mut self, region: &Region, start: usize) -> Walk {
+    pub(crate) fn into_walk(mut self, region: &Region, start: usize) -> Walk {
         self.euler_circuit(region, start)
             .into_iter()
             .map(|i| region.pixel(i))
             .collect::<Vec<Pixel>>()
     }
-}
-
-/// Converts a walk given as pixel indices into pixels, ensuring a non-empty walk.
-pub fn indices_to_walk(region: &Region, walk: &[usize]) -> Walk {
-    walk.iter().map(|&i| region.pixel(i)).collect()
 }
 
 #[cfg(test)]

@@ -37,10 +37,10 @@ use std::collections::HashMap;
 
 /// Above this many points `lawn-2opt` starts from the MST tour only (the blossom matching is
 /// cubic in the number of odd-degree nodes).
-pub const CHRISTOFIDES_LIMIT: usize = 20_000;
+pub(crate) const CHRISTOFIDES_LIMIT: usize = 20_000;
 
 /// The grass must be non-empty.
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::Precondition("the lawn has no grass".into()));
     }
@@ -707,7 +707,7 @@ fn output_walk(p: &Points, tour: &[usize]) -> Walk {
 
 /// A lower bound on the optimal lawn tour from the area swept (covered area ≤ L·w + a), in
 /// the reported units (exact L1 units, or milli-units for Euclidean motion), rounded down.
-pub fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
+pub(crate) fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
     let area = region.len() as f64;
     let (w, a, scale) = match cutter {
         Cutter::Square => (1.0, 1.0, 1.0),
@@ -749,7 +749,7 @@ fn mst_weight(p: &Points, mst: &[(usize, usize)]) -> f64 {
 ///
 /// # Complexity
 /// O(N log N) expected for lawns of few components (Borůvka rounds over component borders).
-pub fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
@@ -762,7 +762,7 @@ pub fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
 ///
 /// # Complexity
 /// O(N log N + M³) with M ≤ N the odd-degree nodes of the MST (blossom matching).
-pub fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
@@ -780,7 +780,7 @@ pub fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
 
 /// `lawn-2opt`: 2-opt and Or-opt from the better of the MST and Christofides tours (MST only
 /// above [`CHRISTOFIDES_LIMIT`] points); never longer than its start.
-pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
@@ -806,7 +806,7 @@ pub fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
 /// The factor is therefore 3αTSP + (3/10)·αTSP: θ = 3/10 is the paper's value for αTSP = 1,
 /// and for Christofides (αTSP = 3/2) it is 9/20, giving 9/2 + 9/20 = 99/20 (not 3α + 3/10 =
 /// 24/5, which this registry stated before).
-pub fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     if opts.cutter == Cutter::Disk {
         return Err(Error::Precondition(
@@ -885,7 +885,7 @@ const fn rectilinear(
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
 /// ```
-pub const LAWN_MST: Algorithm = Algorithm {
+pub(crate) const LAWN_MST: Algorithm = Algorithm {
     name: "lawn-mst",
     summary: "lawn mowing: doubled MST of the cell centres, shortcut (Theorems 2-3, alpha = 2)",
     objectives: &[Objective::LawnLength],
@@ -941,7 +941,7 @@ pub const LAWN_MST: Algorithm = Algorithm {
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
 /// ```
-pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
+pub(crate) const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     name: "lawn-christofides",
     summary: "lawn mowing: Christofides on the cell centres (Theorems 2-3, alpha = 3/2)",
     objectives: &[Objective::LawnLength],
@@ -997,7 +997,7 @@ pub const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
 /// ```
-pub const LAWN_TWO_OPT: Algorithm = Algorithm {
+pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
     name: "lawn-2opt",
     summary: "lawn mowing: 2-opt/Or-opt from the better of the MST and Christofides tours",
     objectives: &[Objective::LawnLength],
@@ -1056,7 +1056,7 @@ pub const LAWN_TWO_OPT: Algorithm = Algorithm {
 /// // A 5 x 5 lawn with a one-pixel hole: a ring through its 24 pixels.
 /// assert_eq!(tour.length, 24);
 /// ```
-pub const LAWN_BOX: Algorithm = Algorithm {
+pub(crate) const LAWN_BOX: Algorithm = Algorithm {
     name: "lawn-box",
     summary: "lawn mowing: shorter of the bounding-box rings (Fig. 9) and Christofides",
     objectives: &[Objective::LawnLength],

@@ -5,7 +5,7 @@ use crate::region::Region;
 
 /// Precondition of every tour algorithm here: a non-empty region with one connected component
 /// (a tour cannot leave a component).
-pub fn connected(region: &Region) -> Result<()> {
+pub(crate) fn connected(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::precondition("the region is empty"));
     }

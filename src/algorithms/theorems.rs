@@ -335,6 +335,27 @@ pub static TURNS_COR_4_1: Theorem = Theorem {
     tight: None,
 };
 
+/// The claims of every entry whose tour is its cycle cover merged as in Section 4 (Theorem 4.2
+/// and Corollary 4.1, measured on the tour's turns): written once, listed first by each entry
+/// through [`merged_tour_claims!`].
+pub(crate) const MERGED_TOUR_CLAIMS: [Claim; 2] = [
+    Claim::paper(&TURNS_THM_4_2, &[Objective::Turns]),
+    Claim::paper(&TURNS_COR_4_1, &[Objective::Turns]),
+];
+
+/// An entry's claims: [`MERGED_TOUR_CLAIMS`], then its own (a macro, because a static slice
+/// cannot be concatenated in a const context).
+macro_rules! merged_tour_claims {
+    ($($own:expr),* $(,)?) => {
+        &[
+            $crate::algorithms::theorems::MERGED_TOUR_CLAIMS[0],
+            $crate::algorithms::theorems::MERGED_TOUR_CLAIMS[1],
+            $($own),*
+        ]
+    };
+}
+pub(crate) use merged_tour_claims;
+
 pub static TURNS_THM_5_1: Theorem = Theorem {
     paper: TurnCost,
     id: "Theorem 5.1",

@@ -5,14 +5,14 @@ use crate::region::Pixel;
 use crate::tour::Walk;
 
 /// The pixels from `a` to `b` inclusive along a row or column.
-pub fn straight(a: Pixel, b: Pixel) -> impl Iterator<Item = Pixel> {
+pub(crate) fn straight(a: Pixel, b: Pixel) -> impl Iterator<Item = Pixel> {
     let (dx, dy) = ((b.x - a.x).signum(), (b.y - a.y).signum());
     let steps = (b.x - a.x).abs() + (b.y - a.y).abs();
     (0..=steps).map(move |k| Pixel::new(a.x + k * dx, a.y + k * dy))
 }
 
 /// Appends `pixels` to `walk`, skipping a pixel equal to the walk's last one.
-pub fn extend_walk(walk: &mut Walk, pixels: impl IntoIterator<Item = Pixel>) {
+pub(crate) fn extend_walk(walk: &mut Walk, pixels: impl IntoIterator<Item = Pixel>) {
     for p in pixels {
         if walk.last() != Some(&p) {
             walk.push(p);
@@ -21,7 +21,7 @@ pub fn extend_walk(walk: &mut Walk, pixels: impl IntoIterator<Item = Pixel>) {
 }
 
 /// Closes a walk built by [`extend_walk`]: a final copy of the first pixel is dropped.
-pub fn close_walk(mut walk: Walk) -> Walk {
+pub(crate) fn close_walk(mut walk: Walk) -> Walk {
     if walk.len() > 1 && walk.first() == walk.last() {
         walk.pop();
     }

@@ -82,6 +82,34 @@ struct Loop<'m, M: CutModel> {
 }
 
 impl<'m, M: CutModel> Loop<'m, M> {
+    /// A fresh loop: nothing found yet, `lower` the bound known before it starts (one
+    /// constructor for the full solve and the LP phase alone).
+    fn new(
+        model: &'m M,
+        lower: (u64, &'static str),
+        deadline: &'m Deadline,
+        settings: &'m Settings,
+    ) -> Self {
+        Loop {
+            model,
+            deadline,
+            settings,
+            s: Solved {
+                stop: Stop::TimeLimit,
+                best: None,
+                upper: None,
+                lower: lower.0,
+                lower_source: lower.1,
+                lp_bound: None,
+                rounds: 0,
+            },
+            pool: Vec::new(),
+            seen: HashSet::new(),
+            lp: IncrementalLp::new(model.formulation(), *settings),
+            last_lp: None,
+        }
+    }
+
     fn f(&self) -> &'m Formulation {
         self.model.formulation()
     }
@@ -388,24 +416,7 @@ pub(crate) fn run<M: CutModel>(
     deadline: &Deadline,
     settings: &Settings,
 ) -> Solved {
-    let mut l = Loop {
-        model,
-        deadline,
-        settings,
-        s: Solved {
-            stop: Stop::TimeLimit,
-            best: None,
-            upper: None,
-            lower: lower.0,
-            lower_source: lower.1,
-            lp_bound: None,
-            rounds: 0,
-        },
-        pool: Vec::new(),
-        seen: HashSet::new(),
-        lp: IncrementalLp::new(model.formulation(), *settings),
-        last_lp: None,
-    };
+    let mut l = Loop::new(model, lower, deadline, settings);
     if let Some(x) = start
         && l.accepts(&x)
     {
@@ -420,24 +431,7 @@ pub(crate) fn lp_bound<M: CutModel>(
     deadline: &Deadline,
     settings: &Settings,
 ) -> Option<u64> {
-    let mut l = Loop {
-        model,
-        deadline,
-        settings,
-        s: Solved {
-            stop: Stop::TimeLimit,
-            best: None,
-            upper: None,
-            lower: 0,
-            lower_source: "",
-            lp_bound: None,
-            rounds: 0,
-        },
-        pool: Vec::new(),
-        seen: HashSet::new(),
-        lp: IncrementalLp::new(model.formulation(), *settings),
-        last_lp: None,
-    };
+    let mut l = Loop::new(model, (0, ""), deadline, settings);
     let _ = l.lp_phase(true);
     l.s.lp_bound
 }

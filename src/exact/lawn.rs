@@ -23,7 +23,7 @@ pub(crate) struct LawnModel<'a> {
 }
 
 impl<'a> LawnModel<'a> {
-    pub fn new(region: &'a Region) -> LawnModel<'a> {
+    pub(crate) fn new(region: &'a Region) -> LawnModel<'a> {
         let n = region.len();
         let mut f = Formulation::default();
         let mut pairs = Vec::with_capacity(n * n.saturating_sub(1) / 2);
@@ -66,7 +66,7 @@ impl<'a> LawnModel<'a> {
     }
 
     /// Column vector of a cyclic order of all pixels.
-    pub fn columns(&self, order: &[usize]) -> Vec<f64> {
+    pub(crate) fn columns(&self, order: &[usize]) -> Vec<f64> {
         let mut x = vec![0.0; self.pairs.len()];
         for i in 0..order.len() {
             x[self.col(order[i], order[(i + 1) % order.len()])] = 1.0;
@@ -106,7 +106,7 @@ impl<'a> LawnModel<'a> {
 
     /// A tour from a solution: subtours merged greedily (cheapest exchange of one edge of each),
     /// then 2-opt and Or-opt.
-    pub fn merge_and_improve(&self, mut cycles: Vec<Vec<usize>>) -> Vec<usize> {
+    pub(crate) fn merge_and_improve(&self, mut cycles: Vec<Vec<usize>>) -> Vec<usize> {
         while cycles.len() > 1 {
             let mut best: Option<(i64, usize, usize, usize, bool)> = None;
             let a = &cycles[0];
@@ -147,7 +147,7 @@ impl<'a> LawnModel<'a> {
     }
 
     /// 2-opt and Or-opt (segments of 1 to 3) until no improving move is left.
-    pub fn improve(&self, tour: &mut Vec<usize>) {
+    pub(crate) fn improve(&self, tour: &mut Vec<usize>) {
         let n = tour.len();
         if n < 4 {
             return;
@@ -209,7 +209,7 @@ impl<'a> LawnModel<'a> {
     }
 
     /// Nearest-neighbour tour, improved.
-    pub fn heuristic_tour(&self) -> Vec<usize> {
+    pub(crate) fn heuristic_tour(&self) -> Vec<usize> {
         let n = self.n();
         let mut seen = vec![false; n];
         let mut tour = vec![0usize];
@@ -228,7 +228,7 @@ impl<'a> LawnModel<'a> {
     }
 
     /// The unit-step walk of a cyclic order of pixels.
-    pub fn walk(&self, order: &[usize]) -> Vec<Pixel> {
+    pub(crate) fn walk(&self, order: &[usize]) -> Vec<Pixel> {
         lawn_walk(
             &order
                 .iter()
@@ -238,7 +238,7 @@ impl<'a> LawnModel<'a> {
     }
 
     /// The cyclic pixel order of an integer solution with one cycle.
-    pub fn order(&self, x: &[f64]) -> Vec<usize> {
+    pub(crate) fn order(&self, x: &[f64]) -> Vec<usize> {
         self.cycles(x).into_iter().next().unwrap_or_default()
     }
 }

@@ -25,12 +25,12 @@ pub(crate) struct Row {
 
 impl Row {
     /// `Σ terms >= lo`.
-    pub fn at_least(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64) -> Row {
+    pub(crate) fn at_least(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64) -> Row {
         Row::range(terms, lo, f64::INFINITY)
     }
 
     /// `lo <= Σ terms <= hi`, merging repeated columns.
-    pub fn range(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64, hi: f64) -> Row {
+    pub(crate) fn range(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64, hi: f64) -> Row {
         let mut t: Vec<(usize, f64)> = terms.into_iter().collect();
         t.sort_unstable_by_key(|&(i, _)| i);
         let mut idx: Vec<u32> = Vec::with_capacity(t.len());
@@ -48,7 +48,7 @@ impl Row {
     }
 
     /// The row's activity at `x`.
-    pub fn activity(&self, x: &[f64]) -> f64 {
+    pub(crate) fn activity(&self, x: &[f64]) -> f64 {
         self.idx
             .iter()
             .zip(&self.val)
@@ -57,7 +57,7 @@ impl Row {
     }
 
     /// How far `x` violates the row (0 when satisfied).
-    pub fn violation(&self, x: &[f64]) -> f64 {
+    pub(crate) fn violation(&self, x: &[f64]) -> f64 {
         let a = self.activity(x);
         (self.lo - a).max(a - self.hi).max(0.0)
     }
@@ -74,7 +74,7 @@ pub(crate) struct Formulation {
 }
 
 impl Formulation {
-    pub fn add_col(&mut self, cost: f64, lo: f64, hi: f64, integer: bool) -> usize {
+    pub(crate) fn add_col(&mut self, cost: f64, lo: f64, hi: f64, integer: bool) -> usize {
         self.cost.push(cost);
         self.lo.push(lo);
         self.hi.push(hi);
@@ -82,16 +82,16 @@ impl Formulation {
         self.cost.len() - 1
     }
 
-    pub fn num_cols(&self) -> usize {
+    pub(crate) fn num_cols(&self) -> usize {
         self.cost.len()
     }
 
-    pub fn objective(&self, x: &[f64]) -> f64 {
+    pub(crate) fn objective(&self, x: &[f64]) -> f64 {
         self.cost.iter().zip(x).map(|(c, v)| c * v).sum()
     }
 
     /// Whether `x` satisfies bounds, integrality and every row (including `extra`).
-    pub fn is_feasible(&self, x: &[f64], extra: &[Row]) -> bool {
+    pub(crate) fn is_feasible(&self, x: &[f64], extra: &[Row]) -> bool {
         const TOL: f64 = 1e-6;
         x.len() == self.num_cols()
             && (0..x.len()).all(|j| {
@@ -143,23 +143,23 @@ pub(crate) struct Deadline {
 }
 
 impl Deadline {
-    pub fn new(limit: Option<f64>) -> Deadline {
+    pub(crate) fn new(limit: Option<f64>) -> Deadline {
         Deadline {
             start: Instant::now(),
             limit,
         }
     }
 
-    pub fn elapsed(&self) -> f64 {
+    pub(crate) fn elapsed(&self) -> f64 {
         self.start.elapsed().as_secs_f64()
     }
 
     /// Seconds left, `None` without a limit.
-    pub fn remaining(&self) -> Option<f64> {
+    pub(crate) fn remaining(&self) -> Option<f64> {
         self.limit.map(|l| (l - self.elapsed()).max(0.0))
     }
 
-    pub fn expired(&self) -> bool {
+    pub(crate) fn expired(&self) -> bool {
         self.remaining().is_some_and(|r| r <= 0.0)
     }
 }
@@ -250,7 +250,7 @@ pub(crate) struct IncrementalLp {
 }
 
 impl IncrementalLp {
-    pub fn new(f: &Formulation, settings: Settings) -> IncrementalLp {
+    pub(crate) fn new(f: &Formulation, settings: Settings) -> IncrementalLp {
         let (pb, cols) = f.to_problem(false, &[]);
         let mut model = pb.optimise(Sense::Minimise);
         configure(&mut model, &settings);
@@ -265,7 +265,7 @@ impl IncrementalLp {
         }
     }
 
-    pub fn add_rows(&mut self, rows: &[Row]) {
+    pub(crate) fn add_rows(&mut self, rows: &[Row]) {
         let Some(model) = self.model.as_mut() else {
             return;
         };
@@ -280,7 +280,7 @@ impl IncrementalLp {
         self.rows += rows.len();
     }
 
-    pub fn solve(&mut self, deadline: &Deadline) -> LpSolution {
+    pub(crate) fn solve(&mut self, deadline: &Deadline) -> LpSolution {
         let failed = |m: String| LpSolution {
             outcome: Outcome::Failed(m),
             objective: f64::NAN,

@@ -26,7 +26,7 @@ pub(crate) struct MillingModel<'a> {
 }
 
 impl<'a> MillingModel<'a> {
-    pub fn new(region: &'a Region) -> MillingModel<'a> {
+    pub(crate) fn new(region: &'a Region) -> MillingModel<'a> {
         let n = region.len();
         let edges: Vec<(usize, usize)> = region.edges().collect();
         let mut incident = vec![Vec::new(); n];
@@ -69,7 +69,7 @@ impl<'a> MillingModel<'a> {
     }
 
     /// The full column vector of an edge-multiplicity vector.
-    pub fn columns(&self, mult: &[u32]) -> Vec<f64> {
+    pub(crate) fn columns(&self, mult: &[u32]) -> Vec<f64> {
         let mut x: Vec<f64> = mult.iter().map(|&m| f64::from(m)).collect();
         for v in 0..self.region.len() {
             let deg: u32 = self.incident[v].iter().map(|&k| mult[k]).sum();
@@ -78,7 +78,7 @@ impl<'a> MillingModel<'a> {
         x
     }
 
-    pub fn multiplicities(&self, x: &[f64]) -> Vec<u32> {
+    pub(crate) fn multiplicities(&self, x: &[f64]) -> Vec<u32> {
         x[..self.num_edges()]
             .iter()
             .map(|&v| v.round().max(0.0) as u32)
@@ -86,7 +86,7 @@ impl<'a> MillingModel<'a> {
     }
 
     /// Edge multiplicities of a closed walk, reduced to at most 2 per edge (same parity).
-    pub fn walk_multiplicities(&self, walk: &[Pixel]) -> Option<Vec<u32>> {
+    pub(crate) fn walk_multiplicities(&self, walk: &[Pixel]) -> Option<Vec<u32>> {
         let index: std::collections::HashMap<(usize, usize), usize> = self
             .edges
             .iter()
@@ -111,7 +111,7 @@ impl<'a> MillingModel<'a> {
     }
 
     /// The closed walk of a connected Eulerian multiplicity vector.
-    pub fn walk(&self, mult: &[u32]) -> Vec<Pixel> {
+    pub(crate) fn walk(&self, mult: &[u32]) -> Vec<Pixel> {
         let start = (0..self.num_edges())
             .find(|&k| mult[k] > 0)
             .map_or(0, |k| self.edges[k].0);
@@ -132,7 +132,7 @@ impl<'a> MillingModel<'a> {
     /// squares first (two parallel edges of different components become the other two sides),
     /// else a doubled edge between adjacent components; then drops doubled edges that are not
     /// needed for connectivity.
-    pub fn connect(&self, mut mult: Vec<u32>) -> Vec<u32> {
+    pub(crate) fn connect(&self, mut mult: Vec<u32>) -> Vec<u32> {
         loop {
             let (label, count) = self.labels(&mult);
             if count <= 1 {

@@ -109,7 +109,7 @@ impl Objective {
     }
 
     /// Whether the objective counts turns (the passage model).
-    pub fn counts_turns(self) -> bool {
+    pub(crate) fn counts_turns(self) -> bool {
         matches!(
             self,
             Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. }
@@ -662,7 +662,7 @@ pub fn best_lower_bound(
 
 /// The LP relaxation bound of an objective's exact model with all its connectivity cuts
 /// (rounded up to even), or `None` if it does not converge in time or does not apply.
-pub fn lp_relaxation_bound(
+pub(crate) fn lp_relaxation_bound(
     region: &Region,
     objective: Objective,
     time_limit: Option<f64>,

@@ -90,7 +90,7 @@ pub(crate) struct PassageModel<'a> {
 
 impl<'a> PassageModel<'a> {
     /// The model for `goal`; with `cap`, every pixel is visited at most `cap` times.
-    pub fn new(region: &'a Region, goal: TurnGoal, cap: Option<u32>) -> PassageModel<'a> {
+    pub(crate) fn new(region: &'a Region, goal: TurnGoal, cap: Option<u32>) -> PassageModel<'a> {
         let n = region.len();
         let nb: Vec<[u32; 4]> = (0..n)
             .map(|v| Dir::ALL.map(|d| region.neighbor(v, d).map_or(NONE, |w| w as u32)))
@@ -300,13 +300,13 @@ impl<'a> PassageModel<'a> {
     }
 
     /// Passage counts of a solution vector.
-    pub fn counts(&self, x: &[f64]) -> Vec<u32> {
+    pub(crate) fn counts(&self, x: &[f64]) -> Vec<u32> {
         x.iter().map(|&v| v.round().max(0.0) as u32).collect()
     }
 
     /// The closed walks of integer passage counts (spliced into as few walks as possible),
     /// plus the one-pixel walks of isolated pixels.
-    pub fn walks(&self, counts: &[u32]) -> Vec<Vec<Pixel>> {
+    pub(crate) fn walks(&self, counts: &[u32]) -> Vec<Vec<Pixel>> {
         let mut passages = Vec::new();
         for (k, &c) in counts.iter().enumerate() {
             for _ in 0..c {
@@ -365,7 +365,7 @@ impl<'a> PassageModel<'a> {
 
     /// Passage counts of closed walks (a one-pixel walk becomes a step to a neighbour and
     /// back, same turn count); `None` when a walk is not a walk of this region.
-    pub fn walk_counts(&self, walks: &[Vec<Pixel>]) -> Option<Vec<u32>> {
+    pub(crate) fn walk_counts(&self, walks: &[Vec<Pixel>]) -> Option<Vec<u32>> {
         let mut counts = vec![0u32; self.vars.len()];
         for walk in walks {
             let idx: Vec<usize> = walk
@@ -401,7 +401,7 @@ impl<'a> PassageModel<'a> {
 
     /// Whether integer counts form a feasible solution (covering; one side component for
     /// tours).
-    pub fn is_feasible_counts(&self, counts: &[u32]) -> bool {
+    pub(crate) fn is_feasible_counts(&self, counts: &[u32]) -> bool {
         let x: Vec<f64> = counts.iter().map(|&c| f64::from(c)).collect();
         self.formulation.is_feasible(&x, &[])
             && (!self.needs_connectivity() || self.side_components(&x, 0.5).1 == 1)
@@ -410,7 +410,7 @@ impl<'a> PassageModel<'a> {
     /// Merges the side components of integer counts into one, greedily by cheapest move:
     /// re-pairing two passages at a pixel both components cross, swapping two parallel edges
     /// of a unit square onto its other two sides, or a doubled edge between adjacent pixels.
-    pub fn connect(&self, mut counts: Vec<u32>) -> Vec<u32> {
+    pub(crate) fn connect(&self, mut counts: Vec<u32>) -> Vec<u32> {
         loop {
             let x: Vec<f64> = counts.iter().map(|&c| f64::from(c)).collect();
             let (label, count) = self.side_components(&x, 0.5);
@@ -613,7 +613,7 @@ impl PassageModel<'_> {
     /// A simple feasible solution: every strip of a minimum strip cover walked there and back
     /// (4 turns each; a one-pixel strip becomes a step to a neighbour and back), merged into a
     /// tour when the goal asks for one.
-    pub fn strip_solution(&self) -> Option<Vec<u32>> {
+    pub(crate) fn strip_solution(&self) -> Option<Vec<u32>> {
         let cover = crate::strip_cover::strip_cover(self.region);
         let mut walks: Vec<Vec<Pixel>> = Vec::new();
         for s in &cover.strips {

@@ -16,7 +16,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The members drawn side by side: (family, member).
-pub const DRAWN: [(&str, &str); 7] = [
+pub(crate) const DRAWN: [(&str, &str); 7] = [
     ("donut", "k=2 L=8"),
     ("donut", "k=3 L=12"),
     ("donut", "k=4 L=12"),
@@ -27,7 +27,7 @@ pub const DRAWN: [(&str, &str); 7] = [
 ];
 
 /// The limit each family's ratios tend to, as the paper claims: (family, quantity, limit).
-pub const LIMITS: [(&str, &str, f64, &str); 5] = [
+pub(crate) const LIMITS: [(&str, &str, f64, &str); 5] = [
     ("donut", "ratio_naive", 3.0, "3 (naive tour / OPT)"),
     ("donut", "ratio_cc", 2.0, "2 (cycle cover / OPT cc)"),
     ("band", "ratio_opt_n", 1.2, "6/5 (OPT / N)"),
@@ -41,7 +41,7 @@ pub const LIMITS: [(&str, &str, f64, &str); 5] = [
 ];
 
 /// Draws `left` and `right` over two copies of `region`, side by side, into `out`.
-pub fn side_by_side(
+pub(crate) fn side_by_side(
     region: &Region,
     left: &CycleCover,
     right: &CycleCover,

@@ -346,7 +346,7 @@ mod donut;
 mod thin43;
 pub use band::band;
 pub use donut::{donut, donut_rings, donut_spiral};
-pub use thin43::{thin43, thin43_gadget_cover};
+pub use thin43::thin43;
 
 /// Runs every family over its range (in parallel over members).
 pub fn run(opts: &TightOptions) -> Result<TightRun> {

@@ -9,7 +9,7 @@ use crate::generate::thin43_gadgets;
 /// `cc-turns` on the gadget alone), all together. Where a gadget's optimal cover has several
 /// cycles (Y_j: the two rectangles on either side of its chord), they are merged within the
 /// gadget when that is free, so that each gadget is one cycle as in issue 7.
-pub fn thin43_gadget_cover(s: usize, time_limit: f64) -> Result<CycleCover> {
+pub(crate) fn thin43_gadget_cover(s: usize, time_limit: f64) -> Result<CycleCover> {
     let mut cycles = Vec::new();
     for (name, pixels) in thin43_gadgets(s) {
         let gadget = Region::from_pixels(pixels)?;

@@ -1,8 +1,8 @@
 //! Writing a region as WKT: one polygon per 4-connected component, its holes as inner rings.
 
 use super::doubled_area;
-use crate::region::{Dir, Pixel, Region};
-use crate::topology::components;
+use crate::region::Region;
+use crate::topology::{Saddle, boundary_rings, components};
 use std::fmt::Write as _;
 
 /// Writes a region as WKT, the boundary of its pixel set.
@@ -48,18 +48,15 @@ pub fn to_wkt(region: &Region) -> String {
     let (component, count) = (&labels.label, labels.count);
     let mut outer: Vec<Vec<(i64, i64)>> = vec![Vec::new(); count];
     let mut holes: Vec<Vec<Vec<(i64, i64)>>> = vec![Vec::new(); count];
-    let mut visited = vec![false; 4 * region.len()];
-    for i in 0..region.len() {
-        for side in Dir::ALL {
-            if region.neighbor(i, side).is_none() && !visited[4 * i + side.index()] {
-                let ring = trace_ring(region, component, &mut visited, i, side);
-                // Traced with the region on the left: outer rings turn counter-clockwise.
-                if doubled_area(&ring) > 0 {
-                    outer[component[i] as usize] = ring;
-                } else {
-                    holes[component[i] as usize].push(ring);
-                }
-            }
+    // Saddles joined within a component and apart across components: every ring is simple and
+    // rings only touch at points, so the written geometry is OGC-valid and parse_wkt takes it.
+    for ring in boundary_rings(region, Saddle::JoinSameLabel(component)) {
+        let c = component[ring.pixel] as usize;
+        // Traced with the region on the left: outer rings turn counter-clockwise.
+        if doubled_area(&ring.corners) > 0 {
+            outer[c] = ring.corners;
+        } else {
+            holes[c].push(ring.corners);
         }
     }
     let mut out = String::new();
@@ -77,62 +74,6 @@ pub fn to_wkt(region: &Region) -> String {
         out.push(')');
     }
     out
-}
-
-/// Walks the boundary ring through the unit edge on side `side` of pixel `start`, keeping the
-/// region on the left, and returns its corners from the lowest, then leftmost, one.
-///
-/// A unit edge is named by the pixel on its left and the side of that pixel it lies on. At a
-/// corner where the region's pixels touch only diagonally (a saddle), the walk turns around the
-/// empty pixel when the two region pixels are in the same component, and around its own pixel
-/// otherwise: components stay apart, and no ring passes a point twice.
-fn trace_ring(
-    region: &Region,
-    component: &[u32],
-    visited: &mut [bool],
-    start: usize,
-    start_side: Dir,
-) -> Vec<(i64, i64)> {
-    let mut corners = Vec::new();
-    let (mut i, mut side) = (start, start_side);
-    // Every step visits a new unit edge, so the walk is back at the start after at most 4N.
-    for _ in 0..visited.len() {
-        visited[4 * i + side.index()] = true;
-        let heading = side.left();
-        let pixel = region.pixel(i);
-        let ahead_left = pixel.step(heading);
-        let ahead_right = region.index_of(ahead_left.step(side));
-        let (next, next_side) = match (region.index_of(ahead_left), ahead_right) {
-            (Some(a), None) => (a, side),
-            (None, None) => (i, heading),
-            (None, Some(b)) if component[b] != component[i] => (i, heading),
-            (_, Some(b)) => (b, heading.opposite()),
-        };
-        if next_side != side {
-            corners.push(edge_end(pixel, side));
-        }
-        (i, side) = (next, next_side);
-        if (i, side) == (start, start_side) {
-            break;
-        }
-    }
-    let first = (0..corners.len())
-        .min_by_key(|&k| (corners[k].1, corners[k].0))
-        .unwrap_or(0);
-    corners.rotate_left(first);
-    corners
-}
-
-/// The corner where the unit edge on side `side` of `pixel` ends, walking with the pixel on
-/// the left.
-fn edge_end(pixel: Pixel, side: Dir) -> (i64, i64) {
-    let (sx, sy) = side.delta();
-    let (hx, hy) = side.left().delta();
-    // Exactly one of sx, hx is non-zero, so (sx + hx + 1) / 2 is 0 or 1; likewise for y.
-    (
-        i64::from(pixel.x) + i64::from((sx + hx + 1) / 2),
-        i64::from(pixel.y) + i64::from((sy + hy + 1) / 2),
-    )
 }
 
 fn write_polygon(out: &mut String, outer: &[(i64, i64)], holes: &mut [Vec<(i64, i64)>]) {

@@ -2,32 +2,26 @@
 //! connected component.
 
 use super::*;
-use petgraph::unionfind::UnionFind;
 
 /// A minimum-weight perfect matching of the graph on `0..n` with weighted `edges` (each
 /// pair at most once), solved per connected component; `None` when none is perfect.
-pub fn min_weight_perfect_matching(n: usize, edges: &[(usize, usize, u32)]) -> Option<Vec<usize>> {
-    // Connected components by union-find.
-    let mut uf = UnionFind::<usize>::new(n);
-    for &(a, b, _) in edges {
-        uf.union(a, b);
-    }
-    let mut piece_of_root: HashMap<usize, usize> = HashMap::new();
+pub(crate) fn min_weight_perfect_matching(
+    n: usize,
+    edges: &[(usize, usize, u32)],
+) -> Option<Vec<usize>> {
+    // The crate's one component labelling of a plain graph (pieces in order of smallest node).
+    let (piece, count) =
+        crate::topology::graph_components(n, edges.iter().map(|&(a, b, _)| (a, b)));
     let mut local = vec![0usize; n];
-    let mut pieces: Vec<Vec<usize>> = Vec::new();
-    for (v, slot) in local.iter_mut().enumerate() {
-        let r = uf.find_mut(v);
-        let k = *piece_of_root.entry(r).or_insert_with(|| {
-            pieces.push(Vec::new());
-            pieces.len() - 1
-        });
-        *slot = pieces[k].len();
-        pieces[k].push(v);
+    let mut pieces: Vec<Vec<usize>> = vec![Vec::new(); count];
+    for (v, &k) in piece.iter().enumerate() {
+        local[v] = pieces[k as usize].len();
+        pieces[k as usize].push(v);
     }
     let mut piece_edges: Vec<Vec<(u32, u32, i128)>> = vec![Vec::new(); pieces.len()];
     let big = i128::from(edges.iter().map(|e| e.2).max().unwrap_or(0)) + 1;
     for &(a, b, w) in edges {
-        let k = piece_of_root[&uf.find_mut(a)];
+        let k = piece[a] as usize;
         piece_edges[k].push((local[a] as u32, local[b] as u32, big - i128::from(w)));
     }
     let mut mate = vec![usize::MAX; n];

@@ -2,7 +2,7 @@
 //! proof of Theorem 5.5 of *Optimal covering tours with turn costs*).
 //!
 //! # Which pairs are candidates, and what is proven
-//! - Up to [`COMPLETE_LIMIT`] endpoints every reachable pair is a candidate and rustworkx-core's
+//! - Up to `COMPLETE_LIMIT` endpoints every reachable pair is a candidate and rustworkx-core's
 //!   blossom algorithm (`max_weight_matching`, maximum cardinality, weights `BIG − w`) finds
 //!   the exact minimum (certificates `matching_complete = 1`, `matching_optimal = 1`).
 //! - Beyond that, for strip ends (`strips-matching`), no pair is listed at all
@@ -77,7 +77,7 @@ use rustworkx_core::petgraph::graph::UnGraph;
 use std::collections::HashMap;
 use turn_distance::{Port, TurnSearch, bit, cheapest_sources};
 /// Up to this many endpoints, the candidate graph is complete (the matching is exact).
-pub const COMPLETE_LIMIT: usize = 600;
+pub(crate) const COMPLETE_LIMIT: usize = 600;
 
 /// Larger instances start from, per endpoint, at least this many nearest endpoints (in turns).
 pub(crate) const NEAR: usize = 6;
@@ -156,7 +156,7 @@ pub enum Candidates {
 /// for 6,566 ends and 5 s for 24,672 on thin pockets). Other endpoints: O(P · A) for the initial candidates (A the area a BFS
 /// explores before meeting [`NEAR`] endpoints), then per round one HiGHS dual simplex
 /// re-solve and one O(N log N) pricing search; blossom only where the LP is fractional.
-pub fn match_ports(
+pub(crate) fn match_ports(
     region: &Region,
     ports: &[Port],
     partner: &[usize],
@@ -170,7 +170,7 @@ pub fn match_ports(
     match_ports_with(region, ports, partner, floor, how)
 }
 
-/// [`match_ports`] with the candidate pairs chosen as asked.
+/// `match_ports` with the candidate pairs chosen as asked.
 pub fn match_ports_with(
     region: &Region,
     ports: &[Port],

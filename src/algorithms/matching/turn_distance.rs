@@ -24,7 +24,7 @@ pub struct Port {
 
 impl Port {
     /// A strip endpoint: paths leave orthogonally to the strip.
-    pub fn strip_end(pixel: usize, horizontal: bool) -> Port {
+    pub(crate) fn strip_end(pixel: usize, horizontal: bool) -> Port {
         let leave = if horizontal {
             bit(Dir::N) | bit(Dir::S)
         } else {
@@ -35,7 +35,7 @@ impl Port {
 
     /// The headings in which a path must arrive at this port: the reverses of its leaving
     /// headings.
-    pub fn arrive(self) -> u8 {
+    pub(crate) fn arrive(self) -> u8 {
         Dir::ALL
             .iter()
             .filter(|d| self.leave & bit(**d) != 0)
@@ -61,7 +61,7 @@ pub(crate) struct TurnSearch {
 }
 
 impl TurnSearch {
-    pub fn new(region: &Region) -> TurnSearch {
+    pub(crate) fn new(region: &Region) -> TurnSearch {
         TurnSearch {
             dist: vec![UNSEEN; 4 * region.len()],
             parent: vec![UNSEEN; 4 * region.len()],
@@ -98,7 +98,7 @@ impl TurnSearch {
     /// Searches from `from`, settling states in order of turns, up to `max_turns` turns.
     /// `visit(pixel, heading, turns)` is called once per settled state; returning `true` stops
     /// the search after the current turn level is complete.
-    pub fn run(
+    pub(crate) fn run(
         &mut self,
         region: &Region,
         from: Port,
@@ -133,7 +133,7 @@ impl TurnSearch {
     }
 
     /// The turn distance to `to` found by the last [`run`](Self::run), if it was reached.
-    pub fn distance_to(&self, to: Port) -> Option<u32> {
+    pub(crate) fn distance_to(&self, to: Port) -> Option<u32> {
         let arrive = to.arrive();
         Dir::ALL
             .iter()
@@ -145,7 +145,7 @@ impl TurnSearch {
 
     /// The pixels of a cheapest path to `to` found by the last run, from the source's pixel to
     /// `to.pixel` (in-place turns collapse into one pixel).
-    pub fn path_to(&self, to: Port) -> Option<Vec<usize>> {
+    pub(crate) fn path_to(&self, to: Port) -> Option<Vec<usize>> {
         let arrive = to.arrive();
         let best = Dir::ALL
             .iter()

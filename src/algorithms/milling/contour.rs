@@ -15,7 +15,7 @@ use crate::region::{Dir, Region};
 
 /// One traced boundary component.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ContourWalk {
+pub(crate) struct ContourWalk {
     /// The closed walk of pixel indices (wrap-around implied); one pixel for an isolated
     /// pixel.
     pub walk: Vec<usize>,
@@ -24,8 +24,9 @@ pub struct ContourWalk {
 }
 
 impl ContourWalk {
-    /// Number of unit moves of the closed walk.
-    pub fn len_moves(&self) -> usize {
+    /// Number of unit moves of the closed walk (the tests' check of a contour's length).
+    #[cfg(test)]
+    fn len_moves(&self) -> usize {
         if self.walk.len() < 2 {
             0
         } else {
@@ -39,7 +40,7 @@ impl ContourWalk {
 ///
 /// # Complexity
 /// O(N) time and space.
-pub fn contour_walks(region: &Region) -> Vec<ContourWalk> {
+pub(crate) fn contour_walks(region: &Region) -> Vec<ContourWalk> {
     let n = region.len();
     // seen[i] bit d: the side of pixel i facing direction d has been traced.
     let mut seen = vec![0u8; n];

@@ -31,7 +31,7 @@ use crate::tour::CycleCover;
 use petgraph::unionfind::UnionFind;
 
 /// Theorem 7 needs a connected grid graph without local cut vertices.
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::Precondition("the region is empty".into()));
     }
@@ -66,7 +66,7 @@ pub fn precondition(region: &Region) -> Result<()> {
 /// # Guarantee
 /// Length ≤ 53N/40 = 1.325 N (Theorem 7 of Arkin, Fekete, Mitchell, *Approximation
 /// algorithms for lawn mowing and milling*).
-pub fn holes1325(region: &Region) -> Result<Solution> {
+pub(crate) fn holes1325(region: &Region) -> Result<Solution> {
     precondition(region)?;
     let n = region.len();
     let contours = contour_walks(region);
@@ -205,7 +205,7 @@ pub fn holes1325(region: &Region) -> Result<Solution> {
 /// // 24 pixels around a one-pixel hole: 24 moves <= 53·24/40.
 /// assert_eq!(tour.length, 24);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "holes1325",
     summary: "contours of all boundaries + Theorem 5 linking + free and paid bridges (Theorem 7, milling paper)",
     objectives: &[Objective::Length],

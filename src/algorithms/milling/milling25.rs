@@ -99,7 +99,7 @@ use rustworkx_core::max_weight_matching::max_weight_matching;
 use rustworkx_core::petgraph::graph::{EdgeReference, NodeIndex, UnGraph};
 
 /// Theorem 4 needs a connected, non-empty region; holes are allowed.
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::Precondition("the region is empty".into()));
     }
@@ -140,7 +140,7 @@ struct StripLine {
 /// Length ≤ (17N − 17)/3 ≤ 17/3 · OPT (module docs: our grid reading of the proof of
 /// Theorem 4 of Arkin, Fekete, Mitchell, *Approximation algorithms for lawn mowing and
 /// milling*, which claims 5/2 · OPT for the continuous problem).
-pub fn milling25(region: &Region) -> Result<Solution> {
+pub(crate) fn milling25(region: &Region) -> Result<Solution> {
     precondition(region)?;
     let contours = contour_walks(region);
     let n = region.len();
@@ -467,7 +467,7 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
 /// // A ring of 8 pixels: contour walks of both boundaries, 16 moves <= (17·8 - 17)/3.
 /// assert_eq!(tour.length, 16);
 /// ```
-pub const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Algorithm {
+pub(crate) const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Algorithm {
     name: "milling25",
     summary: "contours + strips + shorter matchings, Euler tour (Theorem 4, milling paper)",
     objectives: &[crate::algorithms::Objective::Length],

@@ -3,7 +3,7 @@
 //! 2.5-approximation (Theorem 4 / Section 4), the 6/5 tour of simple grid graphs without cut
 //! vertices (Theorem 5) and the 1.325 tour with holes (Theorem 7).
 
-pub mod contour;
-pub mod holes1325;
-pub mod milling25;
-pub mod tsp65;
+pub(crate) mod contour;
+pub(crate) mod holes1325;
+pub(crate) mod milling25;
+pub(crate) mod tsp65;

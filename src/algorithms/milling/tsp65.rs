@@ -54,7 +54,7 @@ use crate::tour::CycleCover;
 use std::collections::BTreeMap;
 
 /// Theorem 5 needs a simple (hole-free), connected, non-empty grid graph.
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::Precondition("the region is empty".into()));
     }
@@ -124,7 +124,7 @@ impl LinkStats {
 /// *Approximation algorithms for lawn mowing and milling*). For every simple region: length
 /// ≤ 6/5 · OPT, because a block's tour is at most 6/5 of its N_b ≤ OPT_b nodes, a bridge
 /// costs 2 = OPT_b, and OPT is the sum of the blocks' optima (Corollary 3).
-pub fn tsp65(region: &Region) -> Result<Solution> {
+pub(crate) fn tsp65(region: &Region) -> Result<Solution> {
     let mut blocks = checked_blocks(region)?;
     let n = region.len();
     let mut solution = Solution::default();
@@ -252,7 +252,15 @@ fn block_tour(region: &Region, stats: &mut LinkStats) -> Result<(GridMultigraph,
             cut[v][dir.opposite().index()] = true;
         }
     }
-    let (piece, piece_count) = label_pieces(region, &cut);
+    // The crate's one labelling of a plain graph (pieces in order of their smallest pixel).
+    let uncut = (0..n).flat_map(|a| {
+        let cut = &cut;
+        [Dir::E, Dir::N]
+            .into_iter()
+            .filter(move |d| !cut[a][d.index()])
+            .filter_map(move |d| region.neighbor(a, d).map(|b| (a, b)))
+    });
+    let (piece, piece_count) = crate::topology::graph_components(n, uncut);
 
     // Try both parities everywhere, keep the better one per piece, then build for real.
     let internal: Vec<bool> = on_c.iter().map(|&b| !b).collect();
@@ -295,37 +303,6 @@ fn block_tour(region: &Region, stats: &mut LinkStats) -> Result<(GridMultigraph,
         seen.iter().filter(|&&b| b).count()
     };
     Ok((g, (bottlenecks, with_internal as i64)))
-}
-
-/// Components of the grid graph without the `cut` edges: (label per pixel, count).
-/// Pieces are numbered in the order of their smallest pixel index.
-fn label_pieces(region: &Region, cut: &[[bool; 4]]) -> (Vec<u32>, usize) {
-    let n = region.len();
-    let mut label = vec![u32::MAX; n];
-    let mut count = 0u32;
-    let mut stack = Vec::new();
-    for s in 0..n {
-        if label[s] != u32::MAX {
-            continue;
-        }
-        label[s] = count;
-        stack.push(s);
-        while let Some(v) = stack.pop() {
-            for d in Dir::ALL {
-                if cut[v][d.index()] {
-                    continue;
-                }
-                if let Some(w) = region.neighbor(v, d)
-                    && label[w] == u32::MAX
-                {
-                    label[w] = count;
-                    stack.push(w);
-                }
-            }
-        }
-        count += 1;
-    }
-    (label, count as usize)
 }
 
 /// Steps 3–5 of the proof of Theorem 5: links every `internal` node into the closed walks of
@@ -730,23 +707,19 @@ impl Linker<'_> {
 /// // A 4 x 3 rectangle has a Hamiltonian tour: 12 moves <= (6·12 - 4)/5.
 /// assert_eq!(tour.length, 12);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "tsp65",
     summary: "contour + free detours + the six cases, blocks spliced (Theorem 5, milling paper); \
               length <= (6N-4)/5 without cut vertices (certificate bound_6n_4_5)",
     objectives: &[Objective::Length],
     guarantees: &[
-        Guarantee {
-            objective: Objective::Length,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 6,
-            den: 5,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5 and Corollary 3 of Lawn mowing and milling",
-            theorem: &crate::algorithms::theorems::MILLING_COR_3,
-        },
+        Guarantee::vs_opt(
+            Objective::Length,
+            6,
+            5,
+            &crate::algorithms::theorems::MILLING_COR_3,
+            "Theorem 5 and Corollary 3 of Lawn mowing and milling",
+        ),
         Guarantee {
             objective: Objective::Length,
             quantity: crate::algorithms::Quantity::Value,

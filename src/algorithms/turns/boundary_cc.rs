@@ -28,7 +28,7 @@
 //!   both only when one of them has several pixels, which moves, so the walk is one one-pixel
 //!   link joined to itself: priced at least 4, counted 4. (Before this rule, a one-pixel
 //!   horizontal and a one-pixel vertical link at p could close a still walk priced 1 + 1 = 2
-//!   and counted 4: the +2 of issue 12.) [`drop_still_duplicates`] may only lower the count.
+//!   and counted 4: the +2 of issue 12.) `drop_still_duplicates` may only lower the count.
 //! - *Every cycle cover C costs at least the minimum.* By Lemma 4.1 (the paper's, with our
 //!   grid reading of shared lines), C's walks can be taken to contain every link, kept or left
 //!   out, as part of a straight stretch, without more turns; a one-pixel link at p is contained
@@ -56,7 +56,7 @@
 
 use crate::algorithms::matching::turn_distance::{Port, bit};
 use crate::algorithms::matching::{COMPLETE_LIMIT, PortMatching, join_links, match_ports};
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective};
+use crate::algorithms::{Algorithm, Guarantee, Objective};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology::is_boundary;
@@ -159,7 +159,7 @@ pub fn boundary_ports(links: &[BoundaryLink]) -> (Vec<Port>, Vec<usize>, Vec<u32
 /// The minimum-turn cycle cover of the boundary links, with its matching.
 ///
 /// # Complexity
-/// The matching dominates: see [`match_ports`]. Beyond [`COMPLETE_LIMIT`] ends it is exact
+/// The matching dominates: see `match_ports`. Beyond `COMPLETE_LIMIT` ends it is exact
 /// over all pairs through the ray graph (measured for all of `thin-merge`: 0.06 s for 682
 /// ends, 0.74 s for 8,274, 5.7 s for 24,672).
 pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching)> {
@@ -189,7 +189,7 @@ pub fn boundary_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching
 /// paper does not discuss). This only lowers the count, and with a matching proven minimum it
 /// never applies: the cover would then beat the minimum, which the module docs prove is a
 /// lower bound.
-pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
+pub(crate) fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
     let mut visited: std::collections::HashSet<crate::region::Pixel> = cover
         .cycles
         .iter()
@@ -208,7 +208,7 @@ pub fn drop_still_duplicates(cover: CycleCover) -> CycleCover {
 /// `boundary-cc` applies when every pixel is a boundary pixel (then it covers the region). A
 /// cycle cover needs no connectivity: on a region of several components it is a cycle cover
 /// of each (the matching never pairs ports of different components, which no path joins).
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::precondition("the region is empty"));
     }
@@ -224,7 +224,7 @@ pub fn precondition(region: &Region) -> Result<()> {
 /// Runs `boundary-cc`: the boundary cycle cover (objective `cc-turns`), certificates `w_m`,
 /// `links` and the matching's (`matching_complete`, `matching_optimal`, always 1 here,
 /// `matching_lower_bound`, `matching_candidates`).
-pub fn run(
+pub(crate) fn run(
     region: &Region,
     opts: &crate::algorithms::Options,
 ) -> Result<crate::algorithms::Solution> {
@@ -249,7 +249,7 @@ pub fn run(
 }
 
 /// The registry entry of `boundary-cc`: the minimum-turn cycle cover of the boundary links by a
-/// minimum-weight perfect matching of their ports ([`run`]).
+/// minimum-weight perfect matching of their ports (`run`).
 ///
 /// # Guarantee
 ///
@@ -292,17 +292,13 @@ pub const ALGORITHM: Algorithm = Algorithm {
     name: "boundary-cc",
     summary: "minimum-turn cycle cover of the boundary links by a minimum-weight perfect matching (regions of boundary pixels only)",
     objectives: &[Objective::CcTurns],
-    guarantees: &[Guarantee {
-        objective: Objective::CcTurns,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 1,
-        den: 1,
-        add: 0,
-        against: Against::Opt,
-        when: crate::algorithms::When::Always,
-        source: "Theorem 4.1 of Optimal covering tours with turn costs",
-        theorem: &crate::algorithms::theorems::TURNS_THM_4_1,
-    }],
+    guarantees: &[Guarantee::vs_opt(
+        Objective::CcTurns,
+        1,
+        1,
+        &crate::algorithms::theorems::TURNS_THM_4_1,
+        "Theorem 4.1 of Optimal covering tours with turn costs",
+    )],
     claims: &[crate::algorithms::theorems::Claim::reading(
         &crate::algorithms::theorems::TURNS_THM_4_1,
         &[crate::algorithms::Objective::CcTurns],

@@ -42,6 +42,7 @@ use crate::checker::{Mode, check};
 use crate::error::Result;
 use crate::region::{Pixel, Region};
 use crate::tour::{CycleCover, Walk};
+use petgraph::unionfind::UnionFind;
 use std::collections::BTreeMap;
 
 const NONE: u32 = u32::MAX;
@@ -83,8 +84,10 @@ struct Walks<'a> {
     prev: Vec<u32>,
     /// Initial cycle of each node (new detour nodes inherit their copy's cycle).
     cycle: Vec<u32>,
-    /// Union-find over initial cycles, with the number of nodes per root.
-    root: Vec<u32>,
+    /// Union-find over initial cycles: petgraph's, as elsewhere in the crate (roots are only
+    /// compared, so which one a union keeps does not matter).
+    cycles: UnionFind<u32>,
+    /// Nodes per merged cycle, kept at its union-find root.
     size: Vec<usize>,
     /// Visits per region pixel, kept up to date by detours (exchanges keep visits).
     coverage: Vec<u32>,
@@ -114,7 +117,7 @@ impl<'a> Walks<'a> {
             next: Vec::new(),
             prev: Vec::new(),
             cycle: Vec::new(),
-            root: Vec::new(),
+            cycles: UnionFind::new(cover.cycles.len()),
             size: Vec::new(),
             coverage: vec![0; region.len()],
             visit_start: Vec::new(),
@@ -149,7 +152,6 @@ impl<'a> Walks<'a> {
             for &p in &walk {
                 w.coverage[p as usize] += 1;
             }
-            w.root.push(c as u32);
             w.size.push(walk.len());
         }
         w.turn = vec![0; w.pix.len()];
@@ -204,17 +206,8 @@ impl<'a> Walks<'a> {
         p != q && self.settled(p) && self.settled(q)
     }
 
-    fn find(&mut self, mut c: u32) -> u32 {
-        while self.root[c as usize] != c {
-            let up = self.root[self.root[c as usize] as usize];
-            self.root[c as usize] = up;
-            c = up;
-        }
-        c
-    }
-
     fn root_of(&mut self, node: u32) -> u32 {
-        self.find(self.cycle[node as usize])
+        self.cycles.find_mut(self.cycle[node as usize])
     }
 
     fn at(&self, node: u32) -> Pixel {
@@ -472,8 +465,10 @@ impl<'a> Walks<'a> {
                 }
             }
         }
-        self.root[rb as usize] = ra;
-        self.size[ra as usize] += self.size[rb as usize];
+        let merged = self.size[ra as usize] + self.size[rb as usize];
+        self.cycles.union(ra, rb);
+        let root = self.cycles.find_mut(ra);
+        self.size[root as usize] = merged;
         self.stats.merges += 1;
         if delta <= 0 {
             self.stats.free_merges += 1;
@@ -664,7 +659,7 @@ pub fn merge_cycles(
 /// [`coverage4`](crate::algorithms::coverage4) when `opts.coverage4` is set. Certificates
 /// gain the checker's recount of the cover (`cc_cycles`, `cc_turns`), the merged tour's turns
 /// (`tour_turns`) and the number of free merges.
-pub fn cover_and_tour(
+pub(crate) fn cover_and_tour(
     region: &Region,
     cover: CycleCover,
     opts: &Options,

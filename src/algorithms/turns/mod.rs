@@ -7,11 +7,12 @@
 //! Corollary 5.3 and Theorem 5.9). The endpoint matching they share is in
 //! [`matching`](super::matching).
 
+// `pub` only where algorithms/mod.rs re-exports a module for the integration tests.
 pub mod boundary_cc;
 pub mod coverage4;
 pub mod merge;
-pub mod star_cover;
-pub mod strips_double;
+pub(crate) mod star_cover;
+pub(crate) mod strips_double;
 pub mod strips_matching;
-pub mod thin;
-pub mod thin_euler;
+pub(crate) mod thin;
+pub(crate) mod thin_euler;

@@ -52,7 +52,7 @@ use std::collections::BTreeMap;
 ///
 /// # Complexity
 /// O(N) time and space.
-pub fn greedy_rooks(region: &Region) -> Vec<usize> {
+pub(crate) fn greedy_rooks(region: &Region) -> Vec<usize> {
     let n = region.len();
     // Strip ids: a pixel takes the id of its west (south) neighbour, or a new one.
     let mut row = vec![0u32; n];
@@ -97,7 +97,7 @@ fn far_end(region: &Region, mut i: usize, d: Dir) -> Pixel {
 }
 
 /// The closed walk touring the star of the rook at pixel `i` (at most 10 turns).
-pub fn star_walk(region: &Region, i: usize) -> Walk {
+pub(crate) fn star_walk(region: &Region, i: usize) -> Walk {
     let rook = region.pixel(i);
     let (e, w) = (far_end(region, i, Dir::E), far_end(region, i, Dir::W));
     let (n, s) = (far_end(region, i, Dir::N), far_end(region, i, Dir::S));
@@ -109,7 +109,7 @@ pub fn star_walk(region: &Region, i: usize) -> Walk {
 }
 
 /// The star cycle cover: one walk per greedy rook, and the number of rooks r.
-pub fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
+pub(crate) fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
     let rooks = greedy_rooks(region);
     (
         CycleCover::new(rooks.iter().map(|&i| star_walk(region, i)).collect()),
@@ -118,7 +118,7 @@ pub fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
 }
 
 /// Runs `star-cover`: the star cycle cover and its merged tour, certificate `rooks` = r.
-pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let (cover, r) = star_cycle_cover(region);
     let mut certificates = BTreeMap::new();
     certificates.insert("rooks".to_string(), r as i64);
@@ -166,7 +166,7 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 16);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 16);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "star-cover",
     summary: "greedy rook placement, one 10-turn walk per star, merged (linear time; each pixel covered at most 4 times)",
     objectives: &[Objective::CcTurns, Objective::Turns],
@@ -210,15 +210,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             "Corollary 5.2 (length; N <= OPT length) of Optimal covering tours with turn costs",
         ),
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_1,
             &[crate::algorithms::Objective::CcTurns],

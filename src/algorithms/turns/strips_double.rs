@@ -33,7 +33,7 @@ use crate::tour::{CycleCover, Walk};
 use std::collections::BTreeMap;
 
 /// The doubled strip: out along the strip and back, two U-turns (one pixel: 4 turns too).
-pub fn doubled(strip: &Strip) -> Walk {
+pub(crate) fn doubled(strip: &Strip) -> Walk {
     let (a, b) = (strip.start, strip.end());
     let mut walk = Vec::new();
     extend_walk(&mut walk, straight(a, b));
@@ -45,7 +45,7 @@ pub fn doubled(strip: &Strip) -> Walk {
 ///
 /// # Complexity
 /// O(N √N) for the strip cover (Hopcroft–Karp), O(N) for the walks.
-pub fn doubled_strip_cover(region: &Region) -> (CycleCover, usize) {
+pub(crate) fn doubled_strip_cover(region: &Region) -> (CycleCover, usize) {
     let cover = strip_cover(region);
     (
         CycleCover::new(cover.strips.iter().map(doubled).collect()),
@@ -54,7 +54,7 @@ pub fn doubled_strip_cover(region: &Region) -> (CycleCover, usize) {
 }
 
 /// Runs `strips-double`: the doubled-strip cycle cover and its merged tour.
-pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let (cover, s) = doubled_strip_cover(region);
     let mut certificates = BTreeMap::new();
     certificates.insert("s".to_string(), s as i64);
@@ -100,7 +100,7 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 12);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 12);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "strips-double",
     summary: "minimum strip cover, each strip doubled with two U-turns, merged (also at most 4x the optimal length)",
     objectives: &[Objective::CcTurns, Objective::Turns],
@@ -144,15 +144,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
             "Theorem 5.4 (length; N <= OPT length) of Optimal covering tours with turn costs",
         ),
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_4,
             &[crate::algorithms::Objective::Turns],

@@ -19,7 +19,7 @@
 //! tour crosses each strip end orthogonally; Theorem 5.5). Tour: ≤ 3/2 of that, 3.75·OPT
 //! (Corollary 4.1). The bound on w(M) needs M to be a minimum matching over all pairs: it is
 //! proven so when `matching_optimal = 1` (always up to
-//! [`COMPLETE_LIMIT`](crate::algorithms::endpoint_matching::COMPLETE_LIMIT) ports, where the candidate
+//! `COMPLETE_LIMIT` ports, where the candidate
 //! graph is complete; beyond, when the matching reaches the LP bound). Otherwise
 //! `matching_lower_bound` is a proven lower bound on the minimum, and the guarantee holds
 //! with w(M) − `matching_lower_bound` added; see [`endpoint_matching`](crate::algorithms::endpoint_matching).
@@ -27,7 +27,7 @@
 use crate::algorithms::matching::turn_distance::Port;
 use crate::algorithms::matching::{PortMatching, join_links, match_ports};
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::Region;
 use crate::strip_cover::strip_cover;
@@ -37,10 +37,10 @@ use std::collections::BTreeMap;
 
 /// The cycle cover of Theorem 5.5, with s, w(M) and the matching.
 #[derive(Clone, Debug)]
-pub struct StripMatchingCover {
-    pub cover: CycleCover,
-    pub s: usize,
-    pub matching: PortMatching,
+pub(crate) struct StripMatchingCover {
+    pub(crate) cover: CycleCover,
+    pub(crate) s: usize,
+    pub(crate) matching: PortMatching,
 }
 
 /// The ports of strips: port `2k` at strip k's start, `2k + 1` at its end.
@@ -59,7 +59,7 @@ pub fn strip_ports(region: &Region, strips: &[Strip]) -> (Vec<(usize, usize)>, V
 
 /// The least turn distance of every strip end to its partner (the other end of its strip): a
 /// one-pixel strip closed on itself is a still walk of 4 turns, 2 for the strip and 2 here.
-pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
+pub(crate) fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
     (0..2 * links.len())
         .map(|i| {
             if links[i / 2].0 == links[i / 2].1 {
@@ -76,7 +76,7 @@ pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
 /// # Complexity
 /// O(N √N) for the strip cover; the matching dominates (see
 /// [`match_ports`](crate::algorithms::endpoint_matching::match_ports)).
-pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
+pub(crate) fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
     let cover = strip_cover(region);
     let (links, ports) = strip_ports(region, &cover.strips);
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
@@ -93,7 +93,7 @@ pub fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
 /// Runs `strips-matching`: the cycle cover and its merged tour, with certificates s, w(M)
 /// (`w_m`), `matching_complete` (complete candidate graph), `matching_optimal` (w(M) proven
 /// minimum over all pairs), `matching_lower_bound` (proven) and `matching_candidates`.
-pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
     let smc = strips_matching_cover(region)?;
     let mut certificates = BTreeMap::new();
     certificates.insert("s".to_string(), smc.s as i64);
@@ -144,43 +144,27 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 8);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 8);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "strips-matching",
     summary: "minimum strip cover joined by a minimum-weight perfect matching of strip ends under turn distance, merged",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 5,
-            den: 2,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.5 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_5,
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 15,
-            den: 4,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
-        },
+        Guarantee::vs_opt(
+            Objective::CcTurns,
+            5,
+            2,
+            &crate::algorithms::theorems::TURNS_THM_5_5,
+            "Theorem 5.5 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::vs_opt(
+            Objective::Turns,
+            15,
+            4,
+            &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
+            "Theorem 5.5 and Corollary 4.1 of Optimal covering tours with turn costs",
+        ),
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_5,
             &[crate::algorithms::Objective::CcTurns],
@@ -203,7 +187,7 @@ mod tests {
     use crate::region::Pixel;
 
     /// The square donut of Fig. 5: outer side `l`, width `k`.
-    pub fn donut(l: i32, k: i32) -> Region {
+    fn donut(l: i32, k: i32) -> Region {
         Region::from_pixels(
             (0..l)
                 .flat_map(|y| (0..l).map(move |x| Pixel::new(x, y)))

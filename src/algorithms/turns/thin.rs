@@ -31,7 +31,7 @@
 use crate::algorithms::boundary_cc::boundary_cycle_cover;
 use crate::algorithms::matching::PortMatching;
 use crate::algorithms::merge::cover_and_tour;
-use crate::algorithms::{Against, Algorithm, Guarantee, Merge, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Merge, Objective, Options, Solution};
 use crate::error::{Error, Result};
 use crate::region::Region;
 use crate::topology::{components, is_thin};
@@ -43,7 +43,7 @@ use std::collections::BTreeMap;
 /// (Corollary 5.3 and Theorem 5.9), which cannot leave a component: we refuse rather than
 /// report a "tour" of several walks (`boundary-cc` gives the cycle cover of each component of
 /// a thin region without plus centres).
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     if region.is_empty() {
         return Err(Error::precondition("the region is empty"));
     }
@@ -114,7 +114,7 @@ fn cover_plus_centres(region: &Region, cover: &mut CycleCover) -> usize {
 /// The optimal cycle cover of a thin region (Corollary 5.3), the boundary matching it rests
 /// on, and how many pixels needed the fallback detour (0 whenever the construction of the
 /// module docs applies).
-pub fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching, usize)> {
+pub(crate) fn thin_cycle_cover(region: &Region) -> Result<(CycleCover, PortMatching, usize)> {
     let (mut cover, matching) = boundary_cycle_cover(region)?;
     let fallbacks = cover_plus_centres(region, &mut cover);
     Ok((cover, matching, fallbacks))
@@ -130,12 +130,12 @@ fn run_with(region: &Region, opts: &Options) -> Result<Solution> {
 }
 
 /// Runs `thin-cc`: the optimal cycle cover and its tour merged by `--merge`.
-pub fn run_cc(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run_cc(region: &Region, opts: &Options) -> Result<Solution> {
     run_with(region, opts)
 }
 
 /// Runs `thin-merge`: the optimal cycle cover merged by Theorem 5.9's algorithm.
-pub fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
     run_with(
         region,
         &Options {
@@ -144,6 +144,23 @@ pub fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
         },
     )
 }
+
+/// The guarantee of the cycle cover both thin entries build (the same optimal cover).
+const CYCLE_COVER_GUARANTEE: Guarantee = Guarantee::vs_opt(
+    Objective::CcTurns,
+    1,
+    1,
+    &crate::algorithms::theorems::TURNS_COR_5_3,
+    "Corollary 5.3 of Optimal covering tours with turn costs",
+);
+
+/// The claim of the cycle cover both thin entries build, written once.
+const CYCLE_COVER_CLAIM: crate::algorithms::theorems::Claim =
+    crate::algorithms::theorems::Claim::reading(
+        &crate::algorithms::theorems::TURNS_COR_5_3,
+        &[crate::algorithms::Objective::CcTurns],
+        "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
+    );
 
 /// The registry entry of `thin-cc`: the optimal cycle cover of a thin pocket, merged into a tour
 /// by `--merge` ([`run_cc`]).
@@ -183,48 +200,22 @@ pub fn run_merge(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
 /// ```
-pub const ALGORITHM_CC: Algorithm = Algorithm {
+pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
     name: "thin-cc",
     summary: "optimal min-turn cycle cover of a thin pocket (boundary links matched, plus centres inserted), merged by --merge",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 1,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Corollary 5.3 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 3,
-            den: 2,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Corollary 5.3 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
-        },
+        CYCLE_COVER_GUARANTEE,
+        Guarantee::vs_opt(
+            Objective::Turns,
+            3,
+            2,
+            &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
+            "Corollary 5.3 of Optimal covering tours with turn costs",
+        ),
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::reading(
-            &crate::algorithms::theorems::TURNS_COR_5_3,
-            &[crate::algorithms::Objective::CcTurns],
-            "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
+        CYCLE_COVER_CLAIM,
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
             &[crate::algorithms::Objective::Turns],
@@ -273,48 +264,22 @@ pub const ALGORITHM_CC: Algorithm = Algorithm {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
 /// ```
-pub const ALGORITHM_MERGE: Algorithm = Algorithm {
+pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
     name: "thin-merge",
     summary: "optimal cycle cover of a thin pocket merged free merges first, then at crossings",
     objectives: &[Objective::CcTurns, Objective::Turns],
     guarantees: &[
-        Guarantee {
-            objective: Objective::CcTurns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 1,
-            den: 1,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Corollary 5.3 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_COR_5_3,
-        },
-        Guarantee {
-            objective: Objective::Turns,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 4,
-            den: 3,
-            add: 0,
-            against: Against::Opt,
-            when: crate::algorithms::When::Always,
-            source: "Theorem 5.9 of Optimal covering tours with turn costs",
-            theorem: &crate::algorithms::theorems::TURNS_THM_5_9,
-        },
+        CYCLE_COVER_GUARANTEE,
+        Guarantee::vs_opt(
+            Objective::Turns,
+            4,
+            3,
+            &crate::algorithms::theorems::TURNS_THM_5_9,
+            "Theorem 5.9 of Optimal covering tours with turn costs",
+        ),
     ],
-    claims: &[
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_THM_4_2,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::paper(
-            &crate::algorithms::theorems::TURNS_COR_4_1,
-            &[crate::algorithms::Objective::Turns],
-        ),
-        crate::algorithms::theorems::Claim::reading(
-            &crate::algorithms::theorems::TURNS_COR_5_3,
-            &[crate::algorithms::Objective::CcTurns],
-            "boundary cover of the thin pocket plus centres inserted (module docs of thin)",
-        ),
+    claims: crate::algorithms::theorems::merged_tour_claims![
+        CYCLE_COVER_CLAIM,
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_9,
             &[crate::algorithms::Objective::Turns],

@@ -19,9 +19,7 @@
 
 use crate::algorithms::merge::merge_cycles;
 use crate::algorithms::precondition::connected;
-use crate::algorithms::{
-    Against, Algorithm, Guarantee, Merge, Objective, Options, Output, Solution,
-};
+use crate::algorithms::{Algorithm, Guarantee, Merge, Objective, Options, Output, Solution};
 use crate::checker::{Mode, check};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
@@ -29,7 +27,7 @@ use crate::topology::is_thin;
 use crate::tour::CycleCover;
 
 /// Precondition: connected, thin, and every pixel of even degree (or a single pixel).
-pub fn precondition(region: &Region) -> Result<()> {
+pub(crate) fn precondition(region: &Region) -> Result<()> {
     connected(region)?;
     if !is_thin(region) {
         return Err(Error::precondition(
@@ -52,7 +50,7 @@ pub fn precondition(region: &Region) -> Result<()> {
 ///
 /// # Complexity
 /// O(N).
-pub fn straight_decomposition(region: &Region) -> CycleCover {
+pub(crate) fn straight_decomposition(region: &Region) -> CycleCover {
     if region.len() == 1 {
         return CycleCover::tour(vec![region.pixel(0)]);
     }
@@ -95,7 +93,7 @@ pub fn straight_decomposition(region: &Region) -> CycleCover {
 /// own) and the Euler tour joined at crossings (objective `turns`), rewritten by
 /// [`coverage4`](crate::algorithms::coverage4) under `--coverage4` (certificate
 /// `coverage4_stuck`, as for the merged tours of [`cover_and_tour`](super::merge::cover_and_tour)).
-pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
+pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let cover = straight_decomposition(region);
     let (mut tour, stats) = merge_cycles(region, &cover, Merge::Naive);
@@ -162,21 +160,17 @@ pub fn run(region: &Region, opts: &Options) -> Result<Solution> {
 /// assert_eq!(eval.output(Objective::CcTurns).unwrap().value, 4);
 /// assert_eq!(eval.output(Objective::Turns).unwrap().value, 4);
 /// ```
-pub const ALGORITHM: Algorithm = Algorithm {
+pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "thin-euler",
     summary: "thin Eulerian pocket: straight-through Euler decomposition joined at crossings (+2 turns each)",
     objectives: &[Objective::CcTurns, Objective::Turns],
-    guarantees: &[Guarantee {
-        objective: Objective::Turns,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 6,
-        den: 5,
-        add: 0,
-        against: Against::Opt,
-        when: crate::algorithms::When::Always,
-        source: "Theorem 5.8 of Optimal covering tours with turn costs",
-        theorem: &crate::algorithms::theorems::TURNS_THM_5_8,
-    }],
+    guarantees: &[Guarantee::vs_opt(
+        Objective::Turns,
+        6,
+        5,
+        &crate::algorithms::theorems::TURNS_THM_5_8,
+        "Theorem 5.8 of Optimal covering tours with turn costs",
+    )],
     claims: &[crate::algorithms::theorems::Claim::paper(
         &crate::algorithms::theorems::TURNS_THM_5_8,
         &[crate::algorithms::Objective::Turns],
