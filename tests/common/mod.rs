@@ -48,6 +48,8 @@ pub fn mowmill_env(args: &[&str], env: &[(&str, &str)]) -> Output {
     }
     cmd.envs(env.iter().copied());
     cmd.output().expect("run mowmill")
+}
+
 /// Runs the `mowmill` binary from the repository root like [`mowmill`], but kills it after
 /// `seconds` (then the exit code is `None`): for tests whose failure could be a run that never
 /// ends.
