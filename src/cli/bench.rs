@@ -135,12 +135,13 @@ fn slurm_requeued() -> Result<bool, Error> {
 fn read_config(path: &Path) -> Result<(Config, ConfigRecord), Error> {
     let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
     let file = path.display().to_string();
-    let mut config = Config::parse(&text, &file)?;
-    // The folder outside algorithms run in, as `Config::read` sets it.
-    config.dir = match path.parent() {
+    // The config's folder: outside algorithms run there and `[[files]]` folders are resolved
+    // (and checked, with the key's line and column) against it, as `Config::read` does.
+    let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
+    let config = Config::parse_in(&text, &file, Some(&dir))?;
     Ok((config, ConfigRecord::given(&text, &file)))
 }
 

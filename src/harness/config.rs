@@ -400,7 +400,7 @@ impl Config {
 
     /// [`Config::parse`] for a config whose folder `dir` is known (then also checked: the
     /// `[[files]]` folders).
-    fn parse_in(text: &str, file: &str, dir: Option<&Path>) -> Result<Config> {
+    pub fn parse_in(text: &str, file: &str, dir: Option<&Path>) -> Result<Config> {
         let mut config: Config = toml::from_str(text).map_err(|e| {
             let (line, column) = e.span().map_or((1, 1), |s| line_column(text, s.start));
             Error::parse(file, line, column, e.message().to_string())
