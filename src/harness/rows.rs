@@ -102,6 +102,18 @@ impl<'de> Deserialize<'de> for Ratio {
 
 /// Appends rows to `results.csv`, writing the header when the file is new and flushing after
 /// every batch, so that a killed run keeps every row it finished.
+/// The header line of `results.csv` (the current columns, a contract), without its newline.
+pub fn header() -> Result<String> {
+    let mut w = csv::WriterBuilder::new()
+        .has_headers(true)
+        .from_writer(Vec::new());
+    w.serialize(Row::default())
+        .map_err(|e| Error::invalid(e.to_string()))?;
+    let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
+    let text = String::from_utf8_lossy(&bytes).into_owned();
+    Ok(text.lines().next().unwrap_or_default().to_string())
+}
+
 pub struct RowWriter {
     file: File,
 }
@@ -121,17 +133,7 @@ impl RowWriter {
             .open(path)
             .map_err(|e| Error::io(path, e))?;
         if fresh {
-            let mut w = csv::WriterBuilder::new()
-                .has_headers(true)
-                .from_writer(Vec::new());
-            w.serialize(Row::default())
-                .map_err(|e| Error::invalid(e.to_string()))?;
-            let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
-            let header_end = bytes
-                .iter()
-                .position(|&b| b == b'\n')
-                .map_or(bytes.len(), |p| p + 1);
-            file.write_all(&bytes[..header_end])
+            file.write_all(format!("{}\n", header()?).as_bytes())
                 .map_err(|e| Error::io(path, e))?;
         }
         Ok(RowWriter { file })

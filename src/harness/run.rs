@@ -220,18 +220,6 @@ fn check_same_run(
     Ok(())
 }
 
-/// The header line `RowWriter` writes (the current columns, a contract).
-fn current_header() -> Result<String> {
-    let mut w = csv::WriterBuilder::new()
-        .has_headers(true)
-        .from_writer(Vec::new());
-    w.serialize(Row::default())
-        .map_err(|e| Error::invalid(e.to_string()))?;
-    let bytes = w.into_inner().map_err(|e| Error::invalid(e.to_string()))?;
-    let text = String::from_utf8_lossy(&bytes).into_owned();
-    Ok(text.lines().next().unwrap_or_default().to_string())
-}
-
 /// A `results.csv` written by an older mowmill (without the option columns `merge`, `cutter`,
 /// `coverage4` appended after `error`) is rewritten in the current header before rows are
 /// appended to it, so that no row lands under the wrong column; the old rows get empty option
@@ -239,7 +227,7 @@ fn current_header() -> Result<String> {
 fn upgrade_header(results: &Path) -> Result<()> {
     let text = std::fs::read_to_string(results).map_err(|e| Error::io(results, e))?;
     let header = text.lines().next().unwrap_or_default();
-    let current = current_header()?;
+    let current = super::rows::header()?;
     if header.is_empty() || header == current {
         return Ok(());
     }
