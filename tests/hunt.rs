@@ -161,3 +161,51 @@ fn hunts_are_reproducible_and_keep_their_constraints() {
         assert!(a.join(file).exists(), "{file}");
     }
 }
+
+/// A hunt suite runs every `[[hunt]]` table into its own folder and writes `summary.csv`; a
+/// table naming an unknown algorithm is refused before any hunt runs.
+#[test]
+fn a_suite_runs_each_hunt_and_summarizes() {
+    let dir = temp_dir("hunt-suite");
+    let suite = dir.join("suite.toml");
+    std::fs::write(
+        &suite,
+        "evaluations = 12\nseed = 4\n[[hunt]]\nalgo = \"tsp65\"\nmax_n = 16\n\
+         [[hunt]]\nalgo = \"strips-matching\"\nobjective = \"cc-turns\"\nmax_n = 16\n",
+    )
+    .unwrap();
+    let out = dir.join("run");
+    let o = mowmill(&[
+        "hunt",
+        "--suite",
+        suite.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut r = csv::Reader::from_path(out.join("summary.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    assert_eq!(&header[..3], ["algorithm", "objective", "family"]);
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+    assert_eq!(rows.len(), 2);
+    assert_eq!((&rows[0][0], &rows[0][1]), ("tsp65", "length"));
+    assert_eq!((&rows[1][0], &rows[1][1]), ("strips-matching", "cc-turns"));
+    let instance = header.iter().position(|h| h == "worst_instance").unwrap();
+    for row in &rows {
+        assert!(out.join(&row[instance]).exists(), "{}", &row[instance]);
+    }
+    std::fs::write(
+        &suite,
+        "evaluations = 12\nseed = 4\n[[hunt]]\nalgo = \"nope\"\n",
+    )
+    .unwrap();
+    let o = mowmill(&[
+        "hunt",
+        "--suite",
+        suite.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("hunt[0].algo"));
+}

@@ -12,16 +12,21 @@ use mowmill::outside::{OutsideAlgorithm, OutsideSpec};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-#[derive(Args)]
+#[derive(Args, Clone)]
 pub struct HuntArgs {
     /// The algorithm to hunt.
     #[arg(
         long,
-        required_unless_present = "command",
+        required_unless_present_any = ["command", "suite"],
         conflicts_with = "command",
         value_parser = super::one_of(algorithms::names())
     )]
     pub algo: Option<String>,
+    /// Run a hunt suite (TOML: `evaluations`, `seed`, and one `[[hunt]]` table per hunt with
+    /// `algo` and optionally `objective`, `family`, `min_n`, `max_n`, `against`) into `--out`:
+    /// one folder per hunt and `summary.csv`.
+    #[arg(long, conflicts_with_all = ["algo", "command", "start"])]
+    pub suite: Option<PathBuf>,
     /// Hunt an outside program instead (see `solve --command`).
     #[arg(long)]
     pub command: Option<String>,
@@ -99,7 +104,122 @@ fn default_family(algo: &str) -> Family {
     }
 }
 
+/// What one hunt found, for the suite's `summary.csv` (a contract: the column order).
+#[derive(serde::Serialize)]
+pub struct Done {
+    pub algorithm: String,
+    pub objective: String,
+    pub family: String,
+    pub min_n: usize,
+    pub max_n: usize,
+    pub evaluations: usize,
+    pub seed: u64,
+    pub against: String,
+    pub worst_ratio: Option<f64>,
+    pub worst_value: Option<u64>,
+    pub worst_reference: Option<u64>,
+    pub worst_n: Option<usize>,
+    /// The worst instance's file, relative to the suite's folder.
+    pub worst_instance: String,
+    pub findings: usize,
+}
+
+/// One `[[hunt]]` table of a suite.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SuiteHunt {
+    algo: String,
+    objective: Option<String>,
+    family: Option<String>,
+    min_n: Option<usize>,
+    max_n: Option<usize>,
+    against: Option<String>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Suite {
+    evaluations: usize,
+    seed: u64,
+    hunt: Vec<SuiteHunt>,
+}
+
 pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
+    let Some(path) = a.suite.clone() else {
+        return Ok(run_one(&a)?.1);
+    };
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(&path).map_err(|e| mowmill::Error::io(&path, e))?;
+    let suite: Suite = toml::from_str(&text).map_err(|e| {
+        let at = e.span().map_or(0, |s| s.start);
+        let line = text[..at].matches('\n').count() + 1;
+        let column = at - text[..at].rfind('\n').map_or(0, |k| k + 1) + 1;
+        mowmill::Error::parse(&file, line, column, e.message().to_string())
+    })?;
+    let out = a
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("results/hunt"));
+    // Every table is checked before the first hunt runs.
+    let mut runs = Vec::new();
+    for (k, h) in suite.hunt.iter().enumerate() {
+        let mut one = a.clone();
+        one.suite = None;
+        one.algo = Some(h.algo.clone());
+        if algorithms::find(&h.algo).is_none() {
+            return Err(mowmill::Error::invalid(format!(
+                "{file}: hunt[{k}].algo: unknown algorithm {:?}: expected one of {}",
+                h.algo,
+                algorithms::names().join(", ")
+            ))
+            .into());
+        }
+        one.objective = h.objective.clone().or(a.objective.clone());
+        one.family =
+            match &h.family {
+                Some(f) => Some(f.parse().map_err(|e| {
+                    mowmill::Error::invalid(format!("{file}: hunt[{k}].family: {e}"))
+                })?),
+                None => a.family,
+            };
+        one.min_n = h.min_n.unwrap_or(a.min_n);
+        one.max_n = h.max_n.unwrap_or(a.max_n);
+        one.against = h.against.clone().or(a.against.clone());
+        one.evaluations = Some(suite.evaluations);
+        one.budget = None;
+        one.seed = suite.seed;
+        let tag = match &one.objective {
+            Some(o) => format!("{}-{o}", h.algo),
+            None => h.algo.clone(),
+        };
+        one.out = Some(out.join(&tag));
+        runs.push(one);
+    }
+    let mut summary = Vec::new();
+    let mut code = ExitCode::SUCCESS;
+    for one in &runs {
+        let (done, c) = run_one(one)?;
+        if c != ExitCode::SUCCESS {
+            code = c;
+        }
+        summary.push(done);
+    }
+    let csv_path = out.join("summary.csv");
+    let mut w = csv::Writer::from_path(&csv_path)
+        .map_err(|e| mowmill::Error::invalid(format!("{}: {e}", csv_path.display())))?;
+    for mut d in summary {
+        if let Some(rest) = d.worst_instance.strip_prefix(&out.display().to_string()) {
+            d.worst_instance = rest.trim_start_matches('/').to_string();
+        }
+        w.serialize(d)?;
+    }
+    w.flush()?;
+    println!("hunt suite: wrote {}", csv_path.display());
+    Ok(code)
+}
+
+/// Runs one hunt: its summary line and exit code.
+fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
     let bad = |m: String| -> anyhow::Error { mowmill::Error::invalid(m).into() };
     if a.min_n == 0 || a.min_n > a.max_n || a.max_n > 100_000 {
         return Err(bad(format!(
@@ -228,7 +348,8 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
             ""
         }
     );
-    let report = pool.install(|| hunt::hunt(subject, &opts, |line| eprintln!("hunt: {line}")))?;
+    let report =
+        pool.install(|| hunt::hunt(subject, &opts, |line| eprintln!("hunt: {name}: {line}")))?;
     hunt::output::write_all(&out, &report, &name, &opts)?;
     let best = report.worst.first();
     let manifest = serde_json::json!({
@@ -287,11 +408,32 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         report.findings.len(),
         out.display()
     );
-    Ok(if report.findings.is_empty() {
+    let done = Done {
+        algorithm: name.clone(),
+        objective: objective.name().to_string(),
+        family: opts.family.name().to_string(),
+        min_n: opts.min_n,
+        max_n: opts.max_n,
+        evaluations: report.records.len(),
+        seed: opts.seed,
+        against: against.to_string(),
+        worst_ratio: best.map(|f| (f.ratio * 1e6).round() / 1e6),
+        worst_value: best.map(|f| f.value),
+        worst_reference: best.and_then(|f| f.reference),
+        worst_n: best.map(|f| f.region.len()),
+        worst_instance: if best.is_some() {
+            out.join("worst").join("rank-01.grid").display().to_string()
+        } else {
+            String::new()
+        },
+        findings: report.findings.len(),
+    };
+    let code = if report.findings.is_empty() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
-    })
+    };
+    Ok((done, code))
 }
 
 fn evaluate_options(o: &Options) -> serde_json::Value {
