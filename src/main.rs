@@ -131,6 +131,10 @@ enum Command {
         /// when --out is given).
         #[arg(long)]
         findings: Option<PathBuf>,
+        /// A hunt suite's folder (`mowmill hunt --suite`), for the column "worst found by
+        /// search" (skipped with a note when it has no summary.csv).
+        #[arg(long, default_value = "results/hunt")]
+        hunt: PathBuf,
     },
 }
 
@@ -217,9 +221,10 @@ fn run(cli: Cli) -> Result<ExitCode> {
             tight,
             out,
             findings,
+            hunt,
         } => {
             let findings = findings.or_else(|| out.as_ref().map(|o| o.join("findings")));
-            claims_command(&from, &tight, out.as_deref(), findings.as_deref())
+            claims_command(&from, &tight, &hunt, out.as_deref(), findings.as_deref())
         }
         Command::Bench(args) => bench_command(args),
         Command::Hunt(args) => hunt_command(args),

@@ -67,7 +67,8 @@ pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
     let results = a.from.join("results.csv");
     if results.exists() {
         let rows = harness::rows::read_rows(&results)?;
-        let table = tight::claims::table(&rows, &tight_rows);
+        let mut table = tight::claims::table(&rows, &tight_rows);
+        add_hunts(&mut table, Path::new("results/hunt"))?;
         write_claims(&table, &a.from, &out)?;
     } else {
         eprintln!(
@@ -97,6 +98,24 @@ pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
     })
 }
 
+/// Fills the claims table's column "worst found by search" from `dir/summary.csv` (a hunt
+/// suite), or says why it stays empty.
+fn add_hunts(table: &mut [mowmill::tight::claims::ClaimRow], dir: &Path) -> Result<()> {
+    let summary = dir.join("summary.csv");
+    if summary.exists() {
+        let hunts = mowmill::tight::claims::read_hunts(&summary)?;
+        mowmill::tight::claims::add_hunts(table, &hunts);
+    } else {
+        eprintln!(
+            "no {}: the column \"worst found by search\" stays empty (run `mowmill hunt --suite \
+             experiments/hunt.toml --out {}`)",
+            summary.display(),
+            dir.display()
+        );
+    }
+    Ok(())
+}
+
 /// Writes claims.csv and claims.md into `out`, prints the table; returns the contradictions.
 pub fn write_claims(
     table: &[mowmill::tight::claims::ClaimRow],
@@ -118,6 +137,7 @@ pub fn write_claims(
 pub fn claims_command(
     from: &Path,
     tight: &Path,
+    hunt: &Path,
     out: Option<&Path>,
     findings: Option<&Path>,
 ) -> Result<ExitCode> {
@@ -132,7 +152,8 @@ pub fn claims_command(
         );
         Vec::new()
     };
-    let table = claims::table(&rows, &tight_rows);
+    let mut table = claims::table(&rows, &tight_rows);
+    add_hunts(&mut table, hunt)?;
     let bad = match out {
         Some(out) => write_claims(&table, from, out)?,
         None => {

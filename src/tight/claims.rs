@@ -126,9 +126,18 @@ pub struct ClaimRow {
     pub errors: usize,
     /// Violating instances (algorithm:instance), at most [`FINDINGS_LISTED`].
     pub findings: String,
+    /// The worst ratio to OPT that `mowmill hunt` found for the claim's algorithms and
+    /// objectives (see [`add_hunts`]); empty where no hunt applies.
+    pub worst_found_by_search: String,
     /// The violating rows, for saving findings.
     #[serde(skip)]
     pub violating: Vec<(String, String, String)>,
+    /// The (algorithm, objective) pairs a hunt's worst ratio to OPT measures this claim on:
+    /// only for claims of a factor on the objective's own value against OPT that hold on every
+    /// region (a hunt does not keep
+    /// a theorem's extra condition, such as "no cut vertices").
+    #[serde(skip)]
+    pub search_pairs: Vec<(String, String)>,
 }
 
 /// How many violating instances `findings` lists per claim.
@@ -136,7 +145,7 @@ pub const FINDINGS_LISTED: usize = 10;
 
 /// CSV header of `claims.csv` (a contract for scripts; columns after `verdict` were added by
 /// issue 12).
-pub const CLAIM_COLUMNS: [&str; 18] = [
+pub const CLAIM_COLUMNS: [&str; 19] = [
     "paper",
     "claim",
     "statement",
@@ -155,6 +164,7 @@ pub const CLAIM_COLUMNS: [&str; 18] = [
     "families",
     "errors",
     "findings",
+    "worst_found_by_search",
 ];
 
 /// What the rows say about one claim.
@@ -498,6 +508,8 @@ fn outside_claims(rows: &[Row]) -> Vec<ClaimRow> {
                     .filter(|r| !r.error.is_empty() && r.valid.is_none())
                     .count(),
                 findings: findings.join(" "),
+                worst_found_by_search: String::new(),
+                search_pairs: Vec::new(),
                 violating: violating
                     .iter()
                     .map(|r| (r.algorithm.clone(), r.objective.clone(), r.instance.clone()))
@@ -569,6 +581,20 @@ fn table_of(
                 errors: m.errors,
                 findings: findings.join(" "),
                 violating: m.violating,
+                worst_found_by_search: String::new(),
+                search_pairs: match t.measure {
+                    Measure::Bound(b)
+                        if b.against == Against::Opt
+                            && b.quantity == Quantity::Value
+                            && t.when == When::Always =>
+                    {
+                        c.rows
+                            .iter()
+                            .map(|(a, o)| (a.to_string(), o.to_string()))
+                            .collect()
+                    }
+                    _ => Vec::new(),
+                },
             }
         })
         .collect()
@@ -642,6 +668,64 @@ pub fn read_tight(path: &Path) -> Result<Vec<TightRow>> {
     Ok(out)
 }
 
+/// One line of a hunt suite's `summary.csv` (`mowmill hunt --suite`), as far as the claims
+/// table reads it.
+#[derive(Clone, Debug, serde::Deserialize)]
+pub struct HuntWorst {
+    pub algorithm: String,
+    pub objective: String,
+    pub family: String,
+    pub against: String,
+    pub worst_ratio: Option<f64>,
+    pub worst_n: Option<u64>,
+}
+
+/// Reads a hunt suite's `summary.csv`.
+pub fn read_hunts(path: &Path) -> Result<Vec<HuntWorst>> {
+    let mut r = csv::Reader::from_path(path)
+        .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
+    r.deserialize()
+        .enumerate()
+        .map(|(k, rec)| {
+            rec.map_err(|e| {
+                Error::parse(
+                    &path.display().to_string(),
+                    k + 2,
+                    1,
+                    format!("expected a hunt summary row: {e}"),
+                )
+            })
+        })
+        .collect()
+}
+
+/// Fills the column "worst found by search": for each claim against OPT that holds on every
+/// region, the largest ratio to OPT a hunt found for one of its (algorithm, objective) pairs,
+/// with the pair, the family and N. A hunt against the bound does not count (it over-estimates).
+pub fn add_hunts(table: &mut [ClaimRow], hunts: &[HuntWorst]) {
+    for c in table.iter_mut() {
+        let worst = hunts
+            .iter()
+            .filter(|h| h.against == "opt")
+            .filter(|h| {
+                c.search_pairs
+                    .iter()
+                    .any(|(a, o)| *a == h.algorithm && *o == h.objective)
+            })
+            .filter_map(|h| h.worst_ratio.map(|r| (r, h)))
+            .max_by(|x, y| x.0.total_cmp(&y.0));
+        if let Some((r, h)) = worst {
+            c.worst_found_by_search = format!(
+                "{r:.3} ({} {}, {}, N = {})",
+                h.algorithm,
+                h.objective,
+                h.family,
+                h.worst_n.map_or("-".into(), |n| n.to_string())
+            );
+        }
+    }
+}
+
 /// Writes `claims.csv`.
 pub fn write_csv(table: &[ClaimRow], path: &Path) -> Result<()> {
     let err = |e: csv::Error| Error::invalid(format!("{}: {e}", path.display()));
@@ -667,6 +751,7 @@ pub fn write_csv(table: &[ClaimRow], path: &Path) -> Result<()> {
             &c.families,
             &c.errors.to_string(),
             &c.findings,
+            &c.worst_found_by_search,
         ])
         .map_err(err)?;
     }
@@ -682,8 +767,8 @@ pub fn markdown(table: &[ClaimRow], source: &str) -> String {
          `reading` = our reading of its proof on pixels (a violation is then a finding about \
          our reading, not the paper contradicted), `none` = not implemented.\n\n"
     );
-    out.push_str("| paper | claim | factor | algorithms | impl. | instances | decided | max N | families | max ratio (of) | violations | tight family | verdict |\n");
-    out.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    out.push_str("| paper | claim | factor | algorithms | impl. | instances | decided | max N | families | max ratio (of) | worst found by search | violations | tight family | verdict |\n");
+    out.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for c in table {
         let paper: &str = match Paper::ALL.into_iter().find(|p| p.title() == c.paper) {
             Some(p) => p.short(),
@@ -706,7 +791,7 @@ pub fn markdown(table: &[ClaimRow], source: &str) -> String {
         };
         let _ = writeln!(
             out,
-            "| {paper} | {} | {} | {} | {implementation} | {} | {} | {} | {} | {ratio} | {} | {tight} | **{verdict}** |",
+            "| {paper} | {} | {} | {} | {implementation} | {} | {} | {} | {} | {ratio} | {} | {} | {tight} | **{verdict}** |",
             c.claim,
             c.factor,
             c.algorithms,
@@ -714,6 +799,7 @@ pub fn markdown(table: &[ClaimRow], source: &str) -> String {
             c.decided,
             c.max_n_decided.map(|n| n.to_string()).unwrap_or_default(),
             c.families,
+            c.worst_found_by_search,
             c.violations,
         );
     }
@@ -984,5 +1070,49 @@ mod tests {
                 .implementation
                 .starts_with("none: ")
         );
+    }
+}
+
+#[cfg(test)]
+mod hunt_column {
+    use super::*;
+
+    fn hunt(algorithm: &str, objective: &str, against: &str, ratio: f64) -> HuntWorst {
+        HuntWorst {
+            algorithm: algorithm.into(),
+            objective: objective.into(),
+            family: "random-simple".into(),
+            against: against.into(),
+            worst_ratio: Some(ratio),
+            worst_n: Some(20),
+        }
+    }
+
+    /// A hunt's worst ratio to OPT fills the claims on the same (algorithm, objective) value
+    /// against OPT, never a length or coverage claim, a conditional theorem, or a hunt against
+    /// the bound.
+    #[test]
+    fn worst_found_by_search_goes_where_it_measures_the_claim() {
+        let mut t = table(&[], &[]);
+        add_hunts(
+            &mut t,
+            &[
+                hunt("strips-matching", "turns", "opt", 1.75),
+                hunt("strips-matching", "turns", "opt", 1.5),
+                hunt("star-cover", "turns", "bound", 9.0),
+                hunt("tsp65", "length", "opt", 1.1),
+            ],
+        );
+        let col = |claim: &str| {
+            t.iter()
+                .find(|c| c.claim == claim)
+                .map(|c| c.worst_found_by_search.clone())
+                .unwrap()
+        };
+        assert!(col("Theorem 5.5 (tour)").starts_with("1.750 (strips-matching turns"));
+        assert_eq!(col("Corollary 5.2"), "", "a hunt against the bound");
+        assert_eq!(col("Corollary 5.2 (length)"), "", "a length claim");
+        assert_eq!(col("Theorem 5"), "", "a bound in N");
+        assert!(col("Corollary 3").starts_with("1.100 (tsp65 length"));
     }
 }
