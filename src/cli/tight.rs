@@ -108,7 +108,7 @@ fn add_hunts(table: &mut [mowmill::tight::claims::ClaimRow], dir: &Path) -> Resu
     } else {
         eprintln!(
             "no {}: the column \"worst found by search\" stays empty (run `mowmill hunt --suite \
-             experiments/hunt.toml --out {}`)",
+             experiments/hunt/suite.toml --out {}`)",
             summary.display(),
             dir.display()
         );
