@@ -47,6 +47,25 @@ impl Subject<'_> {
         }
     }
 
+    /// The objective to report: `wanted` if the subject produces it, else by default its tour
+    /// (its first objective when it has no tour).
+    pub fn pick_objective(&self, wanted: Option<Objective>) -> Result<Objective> {
+        let have = self.objectives();
+        match wanted {
+            Some(o) if have.contains(&o) => Ok(o),
+            Some(o) => Err(Error::invalid(format!(
+                "{} reports {}, not {o}",
+                self.name(),
+                have.iter().map(|o| o.name()).collect::<Vec<_>>().join(", ")
+            ))),
+            None => Ok(have
+                .iter()
+                .copied()
+                .find(|o| o.is_tour())
+                .unwrap_or(have[0])),
+        }
+    }
+
     pub fn guarantees(&self) -> &[Guarantee] {
         match self {
             Subject::Registered(a) => a.guarantees,

@@ -151,9 +151,8 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
     let file = path.display().to_string();
     let text = std::fs::read_to_string(&path).map_err(|e| mowmill::Error::io(&path, e))?;
     let suite: Suite = toml::from_str(&text).map_err(|e| {
-        let at = e.span().map_or(0, |s| s.start);
-        let line = text[..at].matches('\n').count() + 1;
-        let column = at - text[..at].rfind('\n').map_or(0, |k| k + 1) + 1;
+        let (line, column) =
+            mowmill::harness::config::line_column(&text, e.span().map_or(0, |s| s.start));
         mowmill::Error::parse(&file, line, column, e.message().to_string())
     })?;
     let out = a
@@ -268,26 +267,7 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         }
         (None, None) => unreachable!("clap requires --algo or --command"),
     };
-    let objective = match objective {
-        Some(o) if subject.objectives().contains(&o) => o,
-        Some(o) => {
-            return Err(bad(format!(
-                "{name} has no {o} output (it has {})",
-                subject
-                    .objectives()
-                    .iter()
-                    .map(|o| o.name())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )));
-        }
-        None => subject
-            .objectives()
-            .iter()
-            .copied()
-            .find(|o| o.is_tour())
-            .unwrap_or(subject.objectives()[0]),
-    };
+    let objective = subject.pick_objective(objective)?;
     let against = match (a.against.as_deref(), objective) {
         (Some("bound"), _) | (None, Objective::LawnLength) => Against::Bound,
         (Some(_), Objective::LawnLength) => {

@@ -134,25 +134,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         (None, None) => unreachable!("clap requires --algo or --command"),
     };
     // The merged tour by default; the cycle cover with --cycle-cover.
-    let objective = match wanted {
-        Some(o) if subject.objectives().contains(&o) => o,
-        Some(o) => bail!(mowmill::Error::invalid(format!(
-            "{} reports {}, not {o}",
-            subject.name(),
-            subject
-                .objectives()
-                .iter()
-                .map(|o| o.name())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ))),
-        None => subject
-            .objectives()
-            .iter()
-            .copied()
-            .find(|o| o.is_tour())
-            .unwrap_or(subject.objectives()[0]),
-    };
+    let objective = subject.pick_objective(wanted)?;
     let mut reference = Reference::default();
     let mut exact_json = serde_json::Value::Null;
     if a.exact {
