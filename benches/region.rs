@@ -1,8 +1,9 @@
 //! Time and memory proportional to N (issue 13): `mowmill info`'s work (parse the instance,
 //! `topology::summary`, the minimum strip cover) against `tsp65` (run and check), per pixel, on
 //! the diagonal band and the random-simple and random-holed families at 10^4, 10^5 and 10^6
-//! pixels. Single thread. Run with `cargo bench --bench region` (add `-- quick` to stop at
-//! 10^5 pixels); the figures of record are in `docs/region-benchmark.md`.
+//! pixels. Single thread; every time is the median of 5 runs (3 at 10^6 pixels). Run with
+//! `cargo bench --bench region` (add `-- quick` to stop at 10^5 pixels); the figures of record
+//! are in `docs/region-benchmark.md`.
 //!
 //! Every tour goes through the checker (timed: `mowmill solve` checks too), so a fast but
 //! wrong run fails.
@@ -56,25 +57,40 @@ fn seconds(start: Instant) -> f64 {
     start.elapsed().as_secs_f64()
 }
 
+/// Runs `f` `reps` times; its last result and the median time in seconds (one run on a shared
+/// machine varies by ±30%).
+fn timed<T>(reps: usize, mut f: impl FnMut() -> T) -> (T, f64) {
+    let mut times = Vec::with_capacity(reps);
+    let mut out = None;
+    for _ in 0..reps {
+        let t = Instant::now();
+        out = Some(f());
+        times.push(seconds(t));
+    }
+    times.sort_by(f64::total_cmp);
+    (out.expect("reps >= 1"), times[times.len() / 2])
+}
+
 /// One line of the table: parse, summary, strip cover, info total; tour run, check, total; all
-/// in seconds, then info and the tour in microseconds per pixel.
+/// in seconds (each the median of `REPS` runs, 3 at 10^6 pixels), then info and the tour in
+/// microseconds per pixel.
 fn measure(family: &str, stored: &Stored, algo: &str) {
-    let t = Instant::now();
-    let region = stored.parse();
-    let parse = seconds(t);
-    let t = Instant::now();
-    let summary = topology::summary(&region);
-    let summarize = seconds(t);
-    let t = Instant::now();
-    let cover = min_strip_cover_size(&region);
-    let strips = seconds(t);
+    let (region, parse) = timed(1, || stored.parse());
+    let reps = if region.len() > 500_000 { 3 } else { REPS };
+    let (region, parse) = if reps > 1 {
+        timed(reps, || stored.parse())
+    } else {
+        (region, parse)
+    };
+    let (summary, summarize) = timed(reps, || topology::summary(&region));
+    let (cover, strips) = timed(reps, || min_strip_cover_size(&region));
     let info = parse + summarize + strips;
     let n = region.len();
     let per_pixel = |s: f64| s / n as f64 * 1e6;
 
     let a = algorithms::find(algo).expect("registered");
-    let t = Instant::now();
-    let sol = match (a.run)(&region, &Options::default()) {
+    let (sol, run) = timed(reps, || (a.run)(&region, &Options::default()));
+    let sol = match sol {
         Ok(sol) => sol,
         Err(e) => {
             println!(
@@ -85,13 +101,12 @@ fn measure(family: &str, stored: &Stored, algo: &str) {
             return;
         }
     };
-    let run = seconds(t);
-    let t = Instant::now();
-    for out in &sol.outputs {
-        let report = checker::check(&region, &out.cover, out.objective.mode());
-        assert!(report.valid, "{algo} on {family}: {:?}", report.error);
-    }
-    let check = seconds(t);
+    let ((), check) = timed(reps, || {
+        for out in &sol.outputs {
+            let report = checker::check(&region, &out.cover, out.objective.mode());
+            assert!(report.valid, "{algo} on {family}: {:?}", report.error);
+        }
+    });
     let tour = parse + run + check;
     println!(
         "| {family} | {n} | {} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {algo} | {:.3} | {:.3} | {:.3} | {:.2} | {:.2} | {:.2} |",
@@ -120,6 +135,9 @@ fn generated(family: Family, n: usize, no_cut: bool) -> Stored {
     eprintln!("generated {} n={n} in {:.1} s", family.name(), seconds(t));
     Stored::Grid(file.to_text().expect("non-negative"))
 }
+
+/// Repetitions of every timed step (the median is reported).
+const REPS: usize = 5;
 
 fn main() {
     let quick = std::env::args().any(|a| a == "quick");

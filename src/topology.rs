@@ -468,7 +468,8 @@ fn for_each_block(region: &Region, mut f: impl FnMut(&mut Vec<usize>)) {
     let mut low = vec![0u32; n];
     let mut time = 0u32;
     // Pixel indices fit in u32 (at most MAX_PIXELS); edges as (tail, head).
-    let mut edges: Vec<(u32, u32)> = Vec::new();
+    // A grid graph has at most 2N edges; reserved so that the stack never moves.
+    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(2 * n);
     let mut block = Vec::new();
     let mut closed = 0u32;
     let mut stamp = vec![u32::MAX; n];

@@ -10,7 +10,7 @@ use crate::tour::Walk;
 
 /// Edge multiplicities of a multigraph on the grid graph of a region: `mult[i][d]` copies of
 /// the edge from pixel `i` in direction `d` (kept symmetric).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct GridMultigraph {
     mult: Vec<[u32; 4]>,
 }
@@ -42,6 +42,27 @@ impl GridMultigraph {
         self.mult[i][d.index()] -= 1;
         self.mult[j][d.opposite().index()] -= 1;
         true
+    }
+
+    /// Replaces the edges at every pixel `i` with `pick(i)` by those of `other` (a multigraph
+    /// on the same pixels). Stays symmetric when every edge between a picked and an unpicked
+    /// pixel has the same count in both.
+    pub(crate) fn copy_rows_from(&mut self, other: &GridMultigraph, pick: impl Fn(usize) -> bool) {
+        for (i, (mine, theirs)) in self.mult.iter_mut().zip(&other.mult).enumerate() {
+            if pick(i) {
+                *mine = *theirs;
+            }
+        }
+    }
+
+    /// Adds the edges of `sub`, a multigraph on a sub-region whose pixel `i` is pixel `map[i]`
+    /// here and whose edges are edges here too (a block of the region).
+    pub(crate) fn add_rows_mapped(&mut self, sub: &GridMultigraph, map: &[usize]) {
+        for (row, &g) in sub.mult.iter().zip(map) {
+            for (mine, theirs) in self.mult[g].iter_mut().zip(row) {
+                *mine += theirs;
+            }
+        }
     }
 
     /// Adds the edge between two adjacent pixels, looked up in `region`.
@@ -107,8 +128,10 @@ impl GridMultigraph {
     /// # Complexity
     /// O(number of edges + N).
     pub(crate) fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
-        let mut circuit = Vec::new();
-        let mut stack = vec![start];
+        let edges: usize = self.mult.iter().map(|m| (m[0] + m[1]) as usize).sum();
+        let mut circuit = Vec::with_capacity(edges + 1);
+        let mut stack = Vec::with_capacity(edges + 1);
+        stack.push(start);
         while let Some(&v) = stack.last() {
             match Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0) {
                 Some(d) => {

@@ -82,9 +82,10 @@ pub(crate) fn holes1325(region: &Region) -> Result<Solution> {
     let mut best: Option<(i64, GridMultigraph, LinkStats)> = None;
     for parity in [0, 1] {
         let mut g = base.clone();
-        let mut stats = LinkStats::default();
-        let waste =
-            link_internal_nodes(region, &mut g, &internal, &piece, &[parity], &mut stats)[0];
+        let stats = link_internal_nodes(region, &mut g, &internal, &piece, &[parity])
+            .pop()
+            .expect("one piece");
+        let waste = stats.wasted;
         if best.as_ref().is_none_or(|b| waste < b.0) {
             best = Some((waste, g, stats));
         }
