@@ -209,3 +209,65 @@ fn a_suite_runs_each_hunt_and_summarizes() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("hunt[0].algo"));
 }
+
+/// `seeds` and `strategies` run every hunt once per seed and strategy, each in its own folder,
+/// with the strategy in the summary; the random strategy is what the search is compared with.
+#[test]
+fn a_suite_compares_the_search_with_random_sampling() {
+    let dir = temp_dir("hunt-suite-vs-random");
+    let suite = dir.join("suite.toml");
+    std::fs::write(
+        &suite,
+        "evaluations = 10\nseeds = [1, 2]\nstrategies = [\"anneal\", \"random\"]\n\
+         [[hunt]]\nalgo = \"tsp65\"\nmax_n = 14\n",
+    )
+    .unwrap();
+    let out = dir.join("run");
+    let args = [
+        "hunt",
+        "--suite",
+        suite.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let o = mowmill(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut r = csv::Reader::from_path(out.join("summary.csv")).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
+    let runs: Vec<(String, String)> = rows
+        .iter()
+        .map(|row| {
+            (
+                row[col("strategy")].to_string(),
+                row[col("seed")].to_string(),
+            )
+        })
+        .collect();
+    let expected = [
+        ("anneal", "1"),
+        ("anneal", "2"),
+        ("random", "1"),
+        ("random", "2"),
+    ];
+    assert_eq!(runs, expected.map(|(s, k)| (s.to_string(), k.to_string())));
+    for (strategy, seed) in expected {
+        let manifest = out
+            .join("tsp65")
+            .join(format!("{strategy}-seed{seed}/manifest.json"));
+        let m: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&manifest).unwrap()).unwrap();
+        assert_eq!(m["strategy"], strategy);
+        assert_eq!(m["seed"], seed.parse::<u64>().unwrap());
+    }
+    // Both `seed` and `seeds`, or an unknown strategy: exit 2 before any hunt runs.
+    for bad in [
+        "evaluations = 10\nseed = 1\nseeds = [1]\n[[hunt]]\nalgo = \"tsp65\"\n",
+        "evaluations = 10\nseed = 1\nstrategies = [\"greedy\"]\n[[hunt]]\nalgo = \"tsp65\"\n",
+    ] {
+        std::fs::write(&suite, bad).unwrap();
+        let o = mowmill(&args);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+    }
+}

@@ -22,9 +22,11 @@ pub struct HuntArgs {
         value_parser = super::one_of(algorithms::names())
     )]
     pub algo: Option<String>,
-    /// Run a hunt suite (TOML: `evaluations`, `seed`, and one `[[hunt]]` table per hunt with
-    /// `algo` and optionally `objective`, `family`, `min_n`, `max_n`, `against`) into `--out`:
-    /// one folder per hunt and `summary.csv`.
+    /// Run a hunt suite (TOML: `evaluations`, `seed` or `seeds = [..]`, optionally
+    /// `strategies = ["anneal", "random"]`, and one `[[hunt]]` table per hunt with `algo` and
+    /// optionally `objective`, `family`, `min_n`, `max_n`, `against`) into `--out`: one folder
+    /// per hunt (`<hunt>/<strategy>-seed<S>/` when there are several seeds or strategies) and
+    /// `summary.csv`.
     #[arg(long, conflicts_with_all = ["algo", "command", "start"])]
     pub suite: Option<PathBuf>,
     /// Hunt an outside program instead (see `solve --command`).
@@ -70,7 +72,9 @@ pub struct HuntArgs {
     #[arg(long, default_value_t = 5)]
     pub keep: usize,
     /// Simulated-annealing chains (each proposal round evaluates one candidate per chain).
-    #[arg(long, default_value_t = 4)]
+    /// Two: over 1000 evaluations, two longer chains found worse ratios than four shorter
+    /// ones (docs/hunt.md).
+    #[arg(long, default_value_t = 2)]
     pub chains: usize,
     /// Evaluations without improvement after which a chain restarts.
     #[arg(long, default_value_t = 150)]
@@ -122,6 +126,8 @@ pub struct Done {
     /// The worst instance's file, relative to the suite's folder.
     pub worst_instance: String,
     pub findings: usize,
+    /// `anneal` or `random` (appended: the columns before it keep their order).
+    pub strategy: String,
 }
 
 /// One `[[hunt]]` table of a suite.
@@ -140,7 +146,12 @@ struct SuiteHunt {
 #[serde(deny_unknown_fields)]
 struct Suite {
     evaluations: usize,
-    seed: u64,
+    /// One seed, or `seeds` for several (every hunt runs once per seed).
+    seed: Option<u64>,
+    seeds: Option<Vec<u64>>,
+    /// `anneal` and/or `random` (default: `--strategy`): every hunt runs once per strategy, so
+    /// that a suite can compare the search with random sampling on equal terms.
+    strategies: Option<Vec<String>>,
     hunt: Vec<SuiteHunt>,
 }
 
@@ -159,6 +170,28 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         .out
         .clone()
         .unwrap_or_else(|| PathBuf::from("results/hunt"));
+    let seeds = match (&suite.seeds, suite.seed) {
+        (Some(seeds), None) if !seeds.is_empty() => seeds.clone(),
+        (None, Some(seed)) => vec![seed],
+        _ => {
+            return Err(mowmill::Error::invalid(format!(
+                "{file}: expected either `seed = S` or a non-empty `seeds = [S, ...]`"
+            ))
+            .into());
+        }
+    };
+    let strategies = suite
+        .strategies
+        .clone()
+        .unwrap_or_else(|| vec![a.strategy.clone()]);
+    if strategies.is_empty() || strategies.iter().any(|s| s != "anneal" && s != "random") {
+        return Err(mowmill::Error::invalid(format!(
+            "{file}: strategies = {strategies:?}: expected a non-empty list of \"anneal\" and \"random\""
+        ))
+        .into());
+    }
+    // One seed and one strategy keep the folder per hunt that earlier suites wrote.
+    let nested = seeds.len() > 1 || strategies.len() > 1;
     // Every table is checked before the first hunt runs.
     let mut runs = Vec::new();
     for (k, h) in suite.hunt.iter().enumerate() {
@@ -186,13 +219,23 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         one.against = h.against.clone().or(a.against.clone());
         one.evaluations = Some(suite.evaluations);
         one.budget = None;
-        one.seed = suite.seed;
         let tag = match &one.objective {
             Some(o) => format!("{}-{o}", h.algo),
             None => h.algo.clone(),
         };
-        one.out = Some(out.join(&tag));
-        runs.push(one);
+        for strategy in &strategies {
+            for &seed in &seeds {
+                let mut run = one.clone();
+                run.seed = seed;
+                run.strategy = strategy.clone();
+                run.out = Some(if nested {
+                    out.join(&tag).join(format!("{strategy}-seed{seed}"))
+                } else {
+                    out.join(&tag)
+                });
+                runs.push(run);
+            }
+        }
     }
     let mut summary = Vec::new();
     let mut code = ExitCode::SUCCESS;
@@ -407,6 +450,7 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             String::new()
         },
         findings: report.findings.len(),
+        strategy: a.strategy.clone(),
     };
     let code = if report.findings.is_empty() {
         ExitCode::SUCCESS
