@@ -1,9 +1,9 @@
 //! Time and memory proportional to N (issue 13): `mowmill info`'s work (parse the instance,
 //! `topology::summary`, the minimum strip cover) against `tsp65` (run and check), per pixel, on
 //! the diagonal band and the random-simple and random-holed families at 10^4, 10^5 and 10^6
-//! pixels. Single thread; every time is the median of 5 runs (3 at 10^6 pixels). Run with
-//! `cargo bench --bench region` (add `-- quick` to stop at 10^5 pixels); the figures of record
-//! are in `docs/region-benchmark.md`.
+//! pixels. Single thread; every time is the median of 5 runs (3 at 10^6 pixels and for
+//! parsing). Run with `cargo bench --bench region` (add `-- quick` to stop at 10^5 pixels); the
+//! figures of record are in `docs/region-benchmark.md`.
 //!
 //! Every tour goes through the checker (timed: `mowmill solve` checks too), so a fast but
 //! wrong run fails.
@@ -72,16 +72,11 @@ fn timed<T>(reps: usize, mut f: impl FnMut() -> T) -> (T, f64) {
 }
 
 /// One line of the table: parse, summary, strip cover, info total; tour run, check, total; all
-/// in seconds (each the median of `REPS` runs, 3 at 10^6 pixels), then info and the tour in
+/// in seconds (each the median of `REPS` runs, 3 at 10^6 pixels and for parsing), then info and the tour in
 /// microseconds per pixel.
 fn measure(family: &str, stored: &Stored, algo: &str) {
-    let (region, parse) = timed(1, || stored.parse());
+    let (region, parse) = timed(PARSE_REPS, || stored.parse());
     let reps = if region.len() > 500_000 { 3 } else { REPS };
-    let (region, parse) = if reps > 1 {
-        timed(reps, || stored.parse())
-    } else {
-        (region, parse)
-    };
     let (summary, summarize) = timed(reps, || topology::summary(&region));
     let (cover, strips) = timed(reps, || min_strip_cover_size(&region));
     let info = parse + summarize + strips;
@@ -136,8 +131,10 @@ fn generated(family: Family, n: usize, no_cut: bool) -> Stored {
     Stored::Grid(file.to_text().expect("non-negative"))
 }
 
-/// Repetitions of every timed step (the median is reported).
+/// Repetitions of every timed step (the median is reported); parsing, which comes before N is
+/// known, is repeated 3 times at every size.
 const REPS: usize = 5;
+const PARSE_REPS: usize = 3;
 
 fn main() {
     let quick = std::env::args().any(|a| a == "quick");

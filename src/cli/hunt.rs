@@ -84,7 +84,7 @@ pub struct HuntArgs {
     pub exact_time_limit: f64,
     /// `anneal` (the search) or `random` (independent generated regions, the baseline a
     /// search must beat).
-    #[arg(long, default_value = "anneal", value_parser = ["anneal", "random"])]
+    #[arg(long, default_value = "anneal", value_parser = STRATEGIES)]
     pub strategy: String,
     /// Merge strategy of cycle covers.
     #[arg(long, default_value = "smart", value_parser = algorithms::Merge::NAMES)]
@@ -96,6 +96,9 @@ pub struct HuntArgs {
     #[arg(long)]
     pub coverage4: bool,
 }
+
+/// The values of `--strategy` and of a suite's `strategies`.
+const STRATEGIES: [&str; 2] = ["anneal", "random"];
 
 /// The family a hunt of `algo` searches by default: the one its precondition is made for.
 fn default_family(algo: &str) -> Family {
@@ -184,9 +187,9 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         .strategies
         .clone()
         .unwrap_or_else(|| vec![a.strategy.clone()]);
-    if strategies.is_empty() || strategies.iter().any(|s| s != "anneal" && s != "random") {
+    if strategies.is_empty() || strategies.iter().any(|s| !STRATEGIES.contains(&s.as_str())) {
         return Err(mowmill::Error::invalid(format!(
-            "{file}: strategies = {strategies:?}: expected a non-empty list of \"anneal\" and \"random\""
+            "{file}: strategies = {strategies:?}: expected a non-empty list of {STRATEGIES:?}"
         ))
         .into());
     }
