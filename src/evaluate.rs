@@ -152,8 +152,9 @@ impl Reference {
 }
 
 /// The cheap lower bound on the optimum of `objective` (no exact solve), with its source.
-/// Lawn tours: the area swept (milling paper, Section 4), in the units the lawn checker
-/// reports for the cutter.
+/// Lawn tours: the larger of the area swept (milling paper, Section 4) and, for the square
+/// cutters, the spread of the grass ([`algorithms::lawn::spread_lower_bound`]), in the units
+/// the lawn checker reports for the cutter.
 pub fn cheap_bound(region: &Region, objective: Objective, cutter: Cutter) -> (u64, String) {
     match objective {
         Objective::Length => {
@@ -164,10 +165,16 @@ pub fn cheap_bound(region: &Region, objective: Objective, cutter: Cutter) -> (u6
             let b = bounds::turn_lower_bound(region);
             (b.value, b.source.to_string())
         }
-        Objective::LawnLength => (
-            algorithms::lawn::area_lower_bound(region, cutter).max(0) as u64,
-            "area: N <= L*w + a".to_string(),
-        ),
+        Objective::LawnLength => {
+            let area = algorithms::lawn::area_lower_bound(region, cutter).max(0) as u64;
+            match algorithms::lawn::spread_lower_bound(region, cutter) {
+                Some(spread) if spread as u64 > area => (
+                    spread as u64,
+                    "spread: the cutter reaches the extreme pixels".to_string(),
+                ),
+                _ => (area, "area: N <= L*w + a".to_string()),
+            }
+        }
     }
 }
 

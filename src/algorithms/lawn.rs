@@ -717,6 +717,30 @@ pub(crate) fn area_lower_bound(region: &Region, cutter: Cutter) -> i64 {
     ((area - a).max(0.0) / w * scale).floor() as i64
 }
 
+/// A lower bound on the optimal lawn tour from the spread of the grass, in the reported units,
+/// for the unit square cutters (`None` for the disk).
+///
+/// The square cutter covers [c − 1/2, c + 1/2] in x around its centre c, so covering the left
+/// side of the leftmost pixel (centre x_min) needs a centre with x ≤ x_min, and the rightmost
+/// pixel one with x ≥ x_max; likewise in y. A closed path through points that far apart in x
+/// and y (ΔX = W − 1, ΔY = H − 1 for the W × H bounding box of the pixels) has L1 length at
+/// least 2ΔX + 2ΔY, and Euclidean length at least 2√(ΔX² + ΔY²) (the shortest convex set with
+/// those extents is the diagonal segment, walked there and back). For the disk, whose walks lie
+/// on a hexagonal lattice, the bound is not made.
+pub(crate) fn spread_lower_bound(region: &Region, cutter: Cutter) -> Option<i64> {
+    if region.is_empty() {
+        return Some(0);
+    }
+    let b = region.bbox();
+    let (dx, dy) = (b.width() as i64 - 1, b.height() as i64 - 1);
+    match cutter {
+        Cutter::Square => Some(2 * dx + 2 * dy),
+        // Milli-units, rounded down (the i64 -> f64 conversion is exact below 2^53).
+        Cutter::SquareFree => Some((2000.0 * ((dx * dx + dy * dy) as f64).sqrt()).floor() as i64),
+        Cutter::Disk => None,
+    }
+}
+
 fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> Solution {
     let mut s = Solution::default();
     s.outputs.push(Output {
