@@ -27,6 +27,7 @@
 //! with factor 1, so a false "optimal" certificate is one) and a value below the proven optimum
 //! (the exact solver or the checker is wrong) are findings: reported at once and saved.
 
+mod audit;
 pub mod output;
 
 use crate::algorithms::{self, Objective, Options};
@@ -532,6 +533,10 @@ fn assess(
         return out;
     }
     out.value = Some(c.value);
+    if let Subject::Registered(a) = subject {
+        out.findings
+            .extend(audit::certificates(a.name, &out.region, &eval.certificates));
+    }
     out.ratio_bound = c
         .lower_bound
         .filter(|&b| b > 0)
