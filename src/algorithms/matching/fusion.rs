@@ -2,14 +2,57 @@
 //! graph (its partitioned solver, still exact).
 
 use super::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, Once};
 
-/// Runs a fusion-blossom solve (a panic of the library counts as a failure) and turns its
-/// pairs into partners over `p` ports (`usize::MAX` where unmatched), with the dual sum.
+/// Fusion-blossom solves running now: while there are any, a panic prints nothing (the
+/// solve counts as failed and its caller falls back), so no backtrace reaches the user.
+static QUIET: AtomicUsize = AtomicUsize::new(0);
+
+/// The message of the last panic kept quiet, for `MOWMILL_MATCHING_LOG`.
+static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
+
+/// Installs (once) the panic hook that keeps panics quiet while a solve runs. A panic of
+/// another thread during a solve is silenced too; it still fails its own job.
+fn install_quiet_hook() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        let default = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if QUIET.load(Ordering::SeqCst) > 0 {
+                if let Ok(mut last) = LAST_PANIC.lock() {
+                    *last = Some(info.to_string());
+                }
+            } else {
+                default(info);
+            }
+        }));
+    });
+}
+
+/// Runs a fusion-blossom solve (a panic of the library counts as a failure, silently) and
+/// turns its pairs into partners over `p` ports (`usize::MAX` where unmatched), with the
+/// dual sum.
 pub(super) fn mates_of(
     p: usize,
     solve: impl FnOnce() -> Option<(Vec<(usize, usize)>, i64)>,
 ) -> Option<(Vec<usize>, i64)> {
-    let (pairs, dual) = std::panic::catch_unwind(std::panic::AssertUnwindSafe(solve)).ok()??;
+    install_quiet_hook();
+    QUIET.fetch_add(1, Ordering::SeqCst);
+    let solved = std::panic::catch_unwind(std::panic::AssertUnwindSafe(solve));
+    QUIET.fetch_sub(1, Ordering::SeqCst);
+    if std::env::var_os("MOWMILL_MATCHING_LOG").is_some() {
+        let outcome = match &solved {
+            Err(_) => format!(
+                "panicked: {:?}",
+                LAST_PANIC.lock().ok().and_then(|l| l.clone())
+            ),
+            Ok(None) => "failed".to_string(),
+            Ok(Some(_)) => "solved".to_string(),
+        };
+        eprintln!("fusion-blossom: {outcome}");
+    }
+    let (pairs, dual) = solved.ok()??;
     let mut mate = vec![usize::MAX; p];
     for (a, b) in pairs {
         mate[a] = b;
@@ -18,22 +61,24 @@ pub(super) fn mates_of(
     Some((mate, dual))
 }
 
-/// Solves the run-graph matching with fusion-blossom: the matched endpoint pairs and the sum
-/// of the dual variables. One thread; above [`SERIAL_LIMIT`] endpoints on a recursive
-/// bisection of the graph (fusion-blossom's partitioned solver, still exact).
+/// Solves a minimum-weight perfect matching of the vertices `defects` in the shortest-path
+/// metric of a graph with fusion-blossom: the matched vertex pairs and the sum of the dual
+/// variables. One thread; above `serial_limit` defects on a recursive bisection of the graph
+/// (fusion-blossom's partitioned solver, still exact).
 ///
-/// `extent` gives every vertex's extent (only called above [`SERIAL_LIMIT`] endpoints): the
+/// `extent` gives every vertex's extent (only called above `serial_limit` defects): the
 /// extents of two vertices joined by an edge must meet.
 pub(super) fn solve_graph_matching(
     serial_limit: usize,
     vertices: usize,
     edges: Vec<(usize, usize, isize)>,
-    kept: &[usize],
-    vertex_of: &[usize],
+    defects: &[usize],
     extent: impl FnOnce(&[(usize, usize, isize)]) -> Vec<Extent>,
 ) -> Option<(Vec<(usize, usize)>, i64)> {
-    let defect_port: HashMap<usize, usize> = kept.iter().map(|&i| (vertex_of[i], i)).collect();
-    let (perm, partitions, fusions) = if kept.len() <= serial_limit {
+    if defects.is_empty() {
+        return Some((Vec::new(), 0));
+    }
+    let (perm, partitions, fusions) = if defects.len() <= serial_limit {
         (
             (0..vertices).collect::<Vec<usize>>(),
             Vec::new(),
@@ -54,9 +99,9 @@ pub(super) fn solve_graph_matching(
             .collect(),
         Vec::new(),
     );
-    let mut defects: Vec<usize> = kept.iter().map(|&i| position[vertex_of[i]]).collect();
-    defects.sort_unstable();
-    let syndrome = SyndromePattern::new_vertices(defects);
+    let mut positions: Vec<usize> = defects.iter().map(|&v| position[v]).collect();
+    positions.sort_unstable();
+    let syndrome = SyndromePattern::new_vertices(positions);
     let matching = if partitions.is_empty() {
         let mut solver = SolverSerial::new(&init);
         solver.solve(&syndrome);
@@ -80,16 +125,14 @@ pub(super) fn solve_graph_matching(
     if !perfect.virtual_matchings.is_empty() {
         return None;
     }
-    let port_of =
+    let vertex_of =
         |node: &fusion_blossom::dual_module::DualNodePtr| match node.read_recursive().class {
-            DualNodeClass::DefectVertex { defect_index } => {
-                defect_port.get(&perm[defect_index]).copied()
-            }
+            DualNodeClass::DefectVertex { defect_index } => Some(perm[defect_index]),
             DualNodeClass::Blossom { .. } => None,
         };
-    let mut pairs = Vec::with_capacity(kept.len() / 2);
+    let mut pairs = Vec::with_capacity(defects.len() / 2);
     for (a, b) in &perfect.peer_matchings {
-        pairs.push((port_of(a)?, port_of(b)?));
+        pairs.push((vertex_of(a)?, vertex_of(b)?));
     }
     Some((pairs, dual as i64))
 }

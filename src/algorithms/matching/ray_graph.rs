@@ -205,16 +205,12 @@ pub(super) fn link_graph_matching(
             edges.len()
         );
     }
-    let kept: Vec<usize> = (0..p).collect();
+    let defects: Vec<usize> = (0..p).map(|i| vertex_of[i]).collect();
+    let port_of: HashMap<usize, usize> = (0..p).map(|i| (vertex_of[i], i)).collect();
     let vertices = first_end + p;
     let (mate, dual) = mates_of(p, || {
-        solve_graph_matching(
-            RAY_SERIAL_LIMIT,
-            vertices,
-            edges,
-            &kept,
-            &vertex_of,
-            |edges| {
+        let (pairs, dual) =
+            solve_graph_matching(RAY_SERIAL_LIMIT, vertices, edges, &defects, |edges| {
                 // A run spans its pixels, a clone its run's, an end its own run and those it
                 // hangs from (so that every edge joins vertices whose extents meet).
                 let mut extent = run_extents(region, &graph, vertices);
@@ -232,8 +228,12 @@ pub(super) fn link_graph_matching(
                     }
                 }
                 extent
-            },
-        )
+            })?;
+        let pairs = pairs
+            .into_iter()
+            .map(|(a, b)| Some((*port_of.get(&a)?, *port_of.get(&b)?)))
+            .collect::<Option<Vec<_>>>()?;
+        Some((pairs, dual))
     })?;
     if mate.contains(&usize::MAX) {
         return None;

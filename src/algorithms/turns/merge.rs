@@ -96,6 +96,8 @@ struct Walks<'a> {
     /// belongs to the cycle of the node it copies).
     visit_start: Vec<u32>,
     visit_nodes: Vec<u32>,
+    /// Pixels known to be settled (settledness only grows, so a `true` is kept for good).
+    known_settled: Vec<bool>,
     stats: MergeStats,
 }
 
@@ -122,6 +124,7 @@ impl<'a> Walks<'a> {
             coverage: vec![0; region.len()],
             visit_start: Vec::new(),
             visit_nodes: Vec::new(),
+            known_settled: vec![false; region.len()],
             stats: MergeStats::default(),
         };
         for (c, walk) in cover.cycles.iter().enumerate() {
@@ -184,6 +187,9 @@ impl<'a> Walks<'a> {
     /// Whether every visit of pixel `p` already lies in one merged cycle. Settledness only
     /// grows as cycles merge.
     fn settled(&mut self, p: usize) -> bool {
+        if self.known_settled[p] {
+            return true;
+        }
         let (a, b) = (
             self.visit_start[p] as usize,
             self.visit_start[p + 1] as usize,
@@ -192,10 +198,12 @@ impl<'a> Walks<'a> {
             return true;
         };
         let root = self.root_of(first);
-        (a + 1..b).all(|k| {
+        let settled = (a + 1..b).all(|k| {
             let node = self.visit_nodes[k];
             self.root_of(node) == root
-        })
+        });
+        self.known_settled[p] = settled;
+        settled
     }
 
     /// Whether detours between nodes `x` and `z` are allowed: only between settled pixels (see
