@@ -80,11 +80,13 @@ pub mod hunt;
 pub mod instance;
 pub mod lawn_check;
 pub mod outside;
+pub mod pixel_list;
 pub mod region;
 pub mod strip_cover;
 pub mod tight;
 pub mod topology;
 pub mod tour;
+pub mod tsplib;
 pub mod wkt;
 
 pub use error::{Error, Result};
