@@ -74,15 +74,10 @@ impl Format {
                 _ => None,
             }
         };
-        match pair(first) {
-            Some(true) => return Format::PixelList,
-            // A header of two words, then a pair of numbers.
-            Some(false) if first.chars().any(|c| c.is_ascii_alphabetic()) => {
-                if data.next().and_then(pair) == Some(true) {
-                    return Format::PixelList;
-                }
-            }
-            _ => {}
+        // Two numbers, or a header of two words and then two numbers.
+        let header = pair(first) == Some(false) && first.chars().any(|c| c.is_ascii_alphabetic());
+        if pair(first) == Some(true) || (header && data.next().and_then(pair) == Some(true)) {
+            return Format::PixelList;
         }
         let mut words = first.split('#').next().unwrap_or("").split_whitespace();
         if let Some(k) = words.next().and_then(|w| w.parse::<u64>().ok()) {
