@@ -134,13 +134,7 @@ impl GridFile {
     /// Parses the bytes of a `.grid` file (which must be UTF-8); `name` names the source in
     /// error messages.
     pub fn from_bytes(bytes: Vec<u8>, name: &str) -> Result<GridFile> {
-        let text = String::from_utf8(bytes).map_err(|e| {
-            let upto = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-            let line = upto.iter().filter(|&&b| b == b'\n').count() + 1;
-            let col = upto.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-            Error::parse(name, line, col, "invalid UTF-8: expected a UTF-8 text file")
-        })?;
-        GridFile::parse(&text, name)
+        GridFile::parse(&utf8_text(bytes, name)?, name)
     }
 
     /// The file's text. Fails when the region has pixels at negative coordinates (translate it
@@ -179,6 +173,17 @@ impl GridFile {
     pub fn write(&self, path: &Path) -> Result<()> {
         std::fs::write(path, self.to_text()?).map_err(|e| Error::io(path, e))
     }
+}
+
+/// The bytes of a text file as a string, or an error at the line and column of the first byte
+/// that is not UTF-8 (the column counts bytes on that line).
+pub fn utf8_text(bytes: Vec<u8>, name: &str) -> Result<String> {
+    String::from_utf8(bytes).map_err(|e| {
+        let upto = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = upto.iter().filter(|&&b| b == b'\n').count() + 1;
+        let col = upto.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+        Error::parse(name, line, col, "invalid UTF-8: expected a UTF-8 text file")
+    })
 }
 
 #[cfg(test)]

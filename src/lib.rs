@@ -12,8 +12,10 @@
 //! Only what a library user (and the `mowmill` binary, the tests, examples and benches) needs:
 //!
 //! - [`region`]: the pixel set [`Region`], with [`Pixel`], [`Dir`] and [`Symmetry`].
-//! - [`instance`], [`gridfile`], [`wkt`]: reading regions (`.grid` text or WKT) and writing
-//!   them back ([`gridfile::GridFile`], [`wkt::to_wkt`]).
+//! - [`instance`], [`gridfile`], [`wkt`], [`pixel_list`]: reading regions (`.grid` text, WKT,
+//!   `.poly` rings, pixel lists) and writing them back ([`gridfile::GridFile`],
+//!   [`wkt::to_wkt`], [`pixel_list::to_pixel_list`]); [`tsplib`]: the pixels as a TSPLIB
+//!   instance for Concorde or LKH.
 //! - [`generate`]: deterministic instance families ([`generate::generate`]).
 //! - [`tour`]: closed walks and cycle covers ([`CycleCover`], [`Walk`]) and tour files.
 //! - [`algorithms`]: the one registry ([`algorithms::REGISTRY`], [`algorithms::find`]), what its
@@ -80,11 +82,13 @@ pub mod hunt;
 pub mod instance;
 pub mod lawn_check;
 pub mod outside;
+pub mod pixel_list;
 pub mod region;
 pub mod strip_cover;
 pub mod tight;
 pub mod topology;
 pub mod tour;
+pub mod tsplib;
 pub mod wkt;
 
 pub use error::{Error, Result};

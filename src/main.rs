@@ -14,7 +14,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 mod cli;
-use cli::{algos::*, bench::*, exact::*, generate::*, hunt::*, solve::*, tight::*};
+use cli::{algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, solve::*, tight::*};
 
 #[derive(Parser)]
 #[command(
@@ -33,15 +33,18 @@ enum Command {
     Gen(GenArgs),
     /// Topology of an instance: N, holes, components, boundary/internal, cut vertices, ...
     Info {
-        /// Instance file (.grid or WKT).
+        /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
         file: PathBuf,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
     },
+    /// Write an instance in another format: TSPLIB (for Concorde or LKH), a pixel list, WKT,
+    /// .grid.
+    Export(ExportArgs),
     /// Check a tour or cycle cover with the independent checker (exit 1 if invalid).
     Validate {
-        /// Instance file (.grid or WKT).
+        /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
         file: PathBuf,
         /// Tour file: JSON {"cycles": [[[x, y], ...], ...]}.
         #[arg(long)]
@@ -99,7 +102,7 @@ enum Command {
     },
     /// Draw an instance, optionally with a tour over it, to SVG or PNG.
     Draw {
-        /// Instance file (.grid or WKT).
+        /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
         file: PathBuf,
         /// Tour file to draw over the region.
         #[arg(long)]
@@ -214,6 +217,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
                 ExitCode::from(1)
             })
         }
+        Command::Export(args) => export_command(args),
         Command::Solve(args) => solve_command(args),
         Command::Tight(args) => tight_command(args),
         Command::Claims {

@@ -325,7 +325,10 @@ fn careless_suites_are_refused_with_line_and_column() {
         (
             "name = \"t\"\n[[files]]\ndir = \"empty\"\n",
             "3:7",
-            &["files[0].dir", "no .grid or .wkt file"],
+            &[
+                "files[0].dir",
+                "no instance file (.grid, .wkt, .poly, .gg, .csv)",
+            ],
         ),
         // Two files of one folder, or two folders of one family, with the same name.
         (

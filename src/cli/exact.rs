@@ -10,7 +10,7 @@ use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct ExactArgs {
-    /// Instance file (.grid or WKT).
+    /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
     pub file: PathBuf,
     /// The exact objective (`turns` also accepted as `tour-turns`; `weighted` needs
     /// --turn-cost).

@@ -61,7 +61,7 @@ pub struct HuntArgs {
     /// Output directory. Default: results/hunt-<algorithm>-<UTC stamp>/ (git-ignored).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Regions to start from (.grid or WKT), one chain each.
+    /// Regions to start from (.grid, WKT, .poly or .gg/.csv), one chain each.
     #[arg(long, num_args = 1..)]
     pub start: Vec<PathBuf>,
     /// Divide by the exact optimum (default where an exact objective exists) or by the best

@@ -3,6 +3,7 @@
 pub mod algos;
 pub mod bench;
 pub mod exact;
+pub mod export;
 pub mod generate;
 pub mod hunt;
 pub mod solve;

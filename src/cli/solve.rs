@@ -13,7 +13,7 @@ use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct SolveArgs {
-    /// Instance file (.grid or WKT).
+    /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
     pub file: PathBuf,
     /// Algorithm name (`mowmill algos` lists their objectives and guarantees).
     #[arg(

@@ -17,7 +17,7 @@
 //! algorithms = ["tsp65"]   # optional; default: every registered algorithm whose
 //!                          # preconditions hold on the instance
 //!
-//! [[files]]            # existing instances: every .grid / .wkt file of a folder
+//! [[files]]            # existing instances: every .grid/.wkt/.poly/.gg/.csv file of a folder
 //! dir = "../instances/fixtures"   # relative to the config file's folder
 //! family = "fixtures"  # the family column of their rows
 //!
@@ -64,7 +64,8 @@
 //!   [`MAX_INSTANCES`], and so is the whole suite. Two tables may name the same family, but
 //!   not the same parameter combination (the same seeds and names twice).
 //! * `[[files]]`: `dir` is resolved against the config file's folder (as outside algorithms'
-//!   commands run there) and must hold at least one `.grid` or `.wkt` file; `family` (default
+//!   commands run there) and must hold at least one instance file (`.grid`, `.wkt`, `.poly`,
+//!   `.gg` or `.csv`); `family` (default
 //!   `files`) obeys the rule of `name` and is not the family of a `[[family]]` table.
 //! * `algorithms` lists: registered names or the names of `[[algorithm]]` tables.
 //! * `[[exact]]`: `objective` one of length, cc-turns, turns, weighted, lawn-tsp, at most one
@@ -739,7 +740,8 @@ fn check_time_limit(seconds: f64) -> std::result::Result<(), String> {
     ))
 }
 
-/// The `.grid` and `.wkt` files of a folder, sorted; an error if it cannot be read or holds
+/// The instance files of a folder (every extension [`Instance::read`](crate::instance::Instance::read)
+/// knows: `.grid`, `.wkt`, `.poly`, `.gg`, `.csv`), sorted; an error if it cannot be read or holds
 /// none.
 fn instance_files(dir: &Path) -> std::result::Result<Vec<PathBuf>, String> {
     let entries = std::fs::read_dir(dir).map_err(|e| {
@@ -750,10 +752,14 @@ fn instance_files(dir: &Path) -> std::result::Result<Vec<PathBuf>, String> {
     })?;
     let mut files: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "grid" || x == "wkt"))
+        .filter(|p| crate::instance::Format::from_extension(p).is_some())
         .collect();
     if files.is_empty() {
-        return Err(format!("no .grid or .wkt file in {}", dir.display()));
+        return Err(format!(
+            "no instance file (.{}) in {}",
+            crate::instance::EXTENSIONS.join(", ."),
+            dir.display()
+        ));
     }
     files.sort();
     Ok(files)

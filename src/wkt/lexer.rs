@@ -111,14 +111,14 @@ impl<'a> Lexer<'a> {
 
 /// The value of a number token, computed exactly so that `3.0000000000000000001` is refused.
 #[derive(Debug, PartialEq)]
-pub(super) enum NumberValue {
+pub(crate) enum NumberValue {
     Integer(i64),
     Fraction,
     OutOfRange,
     Malformed,
 }
 
-pub(super) fn number_value(text: &str) -> NumberValue {
+pub(crate) fn number_value(text: &str) -> NumberValue {
     // Fast path for plain integers such as `-12`, the common case.
     if text.len() <= 11
         && let Ok(value) = text.parse::<i64>()

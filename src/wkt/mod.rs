@@ -29,6 +29,9 @@
 //! One OGC rule is not checked, that a polygon's interior be connected (holes touching in a
 //! closed chain can cut it): the pixel set is well defined all the same.
 //!
+//! [`parse_poly`] reads the same polygons written as CGAL-style `.poly` rings (one ring per line)
+//! and checks them by the same rules.
+//!
 //! [`to_wkt`] writes a region back: one polygon per 4-connected component, its holes as inner
 //! rings, so that `parse_wkt(&to_wkt(&r), _) == r` for every non-empty region `r`.
 
@@ -38,8 +41,9 @@ use lexer::Lexer;
 use parser::Parser;
 use validate::Geometry;
 
-mod lexer;
+pub(crate) mod lexer;
 mod parser;
+mod poly;
 mod raster;
 mod validate;
 mod writer;
@@ -47,6 +51,7 @@ mod writer;
 #[cfg(test)]
 mod tests;
 
+pub use poly::parse_poly;
 pub use writer::to_wkt;
 
 /// Smallest and largest accepted coordinate: every pixel between them has `i32` coordinates.
@@ -96,7 +101,14 @@ pub fn parse_wkt(text: &str, file: &str) -> Result<Region> {
         file,
     };
     let (rings, keyword) = parser.geometry()?;
-    let geometry = Geometry { rings, file };
+    rasterise(Geometry { rings, file }, keyword)
+}
+
+/// Checks a geometry whose rings are each valid on their own (no crossings, rings meeting at
+/// points only, holes inside their outer ring, polygons apart, at most
+/// [`MAX_PIXELS`](crate::region::MAX_PIXELS) pixels, the last error placed at `keyword`) and
+/// fills its pixels: the one path of WKT and `.poly` input.
+fn rasterise(geometry: Geometry<'_>, keyword: lexer::Pos) -> Result<Region> {
     geometry.check_rings_meet_at_points()?;
     let parents = geometry.enclosing_rings()?;
     geometry.check_nesting(&parents)?;
