@@ -355,7 +355,7 @@ fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, matching::Od
         deg[b] += 1;
     }
     let odd: Vec<usize> = (0..n).filter(|&i| deg[i] % 2 == 1).collect();
-    let m = matching::odd_matching(p, &odd, mst);
+    let m = matching::odd_matching(p, &odd);
     let mut edges: Vec<(usize, usize)> = mst.to_vec();
     edges.extend_from_slice(&m.pairs);
     (euler_shortcut(n, &edges), m)
