@@ -931,6 +931,78 @@ mod tests {
         }
     }
 
+    fn random_points(rng: &mut rand_chacha::ChaCha8Rng, k: i32, spread: i32) -> Region {
+        let pixels: Vec<Pixel> = (0..k)
+            .map(|_| Pixel::new(rng.random_range(0..spread), rng.random_range(0..spread)))
+            .collect();
+        Region::from_pixels(pixels).unwrap()
+    }
+
+    #[test]
+    fn neighbour_lists_equal_brute_force() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        for trial in 0..40i32 {
+            let region = random_points(&mut rng, 2 + 3 * trial, 4 + 2 * trial);
+            for cutter in [Cutter::Square, Cutter::SquareFree, Cutter::Disk] {
+                let p = Points::new(&region, cutter);
+                let got = local::nearest_neighbours(&p, local::NEIGHBOURS);
+                for (i, list) in got.iter().enumerate() {
+                    let mut all: Vec<(u64, usize)> = (0..p.len())
+                        .filter(|&j| j != i)
+                        .map(|j| (p.key(i, j), j))
+                        .collect();
+                    all.sort_unstable();
+                    let want: Vec<usize> = all
+                        .iter()
+                        .take(local::NEIGHBOURS)
+                        .map(|&(_, j)| j)
+                        .collect();
+                    assert_eq!(list, &want, "{cutter:?} trial {trial} point {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn local_search_never_lengthens_its_start() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(12);
+        for trial in 0..30i32 {
+            let region = random_points(&mut rng, 3 + 4 * trial, 5 + 2 * trial);
+            for cutter in [Cutter::Square, Cutter::SquareFree, Cutter::Disk] {
+                let p = Points::new(&region, cutter);
+                // A random start, and the MST tour.
+                let mut random: Vec<usize> = (0..p.len()).collect();
+                for k in (1..random.len()).rev() {
+                    random.swap(k, rng.random_range(0..=k));
+                }
+                let mst = minimum_spanning_tree(&p);
+                for start in [random, preorder(p.len(), &mst)] {
+                    let before = p.tour_length(&start);
+                    let tour = local::improve(&p, start);
+                    let mut sorted = tour.clone();
+                    sorted.sort_unstable();
+                    assert_eq!(sorted, (0..p.len()).collect::<Vec<_>>(), "a permutation");
+                    assert!(p.tour_length(&tour) <= before, "{cutter:?} trial {trial}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn l1_matching_at_scale_equals_the_complete_blossom() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(13);
+        for trial in 0..12i32 {
+            let region = random_points(&mut rng, 40 + 20 * trial, 12 + 4 * trial);
+            let p = Points::new(&region, Cutter::Square);
+            let mut odd: Vec<usize> = (0..p.len()).collect();
+            odd.truncate(p.len() & !1);
+            let exact = matching::complete_for_tests(&p, &odd).weight;
+            let (hanan, spanner) = matching::l1_routes_for_tests(&p, &odd);
+            assert_eq!(hanan, exact, "trial {trial}: Hanan grid");
+            assert_eq!(spanner, exact, "trial {trial}: spanner");
+        }
+    }
+
     #[test]
     fn box_tour_covers_the_bounding_box() {
         for (w, h) in [

@@ -329,3 +329,38 @@ fn exchange_pairs(p: &Points, odd: &[usize], mate: &mut [usize]) {
         }
     }
 }
+
+/// The complete-graph blossom, for tests.
+#[cfg(test)]
+pub(super) fn complete_for_tests(p: &Points, odd: &[usize]) -> OddMatching {
+    complete(p, odd)
+}
+
+/// The L1 weights of the Hanan-grid and the spanner matchings of `odd`, for tests (each
+/// checked perfect and certified by its dual).
+#[cfg(test)]
+pub(super) fn l1_routes_for_tests(p: &Points, odd: &[usize]) -> (f64, f64) {
+    let xy: Vec<(i64, i64)> = odd
+        .iter()
+        .map(|&i| (i64::from(p.pts[i].x), i64::from(p.pts[i].y)))
+        .collect();
+    let weigh = |pairs: Vec<(usize, usize)>, dual: i64| {
+        let mut seen = vec![false; odd.len()];
+        for &(a, b) in &pairs {
+            assert!(
+                !std::mem::replace(&mut seen[a], true) && !std::mem::replace(&mut seen[b], true)
+            );
+        }
+        assert!(seen.iter().all(|&s| s), "perfect");
+        let w: f64 = pairs.iter().map(|&(a, b)| p.dist(odd[a], odd[b])).sum();
+        assert!(w <= ((dual + 1) / 2) as f64, "certified by the dual");
+        w
+    };
+    let (pairs, dual) = l1_matching(&xy).expect("Hanan route");
+    let hanan = weigh(pairs, dual);
+    let (vertices, edges) = l1_spanner(&xy).expect("spanner");
+    let defects: Vec<usize> = (0..xy.len()).collect();
+    let (pairs, dual) = graph_metric_matching(vertices, edges, &defects, usize::MAX, |_| (0, 0))
+        .expect("spanner route");
+    (hanan, weigh(pairs, dual))
+}
