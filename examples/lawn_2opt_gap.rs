@@ -71,8 +71,8 @@ fn main() {
     }
     let algo = algorithms::find("lawn-2opt").expect("lawn-2opt is registered");
     let objective = Objective::parse("lawn-tsp", None).expect("lawn-tsp is an exact objective");
-    let (mut proven, mut open): (Vec<(String, f64)>, Vec<(String, u64, u64)>) =
-        (Vec::new(), Vec::new());
+    let mut proven: Vec<(String, f64)> = Vec::new();
+    let mut open: Vec<(String, u64, u64)> = Vec::new();
     println!("family n seed lawn-2opt opt-or-bound status gap% seconds");
     for &family in &families {
         for &n in &sizes {

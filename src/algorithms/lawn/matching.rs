@@ -35,6 +35,9 @@ use super::Points;
 use crate::algorithms::matching::graph_metric_matching;
 use crate::lawn_check::{Cutter, centre};
 
+/// Weighted edges (a, b, w) of a graph for fusion-blossom.
+type Edges = Vec<(usize, usize, isize)>;
+
 /// Up to this many odd nodes, blossom on the complete graph.
 pub(super) const COMPLETE_LIMIT: usize = 400;
 
@@ -187,7 +190,7 @@ fn l1_matching(xy: &[(i64, i64)]) -> Option<(Vec<(usize, usize)>, i64)> {
 /// halves. Two points on either side of the line are joined by a monotone path through their
 /// projections (exactly their L1 distance); two on one side, by the recursion. O(M log M)
 /// vertices and edges.
-pub(super) fn l1_spanner(xy: &[(i64, i64)]) -> Option<(usize, Vec<(usize, usize, isize)>)> {
+pub(super) fn l1_spanner(xy: &[(i64, i64)]) -> Option<(usize, Edges)> {
     let mut order: Vec<usize> = (0..xy.len()).collect();
     order.sort_unstable_by_key(|&i| (xy[i], i));
     let mut edges: Vec<(usize, usize, isize)> = Vec::new();
