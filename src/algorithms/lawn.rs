@@ -7,11 +7,16 @@
 //! (L1 for the square under rectilinear motion, Euclidean otherwise):
 //!
 //! - `lawn-mst`: double a minimum spanning tree and shortcut (preorder), αTSP = 2;
-//! - `lawn-christofides`: MST plus a minimum-weight perfect matching of its odd-degree nodes
-//!   (rustworkx-core's blossom `max_weight_matching` on the complete graph), Euler circuit,
-//!   shortcut, αTSP = 3/2;
-//! - `lawn-2opt`: 2-opt and Or-opt on k-nearest-neighbour candidates, started from the better
-//!   of the two tours above (from the MST tour alone above [`CHRISTOFIDES_LIMIT`] points);
+//! - `lawn-christofides`: MST plus a minimum-weight perfect matching of its odd-degree nodes,
+//!   Euler circuit, shortcut, αTSP = 3/2. The matching: blossom on the complete graph up to
+//!   400 odd nodes; beyond, for the square cutter, fusion-blossom on the Hanan grid of the odd
+//!   nodes, whose graph metric is exactly L1, so still a minimum over ALL pairs, certified by
+//!   its dual; for Euclidean motion a fusion-blossom matching on a nearest-neighbour graph,
+//!   not proven minimum (`matching_optimal = 0`, with a proven lower bound). Details and
+//!   proofs in [`matching`];
+//! - `lawn-2opt`: 2-opt and Or-opt (segments of 1 to 3) on 10-nearest-neighbour lists with
+//!   don't-look bits, then a seeded iterated local search of local double-bridge kicks
+//!   ([`local`]), started from the better of the two tours above;
 //! - `lawn-box`: the concentric rectangles of Fig. 9 over the bounding box, joined by edge
 //!   swaps, and the shorter of that and the Christofides tour, which removes the additive term
 //!   of Theorem 2 (the paper's θ; see [`lawn_box`]).
@@ -35,9 +40,8 @@ use crate::tour::{CycleCover, Walk};
 use petgraph::unionfind::UnionFind;
 use std::collections::HashMap;
 
-/// Above this many points `lawn-2opt` starts from the MST tour only (the blossom matching is
-/// cubic in the number of odd-degree nodes).
-pub(crate) const CHRISTOFIDES_LIMIT: usize = 20_000;
+mod local;
+mod matching;
 
 /// The grass must be non-empty.
 pub(crate) fn precondition(region: &Region) -> Result<()> {
@@ -92,87 +96,6 @@ impl Points {
         (0..tour.len())
             .map(|k| self.dist(tour[k], tour[(k + 1) % tour.len()]))
             .sum()
-    }
-}
-
-/// A spatial hash of points in real coordinates, for nearest-neighbour searches.
-struct Buckets {
-    size: f64,
-    map: HashMap<(i64, i64), Vec<u32>>,
-    lo: (i64, i64),
-    hi: (i64, i64),
-}
-
-impl Buckets {
-    fn new(p: &Points, ids: impl Iterator<Item = usize>, size: f64) -> Buckets {
-        let mut map: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
-        let (mut lo, mut hi) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
-        for i in ids {
-            let c = Self::cell(p, i, size);
-            lo = (lo.0.min(c.0), lo.1.min(c.1));
-            hi = (hi.0.max(c.0), hi.1.max(c.1));
-            map.entry(c).or_default().push(i as u32);
-        }
-        Buckets { size, map, lo, hi }
-    }
-
-    fn cell(p: &Points, i: usize, size: f64) -> (i64, i64) {
-        let (x, y) = centre(p.cutter, p.pts[i]);
-        ((x / size).floor() as i64, (y / size).floor() as i64)
-    }
-
-    /// The nearest point j with `accept(j)`, by (key, j): a search over rings of buckets,
-    /// stopping when a ring is farther than the best point found.
-    fn nearest(
-        &self,
-        p: &Points,
-        i: usize,
-        accept: impl Fn(usize) -> bool,
-    ) -> Option<(u64, usize)> {
-        if self.map.is_empty() {
-            return None;
-        }
-        let (cx, cy) = Self::cell(p, i, self.size);
-        let reach = [
-            self.hi.0 - cx,
-            cx - self.lo.0,
-            self.hi.1 - cy,
-            cy - self.lo.1,
-        ]
-        .into_iter()
-        .map(i64::abs)
-        .max()
-        .unwrap_or(0);
-        let mut best: Option<(u64, usize)> = None;
-        for ring in 0..=reach {
-            // Points in ring r are at least (r - 1) * size away (in L2, hence in L1).
-            if best.is_some_and(|(_, j)| (ring - 1) as f64 * self.size > p.dist(i, j)) {
-                break;
-            }
-            for bx in cx - ring..=cx + ring {
-                let step = if (bx - cx).abs() == ring {
-                    1
-                } else {
-                    (2 * ring).max(1)
-                };
-                let mut by = cy - ring;
-                while by <= cy + ring {
-                    if let Some(list) = self.map.get(&(bx, by)) {
-                        for &j in list {
-                            let j = j as usize;
-                            if j != i && accept(j) {
-                                let cand = (p.key(i, j), j);
-                                if best.is_none_or(|b| cand < b) {
-                                    best = Some(cand);
-                                }
-                            }
-                        }
-                    }
-                    by += step;
-                }
-            }
-        }
-        best
     }
 }
 
@@ -421,9 +344,10 @@ fn preorder(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
     order
 }
 
-/// Christofides: MST + minimum-weight perfect matching on the odd-degree nodes, Euler
-/// circuit, shortcut. Returns the tour and the matching's weight in the metric.
-fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, f64) {
+/// Christofides: MST + minimum-weight perfect matching on the odd-degree nodes (see
+/// [`matching`] for which matching at which size, and what is proven), Euler circuit,
+/// shortcut. Returns the tour and the matching.
+fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, matching::OddMatching) {
     let n = p.len();
     let mut deg = vec![0u32; n];
     for &(a, b) in mst {
@@ -431,48 +355,10 @@ fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, f64) {
         deg[b] += 1;
     }
     let odd: Vec<usize> = (0..n).filter(|&i| deg[i] % 2 == 1).collect();
-    let mut graph =
-        petgraph::graph::UnGraph::<(), i128>::with_capacity(odd.len(), odd.len() * odd.len() / 2);
-    for _ in &odd {
-        graph.add_node(());
-    }
-    // Exact integer weights: L1 lengths, or Euclidean lengths in micro-units.
-    let weight = |a: usize, b: usize| -> i128 {
-        match p.cutter {
-            Cutter::Square => i128::from(p.key(a, b) as i64),
-            _ => (p.dist(a, b) * 1e6).round() as i128,
-        }
-    };
-    let big: i128 = 1 << 60;
-    for x in 0..odd.len() {
-        for y in x + 1..odd.len() {
-            graph.add_edge(
-                petgraph::graph::NodeIndex::new(x),
-                petgraph::graph::NodeIndex::new(y),
-                big - weight(odd[x], odd[y]),
-            );
-        }
-    }
-    let mut matching: Vec<(usize, usize)> =
-        rustworkx_core::max_weight_matching::max_weight_matching(
-            &graph,
-            true,
-            |e: petgraph::graph::EdgeReference<i128>| {
-                Ok::<i128, std::convert::Infallible>(*e.weight())
-            },
-            false,
-        )
-        .map(|set| set.into_iter().map(|(x, y)| (x.min(y), x.max(y))).collect())
-        .unwrap_or_default();
-    // Sorted, so that the tour does not depend on the hash set's iteration order.
-    matching.sort_unstable();
+    let m = matching::odd_matching(p, &odd);
     let mut edges: Vec<(usize, usize)> = mst.to_vec();
-    let mut matched = 0.0;
-    for &(x, y) in &matching {
-        edges.push((odd[x], odd[y]));
-        matched += p.dist(odd[x], odd[y]);
-    }
-    (euler_shortcut(n, &edges), matched)
+    edges.extend_from_slice(&m.pairs);
+    (euler_shortcut(n, &edges), m)
 }
 
 /// Hierholzer's Euler circuit of a connected multigraph with even degrees (given by its
@@ -505,121 +391,6 @@ fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
         .into_iter()
         .filter(|&v| !std::mem::replace(&mut seen[v], true))
         .collect()
-}
-
-/// 2-opt and Or-opt (segments of 1 to 3 points) on the 8 nearest neighbours of each point,
-/// until no improving move remains or 50 passes.
-fn two_opt(p: &Points, mut tour: Vec<usize>) -> Vec<usize> {
-    let n = tour.len();
-    if n < 5 {
-        return tour;
-    }
-    let buckets = Buckets::new(p, 0..n, 4.0);
-    let neighbours: Vec<Vec<usize>> = (0..n)
-        .map(|i| {
-            let mut out: Vec<usize> = Vec::new();
-            for _ in 0..8 {
-                match buckets.nearest(p, i, |j| !out.contains(&j)) {
-                    Some((_, j)) => out.push(j),
-                    None => break,
-                }
-            }
-            out
-        })
-        .collect();
-    let mut pos = vec![0usize; n];
-    const EPS: f64 = 1e-9;
-    for _pass in 0..50 {
-        let mut improved = false;
-        for (k, &t) in tour.iter().enumerate() {
-            pos[t] = k;
-        }
-        // 2-opt: replace (a, a+) and (c, c+) by (a, c) and (a+, c+).
-        for i in 0..n {
-            let a = tour[i];
-            let an = tour[(i + 1) % n];
-            for &c in &neighbours[a] {
-                let (pa, pc) = (pos[a], pos[c]);
-                let cn = tour[(pc + 1) % n];
-                if c == an || cn == a {
-                    continue;
-                }
-                let gain = p.dist(a, an) + p.dist(c, cn) - p.dist(a, c) - p.dist(an, cn);
-                if gain > EPS {
-                    // Reverse the segment a+ .. c (cyclically).
-                    let (mut lo, mut hi) = ((pa + 1) % n, pc);
-                    let len = (hi + n - lo) % n + 1;
-                    for _ in 0..len / 2 {
-                        tour.swap(lo, hi);
-                        pos[tour[lo]] = lo;
-                        pos[tour[hi]] = hi;
-                        lo = (lo + 1) % n;
-                        hi = (hi + n - 1) % n;
-                    }
-                    improved = true;
-                    break;
-                }
-            }
-        }
-        // Or-opt: move a segment of 1..=3 points next to a neighbour of its first point.
-        for seg in 1..=3usize {
-            let mut i = 0;
-            let mut stale = true;
-            while i < n {
-                if stale {
-                    for (k, &t) in tour.iter().enumerate() {
-                        pos[t] = k;
-                    }
-                    stale = false;
-                }
-                let s0 = tour[i];
-                let s1 = tour[(i + seg - 1) % n];
-                let prev = tour[(i + n - 1) % n];
-                let next = tour[(i + seg) % n];
-                let removal = p.dist(prev, s0) + p.dist(s1, next) - p.dist(prev, next);
-                let mut best: Option<(f64, usize, bool)> = None;
-                for &c in &neighbours[s0] {
-                    let pc = pos[c];
-                    let in_seg = (pc + n - i) % n < seg;
-                    let cn = tour[(pc + 1) % n];
-                    if in_seg || c == prev || (pos[cn] + n - i) % n < seg {
-                        continue;
-                    }
-                    for reversed in [false, true] {
-                        let (x, y) = if reversed { (s1, s0) } else { (s0, s1) };
-                        let insert = p.dist(c, x) + p.dist(y, cn) - p.dist(c, cn);
-                        let gain = removal - insert;
-                        if gain > EPS && best.is_none_or(|b| gain > b.0) {
-                            best = Some((gain, c, reversed));
-                        }
-                    }
-                }
-                if let Some((_, c, reversed)) = best {
-                    let mut segment: Vec<usize> = (0..seg).map(|k| tour[(i + k) % n]).collect();
-                    if reversed {
-                        segment.reverse();
-                    }
-                    let rest: Vec<usize> = (0..n - seg).map(|k| tour[(i + seg + k) % n]).collect();
-                    let at = rest
-                        .iter()
-                        .position(|&v| v == c)
-                        .expect("c is outside the segment");
-                    let mut t = Vec::with_capacity(n);
-                    t.extend_from_slice(&rest[..=at]);
-                    t.extend_from_slice(&segment);
-                    t.extend_from_slice(&rest[at + 1..]);
-                    tour = t;
-                    improved = true;
-                    stale = true;
-                }
-                i += 1;
-            }
-        }
-        if !improved {
-            break;
-        }
-    }
-    tour
 }
 
 /// Fig. 9: concentric rectangles of pixel centres over the bounding box, each joined to the
@@ -782,15 +553,20 @@ pub(crate) fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
 }
 
 /// `lawn-christofides`: length ≤ 3/2 · TSP(S) ≤ 3/2 (3ℓ* + 6) for the square with rectilinear
-/// motion (Theorem 2), × β (free motion), × γ (disk).
+/// motion (Theorem 2), × β (free motion), × γ (disk). Certificates `matching_weight`,
+/// `matching_optimal` (1 when the matching is proven minimum over all pairs: always for the
+/// square cutter, see [`matching`]), `matching_lower_bound` (proven) and `odd_nodes`, in the
+/// reported units (L1, or milli-units rounded down).
 ///
 /// # Complexity
-/// O(N log N + M³) with M ≤ N the odd-degree nodes of the MST (blossom matching).
+/// O(N log N) for the MST; the matching of the M odd-degree nodes: O(M³) blossom up to
+/// [`matching::COMPLETE_LIMIT`], beyond it fusion-blossom on a graph of O(bounding box) or
+/// O(M log M) vertices (measured in docs/measured.md).
 pub(crate) fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
-    let (tour, matched) = christofides(&p, &mst);
+    let (tour, m) = christofides(&p, &mst);
     let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
     let scale = if p.cutter == Cutter::Square {
         1.0
@@ -798,24 +574,31 @@ pub(crate) fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solut
         1000.0
     };
     s.certificates
-        .insert("matching_weight".into(), (matched * scale).floor() as i64);
+        .insert("matching_weight".into(), (m.weight * scale).floor() as i64);
+    s.certificates
+        .insert("matching_optimal".into(), i64::from(m.optimal));
+    s.certificates.insert(
+        "matching_lower_bound".into(),
+        (m.lower_bound * scale).floor() as i64,
+    );
+    s.certificates
+        .insert("odd_nodes".into(), (2 * m.pairs.len()) as i64);
     Ok(s)
 }
 
-/// `lawn-2opt`: 2-opt and Or-opt from the better of the MST and Christofides tours (MST only
-/// above [`CHRISTOFIDES_LIMIT`] points); never longer than its start.
+/// `lawn-2opt`: 2-opt and Or-opt with neighbour lists and don't-look bits, then a short
+/// iterated local search ([`local`]), from the better of the MST and Christofides tours;
+/// never longer than its start.
 pub(crate) fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
     let mut start = preorder(p.len(), &mst);
-    if p.len() <= CHRISTOFIDES_LIMIT {
-        let (c, _) = christofides(&p, &mst);
-        if p.tour_length(&c) < p.tour_length(&start) {
-            start = c;
-        }
+    let (c, _) = christofides(&p, &mst);
+    if p.tour_length(&c) < p.tour_length(&start) {
+        start = c;
     }
-    let tour = two_opt(&p, start);
+    let tour = local::improve(&p, start);
     Ok(solution(region, &p, &tour, Some(mst_weight(&p, &mst))))
 }
 
@@ -1145,6 +928,78 @@ mod tests {
                 let w = mst_weight(&p, &mst);
                 assert!((w - brute_mst_weight(&p)).abs() < 1e-6, "{cutter:?}: {w}");
             }
+        }
+    }
+
+    fn random_points(rng: &mut rand_chacha::ChaCha8Rng, k: i32, spread: i32) -> Region {
+        let pixels: Vec<Pixel> = (0..k)
+            .map(|_| Pixel::new(rng.random_range(0..spread), rng.random_range(0..spread)))
+            .collect();
+        Region::from_pixels(pixels).unwrap()
+    }
+
+    #[test]
+    fn neighbour_lists_equal_brute_force() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        for trial in 0..40i32 {
+            let region = random_points(&mut rng, 2 + 3 * trial, 4 + 2 * trial);
+            for cutter in [Cutter::Square, Cutter::SquareFree, Cutter::Disk] {
+                let p = Points::new(&region, cutter);
+                let got = local::nearest_neighbours(&p, local::NEIGHBOURS);
+                for (i, list) in got.iter().enumerate() {
+                    let mut all: Vec<(u64, usize)> = (0..p.len())
+                        .filter(|&j| j != i)
+                        .map(|j| (p.key(i, j), j))
+                        .collect();
+                    all.sort_unstable();
+                    let want: Vec<usize> = all
+                        .iter()
+                        .take(local::NEIGHBOURS)
+                        .map(|&(_, j)| j)
+                        .collect();
+                    assert_eq!(list, &want, "{cutter:?} trial {trial} point {i}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn local_search_never_lengthens_its_start() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(12);
+        for trial in 0..30i32 {
+            let region = random_points(&mut rng, 3 + 4 * trial, 5 + 2 * trial);
+            for cutter in [Cutter::Square, Cutter::SquareFree, Cutter::Disk] {
+                let p = Points::new(&region, cutter);
+                // A random start, and the MST tour.
+                let mut random: Vec<usize> = (0..p.len()).collect();
+                for k in (1..random.len()).rev() {
+                    random.swap(k, rng.random_range(0..=k));
+                }
+                let mst = minimum_spanning_tree(&p);
+                for start in [random, preorder(p.len(), &mst)] {
+                    let before = p.tour_length(&start);
+                    let tour = local::improve(&p, start);
+                    let mut sorted = tour.clone();
+                    sorted.sort_unstable();
+                    assert_eq!(sorted, (0..p.len()).collect::<Vec<_>>(), "a permutation");
+                    assert!(p.tour_length(&tour) <= before, "{cutter:?} trial {trial}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn l1_matching_at_scale_equals_the_complete_blossom() {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(13);
+        for trial in 0..12i32 {
+            let region = random_points(&mut rng, 40 + 20 * trial, 12 + 4 * trial);
+            let p = Points::new(&region, Cutter::Square);
+            let mut odd: Vec<usize> = (0..p.len()).collect();
+            odd.truncate(p.len() & !1);
+            let exact = matching::complete_for_tests(&p, &odd).weight;
+            let (hanan, spanner) = matching::l1_routes_for_tests(&p, &odd);
+            assert_eq!(hanan, exact, "trial {trial}: Hanan grid");
+            assert_eq!(spanner, exact, "trial {trial}: spanner");
         }
     }
 

@@ -135,6 +135,50 @@ pub enum Candidates {
     RunGraph,
 }
 
+/// A minimum-weight perfect matching of `defects` (distinct vertices of the graph on
+/// `0..vertices` with positive even integer edge `weights`) in the graph's shortest-path
+/// metric, over ALL pairs, by fusion-blossom: the matched pairs (indices into `defects`) and
+/// the solver's dual sum, a lower bound on every perfect matching's weight in that metric.
+/// One thread; above `serial_limit` defects on fusion-blossom's partitioned solver over a
+/// bisection by the vertices' positions `at` (each vertex's extent is widened to the
+/// positions of its neighbours, so the extents of two adjacent vertices meet).
+/// `None` when the solver fails (a panic of the library counts as a failure).
+pub(crate) fn graph_metric_matching(
+    vertices: usize,
+    edges: Vec<(usize, usize, isize)>,
+    defects: &[usize],
+    serial_limit: usize,
+    at: impl Fn(usize) -> (i32, i32),
+) -> Option<(Vec<(usize, usize)>, i64)> {
+    let kept: Vec<usize> = (0..defects.len()).collect();
+    let (mate, dual) = mates_of(defects.len(), || {
+        solve_graph_matching(serial_limit, vertices, edges, &kept, defects, |edges| {
+            let point: Vec<Extent> = (0..vertices)
+                .map(|v| {
+                    let (x, y) = at(v);
+                    (x, x, y, y)
+                })
+                .collect();
+            let mut extent = point.clone();
+            for &(a, b, _) in edges {
+                widen(&mut extent[a], point[b]);
+                widen(&mut extent[b], point[a]);
+            }
+            extent
+        })
+    })?;
+    let mut pairs = Vec::with_capacity(defects.len() / 2);
+    for (i, &j) in mate.iter().enumerate() {
+        if j == usize::MAX {
+            return None;
+        }
+        if i < j {
+            pairs.push((i, j));
+        }
+    }
+    Some((pairs, dual))
+}
+
 /// A minimum-weight perfect matching of `ports` under the turn distance.
 ///
 /// `partner[i]` is an endpoint that `i` can always be matched to (the other end of its strip
