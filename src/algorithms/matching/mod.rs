@@ -150,22 +150,28 @@ pub(crate) fn graph_metric_matching(
     serial_limit: usize,
     at: impl Fn(usize) -> (i32, i32),
 ) -> Option<(Vec<(usize, usize)>, i64)> {
-    let kept: Vec<usize> = (0..defects.len()).collect();
+    let index: HashMap<usize, usize> = defects.iter().enumerate().map(|(i, &v)| (v, i)).collect();
     let (mate, dual) = mates_of(defects.len(), || {
-        solve_graph_matching(serial_limit, vertices, edges, &kept, defects, |edges| {
-            let point: Vec<Extent> = (0..vertices)
-                .map(|v| {
-                    let (x, y) = at(v);
-                    (x, x, y, y)
-                })
-                .collect();
-            let mut extent = point.clone();
-            for &(a, b, _) in edges {
-                widen(&mut extent[a], point[b]);
-                widen(&mut extent[b], point[a]);
-            }
-            extent
-        })
+        let (pairs, dual) =
+            solve_graph_matching(serial_limit, vertices, edges, defects, |edges| {
+                let point: Vec<Extent> = (0..vertices)
+                    .map(|v| {
+                        let (x, y) = at(v);
+                        (x, x, y, y)
+                    })
+                    .collect();
+                let mut extent = point.clone();
+                for &(a, b, _) in edges {
+                    widen(&mut extent[a], point[b]);
+                    widen(&mut extent[b], point[a]);
+                }
+                extent
+            })?;
+        let pairs = pairs
+            .into_iter()
+            .map(|(a, b)| Some((*index.get(&a)?, *index.get(&b)?)))
+            .collect::<Option<Vec<_>>>()?;
+        Some((pairs, dual))
     })?;
     let mut pairs = Vec::with_capacity(defects.len() / 2);
     for (i, &j) in mate.iter().enumerate() {
