@@ -120,7 +120,7 @@ impl Tour<'_> {
     fn reverse_positions(&mut self, i: usize, j: usize) {
         let n = self.n();
         let len = (j + n - i) % n + 1;
-        let (mut lo, mut hi, len) = if 2 * len > n {
+        let (lo, hi, len) = if 2 * len > n {
             ((j + 1) % n, (i + n - 1) % n, n - len)
         } else {
             (i, j, len)
@@ -131,6 +131,12 @@ impl Tour<'_> {
         if let Some(journal) = self.journal.as_mut() {
             journal.push((lo, hi));
         }
+        self.swap_ends(lo, hi, len);
+    }
+
+    /// Reverses the `len` positions from `lo` to `hi` (cyclically), keeping `pos` in step.
+    fn swap_ends(&mut self, mut lo: usize, mut hi: usize, len: usize) {
+        let n = self.n();
         for _ in 0..len / 2 {
             self.order.swap(lo, hi);
             self.pos[self.order[lo]] = lo;
@@ -153,15 +159,7 @@ impl Tour<'_> {
     fn undo(&mut self, journal: &[(usize, usize)]) {
         let n = self.n();
         for &(i, j) in journal.iter().rev() {
-            let len = (j + n - i) % n + 1;
-            let (mut lo, mut hi) = (i, j);
-            for _ in 0..len / 2 {
-                self.order.swap(lo, hi);
-                self.pos[self.order[lo]] = lo;
-                self.pos[self.order[hi]] = hi;
-                lo = (lo + 1) % n;
-                hi = (hi + n - 1) % n;
-            }
+            self.swap_ends(i, j, (j + n - i) % n + 1);
         }
     }
 

@@ -61,6 +61,18 @@ pub(super) fn mates_of(
     Some((mate, dual))
 }
 
+/// The pairs of vertices `pairs` as pairs of the indices `index` gives them (`None` if a
+/// vertex has none).
+pub(super) fn renamed(
+    pairs: Vec<(usize, usize)>,
+    index: &HashMap<usize, usize>,
+) -> Option<Vec<(usize, usize)>> {
+    pairs
+        .into_iter()
+        .map(|(a, b)| Some((*index.get(&a)?, *index.get(&b)?)))
+        .collect()
+}
+
 /// Solves a minimum-weight perfect matching of the vertices `defects` in the shortest-path
 /// metric of a graph with fusion-blossom: the matched vertex pairs and the sum of the dual
 /// variables. One thread; above `serial_limit` defects on a recursive bisection of the graph

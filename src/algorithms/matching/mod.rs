@@ -167,11 +167,7 @@ pub(crate) fn graph_metric_matching(
                 }
                 extent
             })?;
-        let pairs = pairs
-            .into_iter()
-            .map(|(a, b)| Some((*index.get(&a)?, *index.get(&b)?)))
-            .collect::<Option<Vec<_>>>()?;
-        Some((pairs, dual))
+        Some((renamed(pairs, &index)?, dual))
     })?;
     let mut pairs = Vec::with_capacity(defects.len() / 2);
     for (i, &j) in mate.iter().enumerate() {

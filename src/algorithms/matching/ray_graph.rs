@@ -229,11 +229,7 @@ pub(super) fn link_graph_matching(
                 }
                 extent
             })?;
-        let pairs = pairs
-            .into_iter()
-            .map(|(a, b)| Some((*port_of.get(&a)?, *port_of.get(&b)?)))
-            .collect::<Option<Vec<_>>>()?;
-        Some((pairs, dual))
+        Some((renamed(pairs, &port_of)?, dual))
     })?;
     if mate.contains(&usize::MAX) {
         return None;
