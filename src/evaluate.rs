@@ -47,12 +47,21 @@ impl Subject<'_> {
         }
     }
 
+    /// Whether the subject reports `objective` (a registered algorithm also reports the
+    /// weighted objectives it has a [carrier](Objective::carriers) for).
+    pub fn reports(&self, objective: Objective) -> bool {
+        match self {
+            Subject::Registered(a) => a.reports(objective),
+            Subject::Outside(o) => o.objectives.contains(&objective),
+        }
+    }
+
     /// The objective to report: `wanted` if the subject produces it, else by default its tour
     /// (its first objective when it has no tour).
     pub fn pick_objective(&self, wanted: Option<Objective>) -> Result<Objective> {
         let have = self.objectives();
         match wanted {
-            Some(o) if have.contains(&o) => Ok(o),
+            Some(o) if self.reports(o) => Ok(o),
             Some(o) => Err(Error::invalid(format!(
                 "{} reports {}, not {o}",
                 self.name(),
@@ -134,14 +143,14 @@ impl Reference {
         self.get(objective).and_then(|k| k.opt)
     }
 
-    /// Exact lower bounds that bound `objective`: its own, and for `turns` also the cycle
+    /// Exact lower bounds that bound `objective`: its own, and for tours also the cycle
     /// cover's (every tour is a cycle cover).
     fn exact_bounds(&self, objective: Objective) -> Vec<(u64, String)> {
-        let sources: &[Objective] = match objective {
-            Objective::Turns => &[Objective::Turns, Objective::CcTurns],
-            Objective::Length => &[Objective::Length],
-            Objective::CcTurns => &[Objective::CcTurns],
-            Objective::LawnLength => &[],
+        let sources: Vec<Objective> = match objective {
+            Objective::Turns => vec![Objective::Turns, Objective::CcTurns],
+            Objective::Weighted(c) => vec![Objective::Weighted(c), Objective::WeightedCc(c)],
+            Objective::LawnLength => vec![],
+            o => vec![o],
         };
         sources
             .iter()
@@ -163,6 +172,13 @@ pub fn cheap_bound(region: &Region, objective: Objective, cutter: Cutter) -> (u6
         }
         Objective::Turns | Objective::CcTurns => {
             let b = bounds::turn_lower_bound(region);
+            (b.value, b.source.to_string())
+        }
+        Objective::Weighted(_) | Objective::WeightedCc(_) => {
+            let b = crate::exact::cheap_lower_bound(
+                region,
+                exact_objective(objective).expect("milling objective"),
+            );
             (b.value, b.source.to_string())
         }
         Objective::LawnLength => {
@@ -281,7 +297,18 @@ pub fn evaluate(
     };
     eval.certificates = solution.certificates;
     for objective in wanted {
-        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
+        // A weighted objective is measured on the output it is carried by.
+        let output = solution
+            .outputs
+            .iter()
+            .find(|o| o.objective == objective)
+            .or_else(|| {
+                objective
+                    .carriers()
+                    .iter()
+                    .find_map(|&c| solution.outputs.iter().find(|o| o.objective == c))
+            });
+        let Some(output) = output else {
             let why = format!("{} returned no {objective} output", subject.name());
             eval.missing.push((objective, why));
             continue;
@@ -324,6 +351,9 @@ pub fn judge(
     let value = match objective {
         Objective::Length | Objective::LawnLength => report.length,
         Objective::Turns | Objective::CcTurns => report.turns,
+        Objective::Weighted(c) | Objective::WeightedCc(c) => {
+            report.length + u64::from(c) * report.turns
+        }
     };
     let opt = exact_counterpart(objective).and_then(|o| reference.opt(o));
     let opt_status = exact_counterpart(objective)
@@ -383,6 +413,20 @@ pub fn exact_counterpart(objective: Objective) -> Option<Objective> {
         Objective::LawnLength => None,
         o => Some(o),
     }
+}
+
+/// The exact solver's objective of a milling objective (`None` for lawn tours, see
+/// [`exact_counterpart`]).
+pub fn exact_objective(objective: Objective) -> Option<crate::exact::Objective> {
+    use crate::exact::Objective as E;
+    Some(match exact_counterpart(objective)? {
+        Objective::Length => E::Length,
+        Objective::CcTurns => E::CcTurns,
+        Objective::Turns => E::TourTurns,
+        Objective::Weighted(c) => E::Weighted { turn_cost: c },
+        Objective::WeightedCc(c) => E::WeightedCc { turn_cost: c },
+        Objective::LawnLength => return None,
+    })
 }
 
 /// The largest lower bound on the optimum of `objective`; ties keep the first (cheapest)

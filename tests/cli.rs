@@ -472,7 +472,7 @@ fn help_lists_the_possible_values() {
         assert!(solve.contains(name), "solve --help misses {name}");
     }
     for words in [
-        "[possible values: length, cc-turns, turns, lawn-length]",
+        "[possible values: length, cc-turns, turns, lawn-length, weighted, weighted-cc]",
         "[possible values: naive, smart]",
         "[possible values: square, square-free, disk]",
     ] {
@@ -483,7 +483,9 @@ fn help_lists_the_possible_values() {
     }
     let exact = String::from_utf8_lossy(&mowmill(&["exact", "--help"]).stdout).to_string();
     assert!(
-        exact.contains("[possible values: length, cc-turns, turns, weighted, lawn-tsp]"),
+        exact.contains(
+            "[possible values: length, cc-turns, turns, weighted, weighted-cc, lawn-tsp]"
+        ),
         "{exact}"
     );
     let gen_help = String::from_utf8_lossy(&mowmill(&["gen", "--help"]).stdout).to_string();
@@ -660,4 +662,105 @@ fn solve_text_shows_guarantees_and_verdicts() {
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("optimum"), "{text}");
     assert!(text.contains("guarantee turns <= 15/4 OPT"), "{text}");
+}
+
+/// `exact --objective weighted-cc --turn-cost 50`: a spur on the middle of a strip of five is
+/// best covered by the strip there and back (length 8, 4 turns) and the spur as a one-pixel
+/// walk (length 0, 4 turns): 8 + 50 * 8 = 408 (a detour into the spur costs 2 more).
+#[test]
+fn exact_weighted_cycle_cover_json() {
+    let dir = temp_dir("weighted-cc");
+    let file = dir.join("spur.grid");
+    std::fs::write(&file, "..#..\n#####\n").unwrap();
+    let path = file.to_str().unwrap();
+    let args = [
+        "exact",
+        path,
+        "--objective",
+        "weighted-cc",
+        "--turn-cost",
+        "50",
+        "--json",
+    ];
+    let o = mowmill(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = json(&o);
+    assert_eq!(v["objective"], "weighted-cc");
+    assert_eq!(v["turn_cost"], 50);
+    assert_eq!(v["status"], "optimal");
+    assert_eq!(
+        (v["value"].as_u64(), v["lower_bound"].as_u64()),
+        (Some(408), Some(408))
+    );
+    assert_eq!(
+        (
+            v["length"].as_u64(),
+            v["turns"].as_u64(),
+            v["cycles"].as_u64()
+        ),
+        (Some(8), Some(8), Some(2))
+    );
+    assert_eq!(v["valid"], true);
+    // Without a turn cost: bad input.
+    let o = mowmill(&["exact", path, "--objective", "weighted-cc"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--turn-cost"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `solve --algo strips-double --objective weighted --turn-cost 50 --exact`: the value is the
+/// recount length + 50 * turns, the exact optimum of the 2 x 3 rectangle is its boundary
+/// cycle (length 6, four 90° turns: 206), and no guarantee is claimed.
+#[test]
+fn solve_weighted_with_exact() {
+    let dir = temp_dir("solve-weighted");
+    let file = dir.join("r23.grid");
+    std::fs::write(&file, "###\n###\n").unwrap();
+    let path = file.to_str().unwrap();
+    let o = mowmill(&[
+        "solve",
+        path,
+        "--algo",
+        "strips-double",
+        "--objective",
+        "weighted",
+        "--turn-cost",
+        "50",
+        "--exact",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = json(&o);
+    assert_eq!(v["objective"], "weighted");
+    assert_eq!(v["turn_cost"], 50);
+    let (value, length, turns) = (
+        v["value"].as_u64().unwrap(),
+        v["length"].as_u64().unwrap(),
+        v["turns"].as_u64().unwrap(),
+    );
+    assert_eq!(value, length + 50 * turns);
+    assert_eq!(v["cycles"], 1);
+    assert_eq!(v["exact"]["objective"], "weighted");
+    assert_eq!(v["exact"]["status"], "optimal");
+    assert_eq!(v["exact"]["value"], 206);
+    assert_eq!(v["opt"], 206);
+    assert!(value >= 206);
+    assert_eq!(v["guarantee"], serde_json::json!([]));
+    // weighted-cc measures the cycle cover, with the exact weighted-cc optimum.
+    let o = mowmill(&[
+        "solve",
+        path,
+        "--algo",
+        "strips-double",
+        "--objective",
+        "weighted-cc",
+        "--turn-cost",
+        "50",
+        "--exact",
+        "--json",
+    ]);
+    let v = json(&o);
+    assert_eq!(v["exact"]["objective"], "weighted-cc");
+    assert_eq!(v["exact"]["value"], 206);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

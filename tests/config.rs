@@ -243,7 +243,7 @@ fn other_values_that_would_break_a_run_are_refused() {
             "7:13",
             &[
                 "exact[0].objective",
-                "length, cc-turns, turns, weighted, lawn-tsp",
+                "length, cc-turns, turns, weighted, weighted-cc, lawn-tsp",
             ],
         ),
         // Beyond ~1.8e19 s the timer of an outside algorithm overflowed (a panic mid-run).

@@ -114,6 +114,51 @@ fn small_special_cases() {
     assert_eq!(value(&plus, Objective::Length), 8);
 }
 
+/// `weighted-cc` by hand. A walk there and back along a strip of k pixels has length
+/// 2(k − 1) and two U-turns (4 turns); a closed walk around a 2 × 2 block has length 4 and
+/// four 90° turns; a one-pixel walk has length 0 and 4 turns (the checker's convention).
+#[test]
+fn weighted_cycle_covers_by_hand() {
+    let cases = [
+        // 1 x 2: there and back, 2 + 4C (two one-pixel walks cost 8C).
+        ("##\n", 202, 6),
+        // 2 x 2: around the block, 4 + 4C.
+        ("##\n##\n", 204, 8),
+        // 1 x 3: there and back, 4 + 4C.
+        ("###\n", 204, 8),
+        // A plus: two crossing strips of 3, 2 (4 + 4C) (its tour needs 10 turns).
+        (".#.\n###\n.#.\n", 408, 16),
+        // A spur on the middle of a strip of 5: the strip there and back (8 + 4C) and the
+        // spur alone (4C) beat a detour into the spur (10 + 8C) and a strip of 2 there and
+        // back (2 + 4C) by 2: the one-pixel walk pays off.
+        ("..#..\n#####\n", 408, 16),
+    ];
+    for (ascii, at_50, at_1) in cases {
+        let r = Region::from_ascii(ascii);
+        assert_eq!(
+            value(&r, Objective::WeightedCc { turn_cost: 50 }),
+            at_50,
+            "{ascii}"
+        );
+        assert_eq!(
+            value(&r, Objective::WeightedCc { turn_cost: 1 }),
+            at_1,
+            "{ascii}"
+        );
+        // With C = 0 every pixel is a free one-pixel walk.
+        assert_eq!(value(&r, Objective::WeightedCc { turn_cost: 0 }), 0);
+    }
+    let spur = solved(
+        &Region::from_ascii("..#..\n#####\n"),
+        Objective::WeightedCc { turn_cost: 50 },
+    );
+    assert_eq!(
+        (spur.length, spur.turns, spur.cycles),
+        (Some(8), Some(8), Some(2))
+    );
+    assert_eq!(spur.turn_cost, Some(50));
+}
+
 #[test]
 fn disconnected_regions_have_cycle_covers_but_no_tours() {
     let r = Region::from_ascii("##.#\n##..\n");
@@ -128,6 +173,8 @@ fn disconnected_regions_have_cycle_covers_but_no_tours() {
     }
     // A 2x2 block (4 turns) and an isolated pixel (4 turns).
     assert_eq!(value(&r, Objective::CcTurns), 8);
+    // Weighted: the block (4 + 4C) and the isolated pixel (4C).
+    assert_eq!(value(&r, Objective::WeightedCc { turn_cost: 5 }), 44);
     // The lawn tour may leave the grass.
     assert_eq!(value(&r, Objective::LawnTsp), 8);
 }
@@ -175,7 +222,12 @@ fn objective_names_round_trip() {
         Objective::parse("weighted", Some(5)),
         Ok(Objective::Weighted { turn_cost: 5 })
     );
+    assert_eq!(
+        Objective::parse("weighted-cc", Some(50)),
+        Ok(Objective::WeightedCc { turn_cost: 50 })
+    );
     assert!(Objective::parse("weighted", None).is_err());
+    assert!(Objective::parse("weighted-cc", None).is_err());
     assert!(Objective::parse("length", Some(1)).is_err());
     assert!("bogus".parse::<Objective>().is_err());
 }
@@ -350,6 +402,8 @@ fn exact_objective(o: AlgoObjective) -> Objective {
         AlgoObjective::CcTurns => Objective::CcTurns,
         AlgoObjective::Turns => Objective::TourTurns,
         AlgoObjective::LawnLength => Objective::LawnTsp,
+        AlgoObjective::Weighted(c) => Objective::Weighted { turn_cost: c },
+        AlgoObjective::WeightedCc(c) => Objective::WeightedCc { turn_cost: c },
     }
 }
 
@@ -396,10 +450,32 @@ proptest! {
         }
     }
 
+    /// `weighted-cc` against independent facts: a tour is a cycle cover (≤ `weighted`); the
+    /// min-turn cycle cover is a cycle cover (≤ its length + C · its turns); every cover has at
+    /// least the optimal number of turns, and for C ≥ 1 its length is at least N minus its k
+    /// one-pixel walks, with 4k ≤ turns, so the value is at least N − ⌊cc/4⌋ + C · cc.
+    #[test]
+    fn weighted_cycle_cover_lies_between_independent_bounds(r in small_region(), c in 0u32..60) {
+        let wcc = value(&r, Objective::WeightedCc { turn_cost: c });
+        let tour = value(&r, Objective::Weighted { turn_cost: c });
+        let cc = solved(&r, Objective::CcTurns);
+        let (cc_opt, cc_len) = (cc.value.unwrap(), cc.length.unwrap());
+        let c64 = u64::from(c);
+        prop_assert!(wcc <= tour, "weighted-cc {wcc} > weighted {tour}");
+        prop_assert!(wcc <= cc_len + c64 * cc_opt, "weighted-cc {wcc} above the min-turn cover");
+        prop_assert!(wcc >= c64 * cc_opt, "weighted-cc {wcc} < C * cc-turns {cc_opt}");
+        if c >= 1 {
+            let n = r.len() as u64;
+            prop_assert!(wcc + cc_opt / 4 >= n + c64 * cc_opt, "weighted-cc {wcc}, N {n}, cc {cc_opt}");
+        }
+        let cheap = mowmill::exact::cheap_lower_bound(&r, Objective::WeightedCc { turn_cost: c }).value;
+        prop_assert!(cheap <= wcc);
+    }
+
     #[test]
     fn symmetries_keep_the_optimum(r in small_region(), s in 1u8..8) {
         let t = r.transformed(Symmetry(s));
-        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }] {
+        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }, Objective::WeightedCc { turn_cost: 3 }] {
             prop_assert_eq!(value(&r, o), value(&t, o), "{}", o);
         }
     }

@@ -583,3 +583,94 @@ fn params_rows_match_the_enum_and_names_round_trip() {
         assert_eq!(Param::from_name(spec.name), Some(spec.param));
     }
 }
+
+fn eroded(n: usize, style: Style, seed: u64) -> GridFile {
+    let p = GenParams {
+        n: Some(n),
+        style: Some(style),
+        ..params(Family::Eroded, seed)
+    };
+    generate(&p).unwrap_or_else(|e| panic!("eroded n {n} {style} seed {seed}: {e}"))
+}
+
+/// `eroded`: exactly N pixels, 4-connected, inside the ⌈3√N⌉ square, the same bytes for the
+/// same seed, in both styles from 100 to 2900 pixels.
+#[test]
+fn eroded_has_exactly_n_connected_pixels_in_its_square() {
+    for style in [Style::Dense, Style::Sparse] {
+        for (i, n) in [100usize, 101, 700, 2900].into_iter().enumerate() {
+            let seed = 40 + i as u64;
+            let f = eroded(n, style, seed);
+            let r = &f.region;
+            assert_eq!(r.len(), n);
+            assert_eq!(topology::components(r).count, 1, "{style} n {n}");
+            let side = (1..).find(|s| s * s >= 9 * n).unwrap() as i32;
+            let (w, h) = r
+                .pixels()
+                .iter()
+                .fold((0, 0), |(w, h), p| (w.max(p.x + 1), h.max(p.y + 1)));
+            assert!(w <= side && h <= side, "{style} n {n}: {w} x {h} > {side}");
+            assert_eq!(
+                f.meta("holes").unwrap(),
+                topology::holes(r).count.to_string()
+            );
+            assert_eq!(
+                f.meta("params"),
+                Some(format!("n={n} style={style}").as_str())
+            );
+            let again = eroded(n, style, seed);
+            assert_eq!(f.to_text().unwrap(), again.to_text().unwrap());
+        }
+    }
+    // Different seeds give different shapes.
+    assert_ne!(
+        eroded(300, Style::Sparse, 1).to_text().unwrap(),
+        eroded(300, Style::Sparse, 2).to_text().unwrap()
+    );
+}
+
+/// Sparse erosion leaves many more holes than dense (measured over seeds 0..10 at N = 1000:
+/// dense 1 to 4 holes (31 in all), sparse 24 to 37 (309); the assertion leaves a wide margin).
+#[test]
+fn eroded_sparse_has_more_holes_than_dense() {
+    let holes = |style| -> usize {
+        (0..10)
+            .map(|seed| topology::holes(&eroded(1000, style, seed).region).count)
+            .sum()
+    };
+    let (dense, sparse) = (holes(Style::Dense), holes(Style::Sparse));
+    assert!(
+        sparse >= 3 * dense + 50,
+        "dense {dense} holes, sparse {sparse} holes over 10 seeds"
+    );
+}
+
+/// `dense` and `sparse` are `eroded`'s styles only, and `eroded` takes no shape style.
+#[test]
+fn eroded_styles_are_refused_elsewhere() {
+    let p = GenParams {
+        n: Some(100),
+        style: Some(Style::Blob),
+        ..params(Family::Eroded, 1)
+    };
+    let e = generate(&p).unwrap_err().to_string();
+    assert!(e.contains("blob") && e.contains("dense, sparse"), "{e}");
+    let p = GenParams {
+        n: Some(100),
+        style: Some(Style::Sparse),
+        ..params(Family::RandomSimple, 1)
+    };
+    let e = generate(&p).unwrap_err().to_string();
+    assert!(e.contains("sparse") && e.contains("eroded only"), "{e}");
+    // No style: one of the two, drawn from the seed and written to the file.
+    let f = generate(&GenParams {
+        n: Some(100),
+        ..params(Family::Eroded, 5)
+    })
+    .unwrap();
+    let line = f.meta("params").unwrap().to_string();
+    assert!(
+        line == "n=100 style=dense" || line == "n=100 style=sparse",
+        "{line}"
+    );
+}

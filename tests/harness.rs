@@ -328,3 +328,61 @@ algorithms = ["strips-matching", "tsp65", "lawn-mst"]
     assert!(stats.contains("strips-matching[merge=naive]"));
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// A `[[exact]]` table of `weighted-cc` with a turn cost makes the milling algorithms report
+/// `weighted-cc-c50` (length + 50 · turns of their cycle cover) on every instance, divided by
+/// the exact optimum where it was solved (max_n) and by the cheap bound elsewhere.
+#[test]
+fn weighted_exact_tables_make_algorithms_report_the_weighted_value() {
+    let suite = r#"
+name = "weighted"
+seed = 3
+
+[[family]]
+family = "rect"
+width = 2
+height = [3, 5]
+algorithms = ["strips-double", "lawn-mst"]
+
+[[exact]]
+objective = "weighted-cc"
+turn_cost = 50
+max_n = 6
+time_limit = 30
+"#;
+    let dir = temp("weighted");
+    run(
+        &Config::parse(suite, "w.toml").unwrap(),
+        &opts(&dir, None, false),
+    )
+    .unwrap();
+    let rows = comparable(&dir);
+    let weighted: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.objective == "weighted-cc-c50")
+        .collect();
+    // One exact row (2 x 3 only) and one strips-double row per instance; no lawn row.
+    assert_eq!(weighted.len(), 3, "{weighted:?}");
+    for r in &weighted {
+        assert!(r.error.is_empty(), "{r:?}");
+        let (value, length, turns) = (r.value.unwrap(), r.length.unwrap(), r.turns.unwrap());
+        assert_eq!(value, length + 50 * turns, "{r:?}");
+    }
+    // The 2 x 3 rectangle: its boundary cycle, 6 + 50 * 4.
+    let exact = weighted.iter().find(|r| r.algorithm == "exact").unwrap();
+    assert_eq!((exact.value, exact.opt), (Some(206), Some(206)));
+    let algo = |instance: &str| {
+        weighted
+            .iter()
+            .find(|r| r.algorithm == "strips-double" && r.instance == instance)
+            .unwrap()
+    };
+    let small = algo("rect_width2_height3_i000");
+    assert_eq!(small.opt, Some(206));
+    assert!(small.value.unwrap() >= 206 && small.guarantee.is_empty());
+    let large = algo("rect_width2_height5_i000");
+    assert_eq!(large.opt, None);
+    // The cheap bound: C times the turn bound of cycle covers.
+    assert_eq!(large.lower_bound, Some(200));
+    let _ = std::fs::remove_dir_all(&dir);
+}

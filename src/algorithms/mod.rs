@@ -7,6 +7,19 @@
 //! An algorithm takes a region and returns closed walks ([`Output`]s): never its own cost. The
 //! caller runs every output through the [`checker`](crate::checker), which recounts length,
 //! turns and coverage; [`Guarantee::holds`] then compares the recount with the proven bound.
+//!
+//! # Weighted objectives
+//!
+//! `weighted` (a tour) and `weighted-cc` (a cycle cover) measure length + C · turns, C the
+//! turn cost (`solve --turn-cost C`; in a bench config, the `turn_cost` of an `[[exact]]`
+//! table of that objective), the objective of a published CPLEX study of tours and cycle
+//! covers with turn costs (2018; there C = 50: a 90° turn costs 50, a U-turn 100, a move 1).
+//! They are not outputs of their own: every milling algorithm reports them on the outputs it
+//! has ([`Objective::carriers`]: its tour for `weighted`, its cycle cover, else its tour, for
+//! `weighted-cc`; any covering tour or cycle cover is feasible for them), so that the
+//! algorithms can be compared with `exact --objective weighted(-cc)`. No paper proves a
+//! ratio for any of them under these objectives, and none is claimed: their rows carry no
+//! guarantee.
 
 use crate::checker::Mode;
 use crate::error::Result;
@@ -38,9 +51,9 @@ pub use matching::{self as endpoint_matching, turn_distance};
 pub use turns::{boundary_cc, coverage4, merge, strips_matching};
 pub(crate) use turns::{star_cover, strips_double, thin, thin_euler};
 
-/// What a result is measured by.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(rename_all = "kebab-case")]
+/// What a result is measured by. It serializes as its [`Display`](fmt::Display) text
+/// (`turns`, `weighted-c50`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Objective {
     /// Length of a milling tour (one closed walk inside the region).
     Length,
@@ -50,6 +63,10 @@ pub enum Objective {
     Turns,
     /// Length of a lawn-mowing tour (may leave the region), in the motion's metric.
     LawnLength,
+    /// Length + C · turns of a milling tour, C the turn cost.
+    Weighted(u32),
+    /// Length + C · turns of a milling cycle cover.
+    WeightedCc(u32),
 }
 
 impl Objective {
@@ -60,12 +77,59 @@ impl Objective {
         Objective::LawnLength,
     ];
 
+    /// Every objective name the CLI accepts (`weighted` and `weighted-cc` need a turn cost).
+    pub const NAMES: [&'static str; 6] = [
+        "length",
+        "cc-turns",
+        "turns",
+        "lawn-length",
+        "weighted",
+        "weighted-cc",
+    ];
+
+    /// The name without the turn cost.
     pub fn name(self) -> &'static str {
         match self {
             Objective::Length => "length",
             Objective::CcTurns => "cc-turns",
             Objective::Turns => "turns",
             Objective::LawnLength => "lawn-length",
+            Objective::Weighted(_) => "weighted",
+            Objective::WeightedCc(_) => "weighted-cc",
+        }
+    }
+
+    /// The objective named `name` (or an alias); `turn_cost` is required by, and only
+    /// accepted with, `weighted` and `weighted-cc`.
+    pub fn parse(name: &str, turn_cost: Option<u32>) -> std::result::Result<Objective, String> {
+        match (canonical_objective(name), turn_cost) {
+            ("weighted", Some(c)) => Ok(Objective::Weighted(c)),
+            ("weighted-cc", Some(c)) => Ok(Objective::WeightedCc(c)),
+            (w @ ("weighted" | "weighted-cc"), None) => {
+                Err(format!("objective {w} needs --turn-cost C"))
+            }
+            (_, Some(_)) => Err(format!(
+                "--turn-cost applies to objectives weighted and weighted-cc, not {name}"
+            )),
+            (_, None) => name.parse(),
+        }
+    }
+
+    /// The turn cost C of the weighted objectives.
+    pub fn turn_cost(self) -> Option<u32> {
+        match self {
+            Objective::Weighted(c) | Objective::WeightedCc(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// The outputs a weighted objective is measured on, in order of preference (a tour is a
+    /// cycle cover); empty for the others, which are outputs of their own.
+    pub fn carriers(self) -> &'static [Objective] {
+        match self {
+            Objective::Weighted(_) => &[Objective::Turns, Objective::Length],
+            Objective::WeightedCc(_) => &[Objective::CcTurns, Objective::Turns, Objective::Length],
+            _ => &[],
         }
     }
 
@@ -79,16 +143,32 @@ impl Objective {
 
     /// Whether outputs must be a single closed walk.
     pub fn is_tour(self) -> bool {
-        !matches!(self, Objective::CcTurns)
+        !matches!(self, Objective::CcTurns | Objective::WeightedCc(_))
+    }
+}
+
+impl Serialize for Objective {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_str(self)
     }
 }
 
 impl std::str::FromStr for Objective {
     type Err = String;
 
-    /// Parses an objective name or one of its [aliases](canonical_objective).
+    /// Parses an objective name or one of its [aliases](canonical_objective); the weighted
+    /// ones as the results write them, with their turn cost: `weighted-c50`, `weighted-cc-c50`.
     fn from_str(s: &str) -> std::result::Result<Objective, String> {
         let name = canonical_objective(s);
+        if let Some((w, c)) = name.rsplit_once("-c")
+            && let Ok(c) = c.parse::<u32>()
+            && matches!(w, "weighted" | "weighted-cc")
+        {
+            return Objective::parse(w, Some(c));
+        }
+        if matches!(name, "weighted" | "weighted-cc") {
+            return Objective::parse(name, None);
+        }
         Objective::ALL
             .into_iter()
             .find(|o| o.name() == name)
@@ -111,9 +191,14 @@ pub fn canonical_objective(name: &str) -> &str {
     }
 }
 
+/// The name, with the turn cost for the weighted objectives (`weighted-c50`, as the exact
+/// rows of a bench name theirs).
 impl fmt::Display for Objective {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
+        match self.turn_cost() {
+            Some(c) => write!(f, "{}-c{c}", self.name()),
+            None => f.write_str(self.name()),
+        }
     }
 }
 
@@ -428,6 +513,16 @@ pub struct Algorithm {
 }
 
 impl Algorithm {
+    /// Whether it reports `objective`: one of its [`objectives`](Self::objectives), or a
+    /// weighted one it has a [carrier](Objective::carriers) for.
+    pub fn reports(&self, objective: Objective) -> bool {
+        self.objectives.contains(&objective)
+            || objective
+                .carriers()
+                .iter()
+                .any(|c| self.objectives.contains(c))
+    }
+
     /// The paper it comes from: that of its guarantees' and claims' theorems.
     pub fn paper(&self) -> Paper {
         self.guarantees

@@ -6,7 +6,7 @@
 use anyhow::Result;
 use clap::Args;
 use mowmill::algorithms::theorems::{Implementation, Paper};
-use mowmill::algorithms::{Algorithm, Guarantee, Quantity, REGISTRY};
+use mowmill::algorithms::{Algorithm, Guarantee, Objective, Quantity, REGISTRY};
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
@@ -31,12 +31,30 @@ pub fn algos_command(a: AlgosArgs) -> Result<ExitCode> {
             for g in a.guarantees {
                 println!("{:<18}   guarantee: {g}", "");
             }
+            let weighted = weighted_objectives(a);
+            if !weighted.is_empty() {
+                println!(
+                    "{:<18}   also: {} (length + C * turns; no guarantee claimed)",
+                    "",
+                    weighted.join(", ")
+                );
+            }
         }
     }
     Ok(ExitCode::SUCCESS)
 }
 
-/// One object per algorithm: `name, summary, paper, objectives, requires`, `guarantees` (their
+/// The weighted objectives an algorithm reports on its outputs (none is guaranteed).
+fn weighted_objectives(a: &Algorithm) -> Vec<&'static str> {
+    [Objective::Weighted(0), Objective::WeightedCc(0)]
+        .into_iter()
+        .filter(|&o| a.reports(o))
+        .map(Objective::name)
+        .collect()
+}
+
+/// One object per algorithm: `name, summary, paper, objectives, requires`, `weighted_objectives`
+/// (measured, never guaranteed), `guarantees` (their
 /// text, as the results' `guarantee` column writes them), `guarantee_details` (each bound as
 /// data with its theorem) and `claims` (the claims-table rows it is measured in).
 fn json() -> Result<serde_json::Value> {
@@ -69,6 +87,7 @@ fn json() -> Result<serde_json::Value> {
             "summary": a.summary,
             "paper": a.paper().title(),
             "objectives": a.objectives,
+            "weighted_objectives": weighted_objectives(a),
             "requires": a.requires,
             "guarantees": a.guarantees.iter().map(ToString::to_string).collect::<Vec<_>>(),
             "guarantee_details": details,

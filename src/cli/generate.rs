@@ -31,7 +31,7 @@ fn family_parser() -> impl TypedValueParser<Value = Family> {
 }
 
 fn style_parser() -> impl TypedValueParser<Value = Style> {
-    PossibleValuesParser::new(Style::ALL.map(Style::name)).try_map(|s| s.parse::<Style>())
+    PossibleValuesParser::new(Style::NAMES).try_map(|s| s.parse::<Style>())
 }
 
 /// The values of the parameter flags given on the command line: one flag per row of

@@ -27,10 +27,14 @@ pub struct SolveArgs {
     /// {tour_out}" (split on spaces; quotes group words). See README, "Outside algorithms".
     #[arg(long)]
     pub command: Option<String>,
-    /// The objective to report (`turns` also accepted as `tour-turns`). Default: the
-    /// algorithm's tour (its first objective for outside programs).
-    #[arg(long, value_parser = super::one_of(Objective::ALL.map(Objective::name)))]
+    /// The objective to report (`turns` also accepted as `tour-turns`; `weighted` and
+    /// `weighted-cc`, length + C * turns of the tour or of the cycle cover, need --turn-cost).
+    /// Default: the algorithm's tour (its first objective for outside programs).
+    #[arg(long, value_parser = super::one_of(Objective::NAMES))]
     pub objective: Option<String>,
+    /// Weight C of turns for `weighted` and `weighted-cc` (length + C * turns).
+    #[arg(long)]
+    pub turn_cost: Option<u32>,
     /// Also solve exactly (MILP) to decide guarantees against the proven optimum.
     #[arg(long)]
     pub exact: bool,
@@ -94,10 +98,15 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         )));
     }
     let wanted: Option<Objective> = match (&a.objective, a.cycle_cover) {
-        (Some(o), _) => Some(o.parse().map_err(mowmill::Error::Invalid)?),
+        (Some(o), _) => Some(Objective::parse(o, a.turn_cost).map_err(mowmill::Error::Invalid)?),
         (None, true) => Some(Objective::CcTurns),
         (None, false) => None,
     };
+    if a.turn_cost.is_some() && a.objective.is_none() {
+        bail!(mowmill::Error::invalid(
+            "--turn-cost applies to --objective weighted or weighted-cc"
+        ));
+    }
     let inst = Instance::read(&a.file)?;
     let options = Options {
         merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
@@ -138,14 +147,15 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let mut reference = Reference::default();
     let mut exact_json = serde_json::Value::Null;
     if a.exact {
-        let Some(eo) = evaluate::exact_counterpart(objective) else {
+        let (Some(eo), Some(exact_objective)) = (
+            evaluate::exact_counterpart(objective),
+            evaluate::exact_objective(objective),
+        ) else {
             bail!(mowmill::Error::invalid(format!(
                 "--exact: no exact solver computes the optimum of {objective} (lawn-tsp is a \
                  reference tour through the centres, not the optimal lawn tour)"
             )));
         };
-        let exact_objective: exact::Objective =
-            eo.name().parse().map_err(mowmill::Error::Invalid)?;
         let opts = exact::ExactOptions {
             time_limit: Some(a.time_limit),
             ..exact::ExactOptions::default()
@@ -166,7 +176,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             },
         );
         exact_json = serde_json::json!({
-            "objective": eo.name(),
+            "objective": exact_objective.to_string(),
+            "turn_cost": exact_objective.turn_cost(),
             "status": r.status.to_string(),
             "value": r.value,
             "lower_bound": r.lower_bound,
@@ -197,7 +208,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             "algorithm": subject.name(),
             // The name bench rows give this run (options that differ from the defaults).
             "variant": evaluate::variant_name(subject.name(), subject.objectives(), &options),
-            "objective": out.objective,
+            "objective": out.objective.name(),
+            "turn_cost": out.objective.turn_cost(),
             "value": out.value,
             "length": out.length,
             "turns": out.turns,

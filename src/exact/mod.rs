@@ -1,4 +1,4 @@
-//! Exact baselines: proven optima (or proven bounds) of the five objectives, the ground truth
+//! Exact baselines: proven optima (or proven bounds) of the six objectives, the ground truth
 //! the harness divides by.
 //!
 //! Every objective is solved with embedded HiGHS (through the `highs` crate; module `lp` says
@@ -30,6 +30,11 @@
 //! * **`weighted`** with turn cost `C`: the tour model minimizing `Σ (1 + C turn(ab)) p`, i.e.
 //!   length + C · turns (turn-cost paper, Section 5.6); the length of a walk is its number of
 //!   passages. Every U-turn is offered (pushing one costs length).
+//! * **`weighted-cc`** with turn cost `C`: the cycle-cover model minimizing
+//!   `Σ (1 + C turn(ab)) p` over passages (every U-turn offered) plus, for every pixel with a
+//!   neighbour, a binary column `s_v` of cost 4C in its coverage row: the one-pixel walk that
+//!   the checker counts as length 0 and 4 turns. The 2018 CPLEX study whose main table uses
+//!   this objective (C = 50) has no such walks; see docs/exact.md for the difference.
 //! * **`lawn-tsp`** (module `lawn`): binary `y_ij` on all pairs of grass pixels with L1 costs,
 //!   degree 2, subtour elimination `Σ_{i,j ∈ S} y_ij <= |S| - 1` on the smaller side of each
 //!   violated cut. (Milling paper, Section 4, the αTSP = 1 reference.)
@@ -45,6 +50,24 @@
 //! the bound. The returned tour or cycle cover always goes through [`crate::checker::check`],
 //! its recounted cost is `value`, and `status` is `optimal` only when `value` equals the
 //! proven `lower_bound`.
+//!
+//! `weighted-cc`: every cycle cover the checker accepts (milling mode) is an integer
+//! solution of its model of the same cost, and conversely. A walk of two or more pixels
+//! gives one passage per visit (its length) with the turn of each visit, and the passages
+//! balance on every edge; a one-pixel walk at a pixel with a neighbour is `s_v = 1` (a second
+//! one at the same pixel only adds cost, hence the bound 1); at an isolated pixel it is the
+//! constant 4C outside the model. Conversely the balanced passages decompose into closed
+//! walks (`walks::passage_walks`) of that length and turn count, and `s_v = 1` is a one-pixel
+//! walk. So the model's optimum is the optimum over checker-valid cycle covers, and its
+//! LP and MIP bounds (plus the constant) bound it. Every integer solution has an even value
+//! (each closed walk has even length and an even number of turns, a one-pixel walk costs
+//! 4C), so rounding bounds up to even is sound. The reduced-cost and budget bounds
+//! (`PassageModel::tighten`) use only: turns ≤ value / C (length ≥ 0), every other pixel
+//! costs at least 1 (a passage costs 1 + C·turn, a one-pixel walk 4C ≥ 4 for C ≥ 1; with
+//! C = 0 nothing is assumed), and the link argument of `cc-turns` for straight passes. The
+//! cheap bound is C times the turn bound of cycle covers (length ≥ 0). `optimal` is then set,
+//! as for every objective, only when the checker's recount of the returned cover equals the
+//! proven bound.
 
 mod cuts;
 mod driver;
@@ -76,26 +99,46 @@ pub enum Objective {
     TourTurns,
     /// Tour minimizing length + `turn_cost` · turns.
     Weighted { turn_cost: u32 },
+    /// Cycle cover minimizing length + `turn_cost` · turns.
+    WeightedCc { turn_cost: u32 },
     /// Exact TSP through the grass pixel centres with L1 distances (may leave the region).
     LawnTsp,
 }
 
 impl Objective {
     /// All objective names, as the CLI spells them.
-    pub const NAMES: [&'static str; 5] = ["length", "cc-turns", "turns", "weighted", "lawn-tsp"];
+    pub const NAMES: [&'static str; 6] = [
+        "length",
+        "cc-turns",
+        "turns",
+        "weighted",
+        "weighted-cc",
+        "lawn-tsp",
+    ];
 
     /// The objective named `name`; `turn_cost` is required by, and only accepted with,
-    /// `weighted`.
+    /// `weighted` and `weighted-cc`.
     pub fn parse(name: &str, turn_cost: Option<u32>) -> Result<Objective, String> {
         match (name.parse::<Objective>()?, turn_cost) {
             (Objective::Weighted { .. }, Some(c)) => Ok(Objective::Weighted { turn_cost: c }),
-            (Objective::Weighted { .. }, None) => {
-                Err("objective weighted needs --turn-cost C".into())
+            (Objective::WeightedCc { .. }, Some(c)) => Ok(Objective::WeightedCc { turn_cost: c }),
+            (o @ (Objective::Weighted { .. } | Objective::WeightedCc { .. }), None) => {
+                Err(format!("objective {o} needs --turn-cost C"))
             }
             (o, None) => Ok(o),
             (o, Some(_)) => Err(format!(
-                "--turn-cost applies to objective weighted, not {o}"
+                "--turn-cost applies to objectives weighted and weighted-cc, not {o}"
             )),
+        }
+    }
+
+    /// The turn cost C of `weighted` and `weighted-cc`.
+    pub fn turn_cost(self) -> Option<u32> {
+        match self {
+            Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
+                Some(turn_cost)
+            }
+            _ => None,
         }
     }
 
@@ -112,13 +155,16 @@ impl Objective {
     pub(crate) fn counts_turns(self) -> bool {
         matches!(
             self,
-            Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. }
+            Objective::CcTurns
+                | Objective::TourTurns
+                | Objective::Weighted { .. }
+                | Objective::WeightedCc { .. }
         )
     }
 
     /// Whether the answer must be a single closed walk.
     pub fn is_tour(self) -> bool {
-        self != Objective::CcTurns
+        !matches!(self, Objective::CcTurns | Objective::WeightedCc { .. })
     }
 
     /// The objective's value of a checked cover.
@@ -126,7 +172,7 @@ impl Objective {
         match self {
             Objective::Length | Objective::LawnTsp => report.length,
             Objective::CcTurns | Objective::TourTurns => report.turns,
-            Objective::Weighted { turn_cost } => {
+            Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
                 report.length + u64::from(turn_cost) * report.turns
             }
         }
@@ -140,6 +186,7 @@ impl fmt::Display for Objective {
             Objective::CcTurns => "cc-turns",
             Objective::TourTurns => "turns",
             Objective::Weighted { .. } => "weighted",
+            Objective::WeightedCc { .. } => "weighted-cc",
             Objective::LawnTsp => "lawn-tsp",
         })
     }
@@ -148,7 +195,8 @@ impl fmt::Display for Objective {
 impl FromStr for Objective {
     type Err = String;
 
-    /// Parses a name; `weighted` gets turn cost 1 (use [`Objective::parse`] to set it).
+    /// Parses a name; `weighted` and `weighted-cc` get turn cost 1 (use [`Objective::parse`]
+    /// to set it).
     fn from_str(s: &str) -> Result<Objective, String> {
         match s {
             "length" => Ok(Objective::Length),
@@ -156,6 +204,7 @@ impl FromStr for Objective {
             // `tour-turns` is the spelling before the objective names were unified.
             "turns" | "tour-turns" => Ok(Objective::TourTurns),
             "weighted" => Ok(Objective::Weighted { turn_cost: 1 }),
+            "weighted-cc" => Ok(Objective::WeightedCc { turn_cost: 1 }),
             "lawn-tsp" => Ok(Objective::LawnTsp),
             _ => Err(format!(
                 "unknown objective {s:?}: expected one of {}",
@@ -289,7 +338,7 @@ impl Answer {
 ///
 /// # Arguments
 /// * `region` — the pixels (the grass, for `lawn-tsp`).
-/// * `objective` — one of the five objectives.
+/// * `objective` — one of the six objectives.
 /// * `opts` — time limit, threads, verbosity and an optional warm start.
 ///
 /// # Returns
@@ -297,7 +346,7 @@ impl Answer {
 /// `lower_bound`, and `status` `optimal` exactly when the two are equal.
 ///
 /// # Complexity
-/// Exponential in the worst case (all five problems are NP-hard); see the `exact_scaling`
+/// Exponential in the worst case (all six problems are NP-hard); see the `exact_scaling`
 /// benchmark and the README for measured times.
 ///
 /// # Guarantee
@@ -328,7 +377,9 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
         )
     } else if opts.max_coverage.is_some() && !objective.counts_turns() {
         Answer::stopped(
-            Stop::Error("a coverage cap applies to cc-turns, turns and weighted only".into()),
+            Stop::Error(
+                "a coverage cap applies to cc-turns, turns, weighted and weighted-cc only".into(),
+            ),
             Bound {
                 value: 0,
                 source: "none",
@@ -337,7 +388,10 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
     } else {
         match objective {
             Objective::Length => solve_length(region, opts, &deadline, &settings),
-            Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. } => {
+            Objective::CcTurns
+            | Objective::TourTurns
+            | Objective::Weighted { .. }
+            | Objective::WeightedCc { .. } => {
                 solve_turns(region, objective, opts, &deadline, &settings)
             }
             Objective::LawnTsp => solve_lawn(region, opts, &deadline, &settings),
@@ -375,10 +429,7 @@ fn assemble(
         message: None,
         lb_source: a.lower.source.to_string(),
         lp_bound: a.lp_bound,
-        turn_cost: match objective {
-            Objective::Weighted { turn_cost } => Some(turn_cost),
-            _ => None,
-        },
+        turn_cost: objective.turn_cost(),
         n: region.len(),
         coverage_cap: cap,
         max_coverage: None,
@@ -518,12 +569,7 @@ fn solve_turns(
     settings: &Settings,
 ) -> Answer {
     let lower = cheap_lower_bound(region, objective);
-    let goal = match objective {
-        Objective::CcTurns => turns::TurnGoal::CycleCover,
-        Objective::TourTurns => turns::TurnGoal::Tour,
-        Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
-        _ => unreachable!("turn objectives only"),
-    };
+    let goal = turn_goal(objective);
     if objective.is_tour() {
         if not_connected(region) {
             return Answer::stopped(Stop::Infeasible, lower);
@@ -534,7 +580,7 @@ fn solve_turns(
     }
     let model = turns::PassageModel::new(region, goal, opts.max_coverage);
     // Isolated pixels are one-pixel walks outside the model: 4 turns each.
-    let constant = 4 * model.isolated as u64;
+    let constant = model.isolated_cost();
     let value = |counts: &Vec<u32>| model.formulation().objective(&as_columns(counts));
     let warm = checked_warm_start(region, objective, opts)
         .and_then(|c| model.walk_counts(&c.cycles))
@@ -548,8 +594,8 @@ fn solve_turns(
         Solved {
             stop: Stop::Optimal,
             best: Some(Vec::new()),
-            upper: Some(0),
-            lower: 0,
+            upper: Some(constant),
+            lower: constant,
             lower_source: lower.source,
             lp_bound: None,
             rounds: 0,
@@ -566,6 +612,17 @@ fn solve_turns(
         .as_ref()
         .map(|x| CycleCover::new(model.walks(&model.counts(x))));
     to_answer(s, cover, lower)
+}
+
+/// The passage model's goal for a turn objective.
+fn turn_goal(objective: Objective) -> turns::TurnGoal {
+    match objective {
+        Objective::CcTurns => turns::TurnGoal::CycleCover,
+        Objective::TourTurns => turns::TurnGoal::Tour,
+        Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
+        Objective::WeightedCc { turn_cost } => turns::TurnGoal::WeightedCycleCover(turn_cost),
+        _ => unreachable!("turn objectives only"),
+    }
 }
 
 fn as_columns(counts: &[u32]) -> Vec<f64> {
@@ -631,6 +688,11 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
                 "length bound + C * turn bound",
             )
         }
+        Objective::WeightedCc { turn_cost } => {
+            // A one-pixel walk has length 0, so only the turns bound a cycle cover.
+            let t = bounds::turn_lower_bound(region).value;
+            Bound::new(u64::from(turn_cost) * t, "C * turn bound")
+        }
         Objective::LawnTsp => bounds::lawn_tsp_lower_bound(region),
     }
 }
@@ -681,15 +743,12 @@ pub(crate) fn lp_relaxation_bound(
         Objective::Length => {
             driver::lp_bound(&milling::MillingModel::new(region), &deadline, &settings)
         }
-        Objective::CcTurns | Objective::TourTurns | Objective::Weighted { .. } => {
-            let goal = match objective {
-                Objective::CcTurns => turns::TurnGoal::CycleCover,
-                Objective::TourTurns => turns::TurnGoal::Tour,
-                Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
-                _ => unreachable!("turn objectives only"),
-            };
-            let model = turns::PassageModel::new(region, goal, None);
-            let constant = 4 * model.isolated as u64;
+        Objective::CcTurns
+        | Objective::TourTurns
+        | Objective::Weighted { .. }
+        | Objective::WeightedCc { .. } => {
+            let model = turns::PassageModel::new(region, turn_goal(objective), None);
+            let constant = model.isolated_cost();
             if model.formulation().num_cols() == 0 {
                 return None;
             }

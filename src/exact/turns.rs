@@ -49,6 +49,18 @@ pub(crate) enum TurnGoal {
     Tour,
     /// Length + C · turns over tours.
     Weighted(u32),
+    /// Length + C · turns over cycle covers.
+    WeightedCycleCover(u32),
+}
+
+impl TurnGoal {
+    /// The turn cost C when length counts too.
+    fn turn_cost(self) -> Option<u32> {
+        match self {
+            TurnGoal::Weighted(c) | TurnGoal::WeightedCycleCover(c) => Some(c),
+            _ => None,
+        }
+    }
 }
 
 /// Turn cost of a passage between sides `a` and `b` (Dir indices).
@@ -85,6 +97,9 @@ pub(crate) struct PassageModel<'a> {
     edges: Vec<(usize, u8, usize)>,
     /// Pixels without neighbours (one-pixel walks, cost 4 each in cycle covers).
     pub isolated: usize,
+    /// `weighted-cc`: the column of the one-pixel walk at each pixel with a neighbour (NONE
+    /// elsewhere and for other goals).
+    stay: Vec<u32>,
     formulation: Formulation,
 }
 
@@ -106,14 +121,14 @@ impl<'a> PassageModel<'a> {
                     // (see `add_passage`): no U-turn columns where the strip goes on.
                     let inner_uturn = a == b && around[(a as usize + 2) % 4] != NONE;
                     // Under a coverage cap that move adds visits, so every U-turn stays.
-                    if inner_uturn && !matches!(goal, TurnGoal::Weighted(_)) && cap.is_none() {
+                    if inner_uturn && goal.turn_cost().is_none() && cap.is_none() {
                         continue;
                     }
                     if around[a as usize] != NONE && around[b as usize] != NONE {
                         let t = f64::from(passage_turns(a, b));
-                        let cost = match goal {
-                            TurnGoal::Weighted(c) => 1.0 + f64::from(c) * t,
-                            _ => t,
+                        let cost = match goal.turn_cost() {
+                            Some(c) => 1.0 + f64::from(c) * t,
+                            None => t,
                         };
                         f.add_col(cost, 0.0, f64::INFINITY, true);
                         vars.push(Passage { pixel: v, a, b });
@@ -139,8 +154,18 @@ impl<'a> PassageModel<'a> {
             first,
             edges,
             isolated: 0,
+            stay: vec![NONE; n],
             formulation: Formulation::default(),
         };
+        if let TurnGoal::WeightedCycleCover(c) = goal {
+            // The checker's one-pixel walk: length 0, 4 turns; it covers its pixel alone.
+            for v in 0..n {
+                if m.first[v] < m.first[v + 1] {
+                    m.stay[v] = f.num_cols() as u32;
+                    f.add_col(4.0 * f64::from(c), 0.0, 1.0, true);
+                }
+            }
+        }
         for &(v, d, w) in &m.edges {
             let terms = m
                 .side_terms(v, d)
@@ -152,8 +177,9 @@ impl<'a> PassageModel<'a> {
                 m.isolated += 1;
             } else {
                 let hi = cap.map_or(f64::INFINITY, f64::from);
+                let stay = (m.stay[v] != NONE).then_some((m.stay[v] as usize, 1.0));
                 f.rows.push(Row::range(
-                    (m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)),
+                    (m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)).chain(stay),
                     1.0,
                     hi,
                 ));
@@ -177,7 +203,14 @@ impl<'a> PassageModel<'a> {
     }
 
     fn needs_connectivity(&self) -> bool {
-        self.goal != TurnGoal::CycleCover
+        matches!(self.goal, TurnGoal::Tour | TurnGoal::Weighted(_))
+    }
+
+    /// The cost of the isolated pixels' one-pixel walks (4 turns, length 0 each), which are
+    /// outside the model.
+    pub(crate) fn isolated_cost(&self) -> u64 {
+        let per_turn = self.goal.turn_cost().map_or(1, u64::from);
+        4 * per_turn * self.isolated as u64
     }
 
     fn cost(&self, k: usize) -> u64 {
@@ -308,7 +341,7 @@ impl<'a> PassageModel<'a> {
     /// plus the one-pixel walks of isolated pixels.
     pub(crate) fn walks(&self, counts: &[u32]) -> Vec<Vec<Pixel>> {
         let mut passages = Vec::new();
-        for (k, &c) in counts.iter().enumerate() {
+        for (k, &c) in counts.iter().enumerate().take(self.vars.len()) {
             for _ in 0..c {
                 passages.push(self.vars[k]);
             }
@@ -321,7 +354,8 @@ impl<'a> PassageModel<'a> {
             .map(|w| w.into_iter().map(|v| self.region.pixel(v)).collect())
             .collect();
         for v in 0..self.region.len() {
-            if self.first[v] == self.first[v + 1] {
+            let stays = self.stay[v] != NONE && counts[self.stay[v] as usize] > 0;
+            if self.first[v] == self.first[v + 1] || stays {
                 out.push(vec![self.region.pixel(v)]);
             }
         }
@@ -366,7 +400,7 @@ impl<'a> PassageModel<'a> {
     /// Passage counts of closed walks (a one-pixel walk becomes a step to a neighbour and
     /// back, same turn count); `None` when a walk is not a walk of this region.
     pub(crate) fn walk_counts(&self, walks: &[Vec<Pixel>]) -> Option<Vec<u32>> {
-        let mut counts = vec![0u32; self.vars.len()];
+        let mut counts = vec![0u32; self.formulation.num_cols()];
         for walk in walks {
             let idx: Vec<usize> = walk
                 .iter()
@@ -375,6 +409,10 @@ impl<'a> PassageModel<'a> {
             if idx.len() == 1 {
                 let v = idx[0];
                 if self.first[v] == self.first[v + 1] {
+                    continue;
+                }
+                if self.stay[v] != NONE && counts[self.stay[v] as usize] == 0 {
+                    counts[self.stay[v] as usize] = 1;
                     continue;
                 }
                 let d = (0..4u8).find(|&d| self.nb[v][d as usize] != NONE)?;
@@ -581,13 +619,17 @@ impl CutModel for PassageModel<'_> {
     /// different link (maximal straight piece) of that orientation, every link has two ends,
     /// and each end takes one unit of turn cost (a 90° turn ends one horizontal and one
     /// vertical link, a U-turn two links of one orientation). With weights, every other pixel
-    /// costs at least 1 and the length is at least N.
+    /// costs at least 1 and the length is at least N. For weighted cycle covers a pixel may be
+    /// a one-pixel walk of length 0 and cost 4C: the length is only at least 0, and every
+    /// other pixel costs at least min(1, 4C).
     fn tighten(&self, f: &mut Formulation, target: u64) {
-        let n = self.region.len() as f64;
+        let n = (self.region.len() - self.isolated) as f64;
         let target = target as f64;
         let (turn_budget, rest) = match self.goal {
             TurnGoal::Weighted(c) if c > 0 => ((target - n).max(0.0) / f64::from(c), n - 1.0),
             TurnGoal::Weighted(_) => (f64::INFINITY, n - 1.0),
+            TurnGoal::WeightedCycleCover(c) if c > 0 => (target / f64::from(c), n - 1.0),
+            TurnGoal::WeightedCycleCover(_) => (f64::INFINITY, 0.0),
             _ => (target, 0.0),
         };
         for (k, p) in self.vars.iter().enumerate() {
@@ -605,7 +647,7 @@ impl CutModel for PassageModel<'_> {
     }
 
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
-        Some(vec![2.0; self.vars.len()])
+        Some(vec![2.0; self.formulation.num_cols()])
     }
 }
 

@@ -22,7 +22,10 @@ pub(super) fn simple_canvas(
         c.begin_dilation();
     }
     match o.style {
-        Style::Blob | Style::Mixed => draw_blob(&mut c, &mut f, target, o.compactness, rng),
+        // The erosion styles are refused for shape families before anything is drawn.
+        Style::Blob | Style::Mixed | Style::Dense | Style::Sparse => {
+            draw_blob(&mut c, &mut f, target, o.compactness, rng)
+        }
         Style::Rectangles => draw_rectangles(&mut c, target, rng),
         Style::Snake => draw_corridors(&mut c, target, false, rng),
         Style::Rooms => draw_corridors(&mut c, target, true, rng),

@@ -21,6 +21,7 @@ pub enum Family {
     Boundary,
     ThinArms,
     Pinholes,
+    Eroded,
 }
 
 /// A generator parameter (the field of [`GenParams`](super::GenParams) of the same name).
@@ -159,7 +160,7 @@ pub const PARAMS: [ParamSpec; 11] = [
         kind: ParamKind::Style,
         min: 0,
         max: 0,
-        help: "Shape style (default: mixed, one of the others drawn from the seed)",
+        help: "Shape style (default: mixed, one of the others drawn from the seed); dense or sparse for eroded",
     },
     ParamSpec {
         param: Param::Compactness,
@@ -294,7 +295,7 @@ pub struct FamilyInfo {
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
 /// arm in `Spec::build`; `mowmill gen`, configs and the manifest read it from here.
-pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
+pub(super) const FAMILY_TABLE: [FamilyInfo; 12] = [
     FamilyInfo {
         family: Family::Rect,
         name: "rect",
@@ -389,6 +390,14 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 11] = [
         required: &[Param::N, Param::Holes],
         random: true,
     },
+    FamilyInfo {
+        family: Family::Eroded,
+        name: "eroded",
+        summary: "a square of side ~3 sqrt(n) eroded at random to n pixels, 4-connected; style dense or sparse (holes)",
+        params: &[Param::N, Param::Style],
+        required: &[Param::N],
+        random: true,
+    },
 ];
 
 impl FamilyInfo {
@@ -427,7 +436,7 @@ impl FamilyInfo {
 }
 
 impl Family {
-    pub const ALL: [Family; 11] = [
+    pub const ALL: [Family; 12] = [
         Family::Rect,
         Family::RandomSimple,
         Family::RandomHoled,
@@ -439,6 +448,7 @@ impl Family {
         Family::Boundary,
         Family::ThinArms,
         Family::Pinholes,
+        Family::Eroded,
     ];
 
     /// The family's registry row.
@@ -502,14 +512,16 @@ pub fn families_help() -> String {
         ));
     }
     let styles: Vec<&str> = Style::ALL.iter().map(|s| s.name()).collect();
+    let eroded: Vec<&str> = Style::ERODED.iter().map(|s| s.name()).collect();
     let fixed: Vec<&str> = FAMILY_TABLE
         .iter()
         .filter(|f| !f.random)
         .map(|f| f.name)
         .collect();
     out.push_str(&format!(
-        "\nStyles (--style): {}.\nDeterministic families (--seed optional, default 0): {}.",
+        "\nStyles (--style): {} (eroded: {}, mixed draws one).\nDeterministic families (--seed optional, default 0): {}.",
         styles.join(", "),
+        eroded.join(", "),
         fixed.join(", ")
     ));
     out

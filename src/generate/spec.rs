@@ -4,6 +4,7 @@
 use super::band::band_pixels;
 use super::boundary::{boundary_canvas, two_rows_pixels};
 use super::checks::{CutRule, Promise, verify};
+use super::eroded::eroded_pixels;
 use super::lawn::lawn_pixels;
 use super::pinholes::pinholes_canvas;
 use super::random_holed::holed_canvas;
@@ -21,6 +22,32 @@ use crate::error::Error;
 use crate::error::Result;
 use crate::region::Pixel;
 use crate::region::Region;
+
+/// The largest `eroded` instance: its square has about 9N cells.
+pub(super) const MAX_ERODED: usize = 1_000_000;
+
+/// Refuses a style the family does not draw: `dense` and `sparse` are `eroded`'s only, and
+/// `eroded` takes no shape style (`mixed` draws one of its two).
+fn check_style(family: Family, style: Option<Style>) -> Result<()> {
+    let Some(style) = style else {
+        return Ok(());
+    };
+    let erosion = Style::ERODED.contains(&style);
+    let names = |list: &[Style]| list.iter().map(|s| s.name()).collect::<Vec<_>>().join(", ");
+    if family == Family::Eroded && !erosion && style != Style::Mixed {
+        Err(Error::invalid(format!(
+            "style {style} does not apply to family eroded (it takes: {}, or mixed to draw one)",
+            names(&Style::ERODED)
+        )))
+    } else if family != Family::Eroded && erosion {
+        Err(Error::invalid(format!(
+            "style {style} applies to family eroded only ({family} takes: {})",
+            names(&Style::ALL)
+        )))
+    } else {
+        Ok(())
+    }
+}
 
 /// Random attempts before the deterministic fallback pub(super) construction.
 pub(super) const MAX_ATTEMPTS: u64 = 8;
@@ -63,9 +90,13 @@ impl Spec {
         let mut rng = rng_for(p.seed, TAG_RESOLVE);
         let drawn_style = Style::CONCRETE[below(&mut rng, Style::CONCRETE.len())];
         let drawn_compactness = between(&mut rng, 0, 100) as f64 / 100.0;
-        let style = match p.style.unwrap_or(Style::Mixed) {
-            Style::Mixed => drawn_style,
-            s => s,
+        check_style(p.family, p.style)?;
+        let style = match (p.style.unwrap_or(Style::Mixed), p.family) {
+            // The same draw picks between the two erosion styles (its stream is eroded's own
+            // through the seed, and other families keep their draws).
+            (Style::Mixed, Family::Eroded) => Style::ERODED[below(&mut rng, 2)],
+            (Style::Mixed, _) => drawn_style,
+            (s, _) => s,
         };
         let default_holes = if p.family == Family::RandomHoled {
             1
@@ -141,6 +172,13 @@ impl Spec {
 
     pub(super) fn check_feasible(&self) -> Result<()> {
         let name = self.family.name();
+        if self.family == Family::Eroded && self.n > MAX_ERODED {
+            return Err(Error::invalid(format!(
+                "eroded: n = {} is more than this family's limit of {MAX_ERODED} pixels (it erodes a square of \
+                 about 9n cells)",
+                self.n
+            )));
+        }
         match self.family {
             Family::Rect if self.width == 0 || self.height == 0 => {
                 return Err(Error::invalid("rect needs width ≥ 1 and height ≥ 1"));
@@ -235,6 +273,8 @@ impl Spec {
             Family::RandomHoled | Family::Thin | Family::ThinArms | Family::Pinholes => {
                 (1, self.holes)
             }
+            // Any number of holes (`any_holes`).
+            Family::Eroded => (1, 0),
             Family::LawnScattered => (self.parts, 0),
             _ => (1, 0),
         };
@@ -254,7 +294,7 @@ impl Spec {
                 Family::Thin | Family::Thin43 | Family::ThinArms
             ),
             separated: self.family == Family::LawnScattered,
-            any_holes: self.family == Family::Boundary,
+            any_holes: matches!(self.family, Family::Boundary | Family::Eroded),
             boundary_only: self.family == Family::Boundary,
         }
     }
@@ -306,6 +346,13 @@ impl Spec {
                 return self.with_attempts(
                     |rng, _| pinholes_canvas(n, h, &o, rng).map(|c| c.pixels()),
                     |rng| rows_pixels(n, h, false, rng),
+                );
+            }
+            Family::Eroded => {
+                let style = self.style;
+                return self.with_attempts(
+                    |rng, _| Some(eroded_pixels(n, style, rng)),
+                    |rng| rows_pixels(n, 0, false, rng),
                 );
             }
         };

@@ -1,4 +1,5 @@
-//! Shape styles of the random families: blob, rectangles, snake corridors and rooms.
+//! Shape styles of the random families: blob, rectangles, snake corridors and rooms; and the
+//! two erosion styles of `eroded`, dense and sparse.
 
 use super::canvas::{Canvas, STYLE_MARGIN};
 use super::growth::{Frontier, Move, bucket_weights, evolve, refresh};
@@ -18,9 +19,15 @@ pub enum Style {
     Rectangles,
     Snake,
     Rooms,
+    /// `eroded` only: erosion mostly from outside, few holes.
+    Dense,
+    /// `eroded` only: a rough boundary and many small holes.
+    Sparse,
 }
 
 impl Style {
+    /// The styles of the shape families (`random-simple`, `random-holed`, `lawn-scattered`,
+    /// `boundary`, `pinholes`).
     pub const ALL: [Style; 5] = [
         Style::Mixed,
         Style::Blob,
@@ -31,6 +38,18 @@ impl Style {
     /// The styles `Mixed` draws from.
     pub(super) const CONCRETE: [Style; 4] =
         [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms];
+    /// The styles of `eroded` (its `mixed` draws one of them).
+    pub const ERODED: [Style; 2] = [Style::Dense, Style::Sparse];
+    /// Every style name `--style` and configs accept.
+    pub const NAMES: [&'static str; 7] = [
+        "mixed",
+        "blob",
+        "rectangles",
+        "snake",
+        "rooms",
+        "dense",
+        "sparse",
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -39,6 +58,8 @@ impl Style {
             Style::Rectangles => "rectangles",
             Style::Snake => "snake",
             Style::Rooms => "rooms",
+            Style::Dense => "dense",
+            Style::Sparse => "sparse",
         }
     }
 }
@@ -55,12 +76,12 @@ impl FromStr for Style {
     fn from_str(s: &str) -> Result<Style> {
         Style::ALL
             .into_iter()
+            .chain(Style::ERODED)
             .find(|st| st.name() == s)
             .ok_or_else(|| {
-                let names: Vec<&str> = Style::ALL.iter().map(|st| st.name()).collect();
                 Error::invalid(format!(
                     "unknown style {s:?}: expected one of {}",
-                    names.join(", ")
+                    Style::NAMES.join(", ")
                 ))
             })
     }

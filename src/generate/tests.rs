@@ -116,6 +116,7 @@ fn assert_promises(f: &GridFile, p: &GenParams) {
             let cells = topology::holes(r).hole_cells();
             assert!(cells.iter().all(|h| h.len() == 1), "one-pixel holes\n{r:?}");
         }
+        Family::Eroded => assert_eq!(s.components, 1, "{r:?}"),
         Family::Rect | Family::Donut | Family::Band | Family::Thin43 => {}
     }
 }
@@ -145,8 +146,9 @@ fn registry_rows_match_the_enum_and_names_round_trip() {
             );
         }
     }
-    for s in Style::ALL {
+    for s in Style::ALL.into_iter().chain(Style::ERODED) {
         assert_eq!(s.to_string().parse::<Style>().unwrap(), s);
+        assert!(Style::NAMES.contains(&s.name()), "{s}");
     }
     let names: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
     assert_eq!(
@@ -162,7 +164,8 @@ fn registry_rows_match_the_enum_and_names_round_trip() {
             "thin43",
             "boundary",
             "thin-arms",
-            "pinholes"
+            "pinholes",
+            "eroded"
         ]
     );
     let e = "disc".parse::<Family>().unwrap_err().to_string();

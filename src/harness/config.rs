@@ -22,10 +22,11 @@
 //! family = "fixtures"  # the family column of their rows
 //!
 //! [[exact]]
-//! objective = "length" # length, cc-turns, turns, weighted, lawn-tsp
+//! objective = "length" # length, cc-turns, turns, weighted, weighted-cc, lawn-tsp
 //! max_n = 64           # only instances with at most this many pixels
 //! time_limit = 20      # seconds per solve
-//! turn_cost = 2        # weighted only: length + turn_cost · turns
+//! turn_cost = 2        # weighted(-cc) only: length + turn_cost · turns; the milling
+//!                      # algorithms then report weighted(-cc)-c2 too
 //!
 //! [options]            # algorithm options; lists expand into every combination
 //! merge = ["smart", "naive"]   # cycle cover → tour merging (default smart)
@@ -68,8 +69,8 @@
 //!   `.gg` or `.csv`); `family` (default
 //!   `files`) obeys the rule of `name` and is not the family of a `[[family]]` table.
 //! * `algorithms` lists: registered names or the names of `[[algorithm]]` tables.
-//! * `[[exact]]`: `objective` one of length, cc-turns, turns, weighted, lawn-tsp, at most one
-//!   table per objective (and turn cost); `turn_cost` for weighted only and required there;
+//! * `[[exact]]`: `objective` one of length, cc-turns, turns, weighted, weighted-cc, lawn-tsp, at most one
+//!   table per objective (and turn cost); `turn_cost` for weighted(-cc) only and required there;
 //!   `max_n` ≥ 1; `time_limit` a number of seconds in (0, [`MAX_TIME_LIMIT`]]; the same
 //!   bounds for the `time_limit` of an `[[algorithm]]`.
 //! * A suite without any instance is refused.

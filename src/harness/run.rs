@@ -363,6 +363,12 @@ fn run_on_region(
             reference.insert(objective, known_from(&row, &name));
         }
     }
+    let weighted: Vec<Objective> = config
+        .exact
+        .iter()
+        .filter_map(|e| exact_objective_name(e).parse::<Objective>().ok())
+        .filter(|o| o.turn_cost().is_some())
+        .collect();
     let outside = config.outside_algorithms();
     let mut subjects: Vec<Subject<'_>> = match &spec.algorithms {
         Some(names) => names
@@ -392,10 +398,13 @@ fn run_on_region(
             if !seen.insert(name.clone()) {
                 continue;
             }
+            // Its own objectives, and the weighted ones of the config's `[[exact]]` tables it
+            // reports (on instances of any size: their rows then divide by the cheap bound).
             let pending: Vec<Objective> = subject
                 .objectives()
                 .iter()
                 .copied()
+                .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
                 .filter(|o| !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string())))
                 .collect();
             if pending.is_empty() {
@@ -481,7 +490,7 @@ fn algorithm_rows(
     let (merge, cutter, coverage4) = evaluate::relevant_options(subject.objectives());
     let row_for = |objective: Objective| Row {
         algorithm: name.to_string(),
-        objective: objective.name().into(),
+        objective: objective.to_string(),
         guarantee: subject
             .applicable(objective, region, &eval.options)
             .iter()

@@ -88,6 +88,8 @@ pub enum Shape {
     Thin,
     /// Every pixel a boundary pixel.
     Boundary,
+    /// Connected, any number of holes.
+    Connected,
     /// Anything non-empty (lawns).
     Any,
 }
@@ -101,6 +103,7 @@ impl Shape {
             Family::RandomHoled | Family::Pinholes | Family::Donut => Shape::Holed,
             Family::Thin | Family::ThinArms | Family::Thin43 => Shape::Thin,
             Family::Boundary => Shape::Boundary,
+            Family::Eroded => Shape::Connected,
             Family::LawnScattered => Shape::Any,
         }
     }
@@ -115,6 +118,7 @@ impl Shape {
             Shape::Holed => connected() && topology::holes(r).count >= 1,
             Shape::Thin => connected() && topology::summary(r).thin,
             Shape::Boundary => topology::summary(r).internal == 0,
+            Shape::Connected => connected(),
             Shape::Any => true,
         }
     }
@@ -374,7 +378,7 @@ fn generated(
         Shape::Simple => Family::Band,
         Shape::Holed => Family::Donut,
         Shape::Thin => Family::Thin43,
-        Shape::Boundary | Shape::Any => opts.family,
+        Shape::Boundary | Shape::Connected | Shape::Any => opts.family,
     };
     for attempt in 0..200 {
         let family = if attempt < 100 { opts.family } else { fallback };
@@ -412,7 +416,7 @@ fn generated(
 
 /// The exact objective that gives OPT for an algorithm objective.
 fn exact_objective(o: Objective) -> Option<exact::Objective> {
-    evaluate::exact_counterpart(o).and_then(|o| exact::Objective::parse(o.name(), None).ok())
+    evaluate::exact_objective(o)
 }
 
 /// An exact solve's outcome: OPT if proven, the walk found, the proven lower bound.

@@ -43,7 +43,8 @@ impl Optima {
             Objective::Length => (self.length, self.lower[0]),
             Objective::CcTurns => (self.cc, self.lower[1]),
             Objective::Turns => (self.tour, self.lower[2]),
-            Objective::LawnLength => (None, 0),
+            // Lawn tours have no optimum here; weighted objectives are never outputs.
+            Objective::LawnLength | Objective::Weighted(_) | Objective::WeightedCc(_) => (None, 0),
         }
     }
 }

@@ -48,32 +48,235 @@
 //! solver with `--max-coverage 4` finds the capped optimum equal to the optimum on the small
 //! regions tested, as the theorem implies.
 //!
+//! # Incremental bookkeeping
+//! The search keeps, under every accepted move, the coverage of every pixel, the excess, the
+//! pixels still to treat ordered by coverage, and per walk the turns at each position as
+//! prefix sums (with the positions of U-turns) and, once needed, where each pixel is visited.
+//! A move describes its result as pieces of the current walk (runs of positions, forward or
+//! reversed, and new pixels): a candidate's turns are counted from the runs' ends and the
+//! prefix sums, the coverage changes only at the positions it drops and the pixels it adds,
+//! and only the accepted move rebuilds the walk. Slide chains keep their walks as pieces too.
+//! The moves, their order and their tie-breaks are those of the former implementation,
+//! which recounted everything after every move and rebuilt the walk for every candidate; it
+//! is kept for the unit tests (`coverage4/reference.rs`), which check that both return the
+//! same walks, move by move and in whole searches, and that the kept state equals a recount.
+//! The checker still recounts the final tour (`merge::cover_and_tour`).
+//!
 //! # Complexity
-//! Excision and transplant O(c² · L) at a pixel visited c times on a walk of L moves; a pair
-//! drop O(c² · R · L) for common paths of up to R = [`PAIR_REACH`] moves; a reroute
-//! O(c · W · S log S) for windows of W moves over the S states its bounds allow; a reversal
-//! attempt tries the O(c²) pairs of visits of the 13 pixels near p; a slide chain at most
-//! [`SLIDE_EXPANSIONS`] extensions of O(L) each.
+//! Per accepted move O(N + L) for a walk of L moves on N pixels (rebuilding the walk, its
+//! turn sums and, when a splice needs it, its visit index), O(log N) per coverage change.
+//! Per attempt at a pixel visited c times: excision O(c² · ℓ) for loops of ℓ moves until
+//! the first pixel they alone cover; a pair drop O(c² · R) candidates for common paths of up
+//! to R = [`PAIR_REACH`] moves, each O(R) plus, for a splice, the shared pixels of the
+//! shorter closed walk (only its U-turns when only a splice at two U-turns fits the budget);
+//! a reroute O(c · W · S log S) for windows of W moves over the S states its bounds allow; a
+//! transplant and a reversal O(L) per pair of visits tried; a slide chain at most
+//! [`SLIDE_EXPANSIONS`] extensions of O(L) each (finding the visits from the index).
+//! Measured in docs/measured.md (issue 16).
 
 use crate::checker::walk_cost;
 use crate::region::{Dir, Pixel, Region};
 use crate::tour::{CycleCover, Walk};
 
-/// Cuts `walk[start..start + len]` (cyclically) out of the walk.
-fn excise(walk: &Walk, start: usize, len: usize) -> Walk {
+/// A piece of a rewritten walk: `len` positions of the current walk from `start` on
+/// (cyclically), in walk order or reversed, or new pixels. A move describes its result as
+/// pieces, so that its cost is counted in time proportional to the pieces' ends
+/// ([`Turns::cost`]) and the coverage updated from the positions it drops and the pixels it
+/// adds ([`dropped`]) without rebuilding or recounting the walk.
+#[derive(Clone, Debug)]
+enum Piece {
+    Run { start: usize, len: usize, rev: bool },
+    New(Vec<Pixel>),
+}
+
+fn run(start: usize, len: usize) -> Piece {
+    Piece::Run {
+        start,
+        len,
+        rev: false,
+    }
+}
+
+fn rev_run(start: usize, len: usize) -> Piece {
+    Piece::Run {
+        start,
+        len,
+        rev: true,
+    }
+}
+
+/// The turns of a closed walk at each position, as prefix sums, and in total (as
+/// [`walk_cost`]); `None` for a walk with a non-move.
+struct Turns {
+    total: u64,
+    prefix: Vec<u64>,
+    /// Positions of U-turns, in walk order.
+    u_turns: Vec<usize>,
+}
+
+impl Turns {
+    fn of(walk: &Walk) -> Option<Turns> {
+        let m = walk.len();
+        if m <= 1 {
+            let total = walk_cost(walk).ok()?.1;
+            return Some(Turns {
+                total,
+                prefix: vec![0; m + 1],
+                u_turns: Vec::new(),
+            });
+        }
+        let dirs: Option<Vec<Dir>> = (0..m).map(|k| walk[k].dir_to(walk[(k + 1) % m])).collect();
+        let dirs = dirs?;
+        let mut prefix = Vec::with_capacity(m + 1);
+        prefix.push(0);
+        let mut total = 0;
+        let mut u_turns = Vec::new();
+        for k in 0..m {
+            let t = dirs[(k + m - 1) % m].turn_to(dirs[k]);
+            if t == 2 {
+                u_turns.push(k);
+            }
+            total += u64::from(t);
+            prefix.push(total);
+        }
+        Some(Turns {
+            total,
+            prefix,
+            u_turns,
+        })
+    }
+
+    /// Turns at the `count` positions from `start` on (cyclically).
+    fn range(&self, start: usize, count: usize) -> u64 {
+        let m = self.prefix.len() - 1;
+        if count == 0 {
+            return 0;
+        }
+        let start = start % m;
+        let end = start + count;
+        if end <= m {
+            self.prefix[end] - self.prefix[start]
+        } else {
+            self.prefix[m] - self.prefix[start] + self.prefix[end - m]
+        }
+    }
+
+    /// (pixels, turns) of the closed walk made of `pieces` of `walk`, the turns exactly as
+    /// [`walk_cost`] of the rebuilt walk (`None` where it would fail): a run's inner positions
+    /// keep their neighbours and so their turns; only the two pixels at each end of a run are
+    /// looked at.
+    fn cost(&self, walk: &Walk, pieces: &[Piece]) -> Option<(u64, u64)> {
+        let m = walk.len();
+        // (pixel, whether its turn is counted here), and whether hidden positions follow.
+        let mut items: Vec<(Pixel, bool, bool)> = Vec::new();
+        let mut hidden = 0;
+        let mut n = 0;
+        for piece in pieces {
+            match piece {
+                Piece::New(px) => {
+                    n += px.len();
+                    items.extend(px.iter().map(|&q| (q, true, false)));
+                }
+                &Piece::Run { start, len, rev } => {
+                    n += len;
+                    let at = |t: usize| walk[(start + t) % m];
+                    let order = |t: usize| if rev { len - 1 - t } else { t };
+                    if len <= 4 {
+                        items.extend((0..len).map(|t| (at(order(t)), true, false)));
+                    } else {
+                        hidden += self.range(start + 1, len - 2);
+                        items.push((at(order(0)), true, false));
+                        items.push((at(order(1)), false, true));
+                        items.push((at(order(len - 2)), false, false));
+                        items.push((at(order(len - 1)), true, false));
+                    }
+                }
+            }
+        }
+        if n <= 1 {
+            return Some((n as u64, if n == 1 { 4 } else { 0 }));
+        }
+        let k = items.len();
+        let mut dirs = Vec::with_capacity(k);
+        for x in 0..k {
+            let (q, _, gap) = items[x];
+            dirs.push(if gap {
+                None
+            } else {
+                Some(q.dir_to(items[(x + 1) % k].0)?)
+            });
+        }
+        let mut turns = hidden;
+        for x in 0..k {
+            if items[x].1 {
+                let (a, b) = (dirs[(x + k - 1) % k], dirs[x]);
+                turns += u64::from(a.expect("beside a gap").turn_to(b.expect("beside a gap")));
+            }
+        }
+        Some((n as u64, turns))
+    }
+}
+
+/// The walk made of `pieces` of `walk`.
+fn rebuild(walk: &Walk, pieces: &[Piece]) -> Walk {
     let m = walk.len();
-    (0..m - len).map(|k| walk[(start + len + k) % m]).collect()
+    let mut out = Vec::with_capacity(m);
+    for piece in pieces {
+        match piece {
+            Piece::New(px) => out.extend_from_slice(px),
+            &Piece::Run { start, len, rev } => {
+                if rev {
+                    out.extend((0..len).rev().map(|t| walk[(start + t) % m]));
+                } else {
+                    out.extend((0..len).map(|t| walk[(start + t) % m]));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The positions of a walk of `m` moves that no run of `pieces` keeps (runs never overlap).
+fn dropped(m: usize, pieces: &[Piece]) -> Vec<usize> {
+    let mut spans: Vec<(usize, usize)> = Vec::new();
+    for piece in pieces {
+        if let &Piece::Run { start, len, .. } = piece {
+            let s = start % m;
+            if s + len <= m {
+                spans.push((s, s + len));
+            } else {
+                spans.push((s, m));
+                spans.push((0, s + len - m));
+            }
+        }
+    }
+    spans.sort_unstable();
+    let mut out = Vec::new();
+    let mut at = 0;
+    for (s, e) in spans {
+        debug_assert!(s >= at, "runs overlap");
+        out.extend(at..s);
+        at = at.max(e);
+    }
+    out.extend(at..m);
+    out
 }
 
 /// One excision at pixel `p` (region index) that removes a redundant sub-loop without adding
 /// turns, if there is one: the shortest such loop.
-fn excise_at(region: &Region, walk: &Walk, count: &[u32], p: usize) -> Option<Walk> {
+fn excise_at(
+    region: &Region,
+    walk: &Walk,
+    turns: &Turns,
+    count: &[u32],
+    p: usize,
+) -> Option<Vec<Piece>> {
     let m = walk.len();
     let target = region.pixel(p);
     let at: Vec<usize> = (0..m).filter(|&k| walk[k] == target).collect();
-    let (_, turns) = walk_cost(walk).ok()?;
     let mut inside = vec![0u32; region.len()];
     let mut best: Option<(usize, usize)> = None;
+    let mut touched = Vec::new();
     for &i in &at {
         for &j in &at {
             if i == j {
@@ -84,18 +287,17 @@ fn excise_at(region: &Region, walk: &Walk, count: &[u32], p: usize) -> Option<Wa
             if len >= m || best.is_some_and(|(_, l)| l <= len) {
                 continue;
             }
-            let positions = (1..=len).map(|k| (i + k) % m);
             let mut redundant = true;
-            let mut touched = Vec::new();
-            for k in positions {
+            for k in (1..=len).map(|k| (i + k) % m) {
                 let q = region.index_of(walk[k]).expect("tours stay in the region");
                 inside[q] += 1;
                 touched.push(q);
                 if inside[q] >= count[q] {
                     redundant = false;
+                    break;
                 }
             }
-            for q in touched {
+            for q in touched.drain(..) {
                 inside[q] = 0;
             }
             if redundant {
@@ -104,9 +306,9 @@ fn excise_at(region: &Region, walk: &Walk, count: &[u32], p: usize) -> Option<Wa
         }
     }
     let (start, len) = best?;
-    let out = excise(walk, start, len);
-    match walk_cost(&out) {
-        Ok((_, t)) if t <= turns && !out.is_empty() => Some(out),
+    let out = vec![run(start + len, m - len)];
+    match turns.cost(walk, &out) {
+        Some((moves, t)) if t <= turns.total && moves > 0 => Some(out),
         _ => None,
     }
 }
@@ -125,13 +327,17 @@ const PAIR_REACH: usize = 64;
 ///
 /// Accepted when every pixel stays covered, the excess coverage drops and the turns stay
 /// within `budget`. Only the ends u, w and the splice change turns.
+#[allow(clippy::too_many_arguments)]
 fn pair_drop_at(
     region: &Region,
     walk: &Walk,
+    turns: &Turns,
+    index: &mut Option<Visits>,
     count: &[u32],
+    now: u64,
     p: usize,
     budget: u64,
-) -> Option<Walk> {
+) -> Option<Vec<Piece>> {
     let m = walk.len();
     let target = region.pixel(p);
     let at = |t: usize| walk[t % m];
@@ -177,7 +383,6 @@ fn pair_drop_at(
     }
     // Shortest paths first: they disturb least.
     candidates.sort_by_key(|&(_, _, k, _)| k);
-    let now: u64 = count.iter().map(|&c| excess(c)).sum();
     for (s1, s2, k, same) in candidates {
         let d = (s2 + m - s1) % m;
         // Positions relative to s1: P1 = 0..=k; P2 = d..=d+k (same) or d-k..=d (opposite,
@@ -220,27 +425,39 @@ fn pair_drop_at(
         if !ok || after >= now {
             continue;
         }
-        let r: Walk = (0..m).map(|t| at(s1 + t)).collect();
         let out = if same {
             // u P w A u P w B becomes w A u B⁻¹.
-            let mut out = vec![w];
-            out.extend_from_slice(&r[k + 1..d]);
-            out.push(u);
-            out.extend(r[d + k + 1..].iter().rev());
-            out
+            vec![
+                run(s1 + k, d - k),
+                run(s1 + d, 1),
+                rev_run(s1 + d + k + 1, m - d - k - 1),
+            ]
         } else {
-            let first: Walk = std::iter::once(w)
-                .chain(r[k + 1..d - k].iter().copied())
-                .collect();
-            let second: Walk = std::iter::once(u)
-                .chain(r[d + 1..].iter().copied())
-                .collect();
-            match splice(&first, &second) {
+            // The closed walks w A and u B.
+            // The spliced walk has the turns of the two closed walks, less at most 4 at the
+            // splice (two passes of 0 to 2): no splice can fit the budget below that.
+            let closed = |s: usize, n: usize| turns.cost(walk, &[run(s, n)]).map(|c| c.1);
+            let (Some(ta), Some(tb)) = (closed(s1 + k, d - 2 * k), closed(s1 + d, m - d)) else {
+                continue;
+            };
+            if ta.min(tb) > budget || (d - 2 * k > 1 && m - d > 1 && ta + tb > budget + 4) {
+                continue;
+            }
+            let index = index.get_or_insert_with(|| Visits::of(region, walk));
+            // Spliced at two U-turns that become straight passes only (4 turns less), if
+            // nothing else fits: the others are not looked at.
+            let only_u_turns =
+                (d - 2 * k > 1 && m - d > 1 && ta + tb == budget + 4).then_some(turns);
+            let (a, b) = ((s1 + k, d - 2 * k), (s1 + d, m - d));
+            match splice(region, walk, index, only_u_turns, a, b) {
                 Some(out) => out,
                 None => continue,
             }
         };
-        if out.len() >= 2 && walk_cost(&out).is_ok_and(|(_, t)| t <= budget) {
+        if turns
+            .cost(walk, &out)
+            .is_some_and(|(n, t)| n >= 2 && t <= budget)
+        {
             return Some(out);
         }
     }
@@ -263,6 +480,9 @@ impl std::hash::Hasher for PixelHash {
     fn write_i32(&mut self, i: i32) {
         self.write_u64(u64::from(i as u32));
     }
+    fn write_usize(&mut self, x: usize) {
+        self.write_u64(x as u64);
+    }
     fn write_u64(&mut self, x: u64) {
         self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x517c_c1b7_2722_0a95);
     }
@@ -275,47 +495,123 @@ impl std::hash::BuildHasher for PixelHash {
     }
 }
 
-/// Two closed walks joined into one at a pixel both visit, where and in the orientation of
-/// the second that costs fewest turns; a one-pixel walk whose pixel the other visits is
-/// dropped. `None` if they share no pixel.
-fn splice(a: &Walk, b: &Walk) -> Option<Walk> {
-    let (a, b) = if a.len() <= b.len() { (a, b) } else { (b, a) };
-    if a.len() == 1 {
-        return b.contains(&a[0]).then(|| b.clone());
+/// Where each pixel (region index) is visited on a walk: positions in walk order.
+struct Visits {
+    start: Vec<usize>,
+    at: Vec<usize>,
+}
+
+impl Visits {
+    fn of(region: &Region, walk: &Walk) -> Visits {
+        let mut start = vec![0usize; region.len() + 1];
+        let idx: Vec<usize> = walk
+            .iter()
+            .map(|&q| region.index_of(q).expect("tours stay in the region"))
+            .collect();
+        idx.iter().for_each(|&i| start[i + 1] += 1);
+        for i in 0..region.len() {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut at = vec![0; walk.len()];
+        for (k, &i) in idx.iter().enumerate() {
+            at[fill[i]] = k;
+            fill[i] += 1;
+        }
+        Visits { start, at }
     }
-    let mut where_a: std::collections::HashMap<Pixel, Vec<usize>, PixelHash> = Default::default();
-    for (x, &q) in a.iter().enumerate() {
-        where_a.entry(q).or_default().push(x);
+
+    fn of_pixel(&self, i: usize) -> &[usize] {
+        &self.at[self.start[i]..self.start[i + 1]]
     }
-    let pass = |w: &Walk, x: usize| {
-        let n = w.len();
-        let h = w[(x + n - 1) % n].dir_to(w[x]).expect("walk");
-        let g = w[x].dir_to(w[(x + 1) % n]).expect("walk");
+}
+
+/// Two closed walks, runs `(start, len)` of `walk`, joined into one at a pixel both visit,
+/// where and in the orientation of the second that costs fewest turns (ties: the first
+/// position in the longer walk, then in the shorter, forward before reversed); a one-pixel
+/// walk whose pixel the other visits is dropped. `None` if they share no pixel. The shared
+/// pixels are found from the shorter walk's pixels through `visits`.
+///
+/// With `only_u_turns` (the walk's turns), only splices that lower the turns by 4 are
+/// considered: at a U-turn of both walks; the shorter walk's U-turns are its two ends and
+/// those the walk has inside it.
+fn splice(
+    region: &Region,
+    walk: &Walk,
+    visits: &Visits,
+    only_u_turns: Option<&Turns>,
+    a: (usize, usize),
+    b: (usize, usize),
+) -> Option<Vec<Piece>> {
+    let m = walk.len();
+    let (a, b) = if a.1 <= b.1 { (a, b) } else { (b, a) };
+    let ((sa, na), (sb, nb)) = (a, b);
+    let pa = |x: usize| walk[(sa + x) % m];
+    let pb = |y: usize| walk[(sb + y) % m];
+    // Positions of b that visit the pixel of a's position x.
+    let in_b = |x: usize| {
+        let i = region.index_of(pa(x)).expect("tours stay in the region");
+        visits
+            .of_pixel(i)
+            .iter()
+            .map(move |&k| (k + m - sb % m) % m)
+            .filter(move |&y| y < nb)
+    };
+    if na == 1 {
+        return in_b(0).next().map(|_| vec![run(sb, nb)]);
+    }
+    let pass = |at: &dyn Fn(usize) -> Pixel, n: usize, x: usize| {
+        let h = at((x + n - 1) % n).dir_to(at(x)).expect("walk");
+        let g = at(x).dir_to(at((x + 1) % n)).expect("walk");
         (h, g)
     };
-    // (turn change, position in a, position in b, b reversed)
+    // (turn change, position in b, position in a, b reversed): the least.
     let mut best: Option<(i64, usize, usize, bool)> = None;
-    for (y, q) in b.iter().enumerate() {
-        let Some(xs) = where_a.get(q) else { continue };
-        for &x in xs {
-            let ((h1, g1), (h2, g2)) = (pass(a, x), pass(b, y));
+    let xs: Vec<usize> = match only_u_turns {
+        None => (0..na).collect(),
+        Some(turns) => {
+            // Inner positions of a: U-turns of the walk in the cyclic range sa+1 ..= sa+na-2.
+            let (lo, hi) = ((sa + 1) % m, (sa + na - 1) % m);
+            let u = &turns.u_turns;
+            let from = |s: usize| u.partition_point(|&k| k < s);
+            let inner: Vec<usize> = if lo <= hi {
+                u[from(lo)..from(hi)].to_vec()
+            } else {
+                u[from(lo)..]
+                    .iter()
+                    .chain(&u[..from(hi)])
+                    .copied()
+                    .collect()
+            };
+            let mut xs = vec![0];
+            xs.extend(inner.into_iter().map(|k| (k + m - sa % m) % m));
+            xs.push(na - 1);
+            xs
+        }
+    };
+    for x in xs {
+        for y in in_b(x) {
+            let ((h1, g1), (h2, g2)) = (pass(&pa, na, x), pass(&pb, nb, y));
             let old = i64::from(h1.turn_to(g1) + h2.turn_to(g2));
             let forward = i64::from(h2.turn_to(g1) + h1.turn_to(g2));
             let backward = i64::from(g2.opposite().turn_to(g1) + h1.turn_to(h2.opposite()));
+            if only_u_turns.is_some() && old < 4 {
+                continue;
+            }
             for (cost, rev) in [(forward, false), (backward, true)] {
-                if best.is_none_or(|(c, ..)| cost - old < c) {
-                    best = Some((cost - old, x, y, rev));
+                let key = (cost - old, y, x, rev);
+                if best.is_none_or(|b| key < b) {
+                    best = Some(key);
                 }
             }
         }
     }
-    let (_, x, y, rev) = best?;
-    let (na, nb) = (a.len(), b.len());
-    let mut out: Walk = (0..na).map(|t| a[(x + t) % na]).collect();
+    let (_, y, x, rev) = best?;
+    let mut out = vec![run(sa + x, na - x), run(sa, x)];
     if rev {
-        out.extend((0..nb).map(|t| b[(y + nb - t) % nb]));
+        out.extend([rev_run(sb, y + 1), rev_run(sb + y + 1, nb - y - 1)]);
     } else {
-        out.extend((0..nb).map(|t| b[(y + t) % nb]));
+        out.extend([run(sb + y, nb - y), run(sb, y)]);
     }
     Some(out)
 }
@@ -335,12 +631,19 @@ const WINDOW: usize = 12;
 /// min-turn path from `walk[i]` to `walk[j]` whose interior avoids `p`. Accepted when every
 /// pixel stays covered, the excess coverage Σ max(0, c − 4) drops and the walk's turns stay
 /// within `budget`.
-fn reroute_at(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64) -> Option<Walk> {
+fn reroute_at(
+    region: &Region,
+    walk: &Walk,
+    cur: &Turns,
+    count: &[u32],
+    p: usize,
+    budget: u64,
+) -> Option<Vec<Piece>> {
     let m = walk.len();
     if m < 3 {
         return None;
     }
-    let (_, turns) = walk_cost(walk).ok()?;
+    let turns = cur.total;
     let target = region.pixel(p);
     let idx = |k: usize| {
         region
@@ -373,14 +676,14 @@ fn reroute_at(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64
                 let Some((d, _)) = Dir::ALL
                     .iter()
                     .filter_map(|&d| {
-                        dist[q * 4 + d.index()].map(|c| (d, c.0 + u64::from(d.turn_to(h_out))))
+                        dist.get(&(q * 4 + d.index()))
+                            .map(|c| (d, c.0 + u64::from(d.turn_to(h_out))))
                     })
                     .min_by_key(|&(_, c)| c)
                 else {
                     continue;
                 };
-                let new_turns =
-                    dist[q * 4 + d.index()].expect("reached").0 + u64::from(d.turn_to(h_out));
+                let new_turns = dist[&(q * 4 + d.index())].0 + u64::from(d.turn_to(h_out));
                 if turns - old_turns + new_turns > budget {
                     continue;
                 }
@@ -406,11 +709,10 @@ fn reroute_at(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64
                 if !ok || gain >= 0 {
                     continue;
                 }
-                let mut out: Walk = Vec::with_capacity(m);
-                out.extend(path[..path.len() - 1].iter().map(|&r| region.pixel(r)));
-                out.extend((0..m - a - b).map(|s| walk[(j + s) % m]));
-                match walk_cost(&out) {
-                    Ok((_, t)) if t <= budget && out.len() >= 2 => return Some(out),
+                let new = path[..path.len() - 1].iter().map(|&r| region.pixel(r));
+                let out = vec![Piece::New(new.collect()), run(j, m - a - b)];
+                match cur.cost(walk, &out) {
+                    Some((n, t)) if t <= budget && n >= 2 => return Some(out),
                     _ => continue,
                 }
             }
@@ -431,32 +733,35 @@ fn excise_and_graft(
     region: &Region,
     walk: &Walk,
     count: &[u32],
+    before: u64,
     p: usize,
     budget: u64,
-) -> Option<Walk> {
+) -> Option<Vec<Piece>> {
     let m = walk.len();
     let target = region.pixel(p);
     let idx = |q: Pixel| region.index_of(q).expect("tours stay in the region");
     let at: Vec<usize> = (0..m).filter(|&k| walk[k] == target).collect();
-    let excess = |c: &[u32]| -> u64 { c.iter().map(|&x| u64::from(x.saturating_sub(4))).sum() };
-    let before = excess(count);
+    let excess = |c: u32| u64::from(c.saturating_sub(4));
     for &i in &at {
         for &j in &at {
             let len = (j + m - i) % m;
             if i == j || len + 2 > m {
                 continue;
             }
-            let mut left = count.to_vec();
+            // Coverage left where it changes (every pixel is covered before the move).
+            let mut left: std::collections::HashMap<usize, u32, PixelHash> = Default::default();
             for k in 1..=len {
-                left[idx(walk[(i + k) % m])] -= 1;
+                let q = idx(walk[(i + k) % m]);
+                *left.entry(q).or_insert(count[q]) -= 1;
             }
-            let lost: Vec<usize> = (0..region.len()).filter(|&q| left[q] == 0).collect();
+            let mut lost: Vec<usize> = left.iter().filter(|e| *e.1 == 0).map(|e| *e.0).collect();
             if lost.len() > GRAFTS {
                 continue;
             }
-            let mut out = excise(walk, (i + 1) % m, len);
+            lost.sort_unstable();
+            let mut out = rebuild(walk, &[run((i + 1 + len) % m, m - len)]);
             for &u in &lost {
-                if left[u] > 0 {
+                if left[&u] > 0 {
                     continue; // covered by an earlier spike
                 }
                 let n = out.len();
@@ -476,14 +781,19 @@ fn excise_and_graft(
                 let Some((_, k)) = best else { break };
                 let q = out[k];
                 out.splice(k + 1..k + 1, [region.pixel(u), q]);
-                left[u] += 1;
-                left[idx(q)] += 1;
+                *left.entry(u).or_insert(count[u]) += 1;
+                *left.entry(idx(q)).or_insert(count[idx(q)]) += 1;
             }
-            if left.contains(&0) || excess(&left) >= before {
+            if left.values().any(|&c| c == 0) {
+                continue;
+            }
+            let after = before + left.values().map(|&c| excess(c)).sum::<u64>()
+                - left.keys().map(|&q| excess(count[q])).sum::<u64>();
+            if after >= before {
                 continue;
             }
             match walk_cost(&out) {
-                Ok((_, t)) if t <= budget => return Some(out),
+                Ok((_, t)) if t <= budget => return Some(vec![Piece::New(out)]),
                 _ => continue,
             }
         }
@@ -502,7 +812,7 @@ fn reverse_then_reroute(
     count: &[u32],
     p: usize,
     budget: u64,
-) -> Option<Walk> {
+) -> Option<Vec<Piece>> {
     let mut by_pixel: std::collections::BTreeMap<Pixel, Vec<usize>> = Default::default();
     let target = region.pixel(p);
     // Local: only pixels near p, which also keeps this to O(1) pairs per pixel of the tour.
@@ -517,17 +827,18 @@ fn reverse_then_reroute(
                 // walk[i + 1..j] reversed; walk[i] == walk[j] stay.
                 let mut out = walk.clone();
                 out[i + 1..j].reverse();
-                let Ok((_, t)) = walk_cost(&out) else {
+                let Some(turns) = Turns::of(&out) else {
                     continue;
                 };
-                if t > budget || j - i < 2 {
+                if turns.total > budget || j - i < 2 {
                     continue;
                 }
-                if let Some(w) = excise_at(region, &out, count, p)
-                    .filter(|w| walk_cost(w).is_ok_and(|(_, t)| t <= budget))
-                    .or_else(|| reroute_at(region, &out, count, p, budget))
+                let fits = |w: &Vec<Piece>| turns.cost(&out, w).is_some_and(|(_, t)| t <= budget);
+                if let Some(w) = excise_at(region, &out, &turns, count, p)
+                    .filter(fits)
+                    .or_else(|| reroute_at(region, &out, &turns, count, p, budget))
                 {
-                    return Some(w);
+                    return Some(vec![Piece::New(rebuild(&out, &w))]);
                 }
             }
         }
@@ -535,10 +846,116 @@ fn reverse_then_reroute(
     None
 }
 
+/// A walk made of pieces of a base walk, read by position (a chain of slides in
+/// [`slide_chain`] is kept so, without copying the walk).
+struct View<'a> {
+    base: &'a Walk,
+    pieces: Vec<Piece>,
+    /// Position after each piece.
+    ends: Vec<usize>,
+}
+
+impl<'a> View<'a> {
+    fn new(base: &'a Walk, pieces: Vec<Piece>) -> View<'a> {
+        let pieces: Vec<Piece> = pieces.into_iter().filter(|q| piece_len(q) > 0).collect();
+        let mut ends = Vec::with_capacity(pieces.len());
+        let mut at = 0;
+        for q in &pieces {
+            at += piece_len(q);
+            ends.push(at);
+        }
+        View { base, pieces, ends }
+    }
+
+    fn len(&self) -> usize {
+        self.ends.last().copied().unwrap_or(0)
+    }
+
+    fn at(&self, k: usize) -> Pixel {
+        let k = k % self.len();
+        let x = self.ends.partition_point(|&e| e <= k);
+        let off = k - if x == 0 { 0 } else { self.ends[x - 1] };
+        match &self.pieces[x] {
+            Piece::New(px) => px[off],
+            &Piece::Run { start, len, rev } => {
+                let t = if rev { len - 1 - off } else { off };
+                self.base[(start + t) % self.base.len()]
+            }
+        }
+    }
+
+    /// Pieces of the `len` positions from `from` on (cyclically).
+    fn sub(&self, from: usize, len: usize) -> Vec<Piece> {
+        let m = self.len();
+        let mut out = Vec::new();
+        let (mut k, mut left) = (from % m, len);
+        while left > 0 {
+            let x = self.ends.partition_point(|&e| e <= k);
+            let begin = if x == 0 { 0 } else { self.ends[x - 1] };
+            let (off, take) = (k - begin, left.min(self.ends[x] - k));
+            out.push(match &self.pieces[x] {
+                Piece::New(px) => Piece::New(px[off..off + take].to_vec()),
+                &Piece::Run { start, len, rev } => Piece::Run {
+                    start: if rev {
+                        start + (len - off - take)
+                    } else {
+                        start + off
+                    },
+                    len: take,
+                    rev,
+                },
+            });
+            left -= take;
+            k = (k + take) % m;
+        }
+        out
+    }
+
+    /// Positions of the visits of pixel `q` (region index `i`), in walk order.
+    fn visits(&self, q: Pixel, i: usize, index: &Visits) -> Vec<usize> {
+        let bm = self.base.len();
+        let mut out = Vec::new();
+        let mut begin = 0;
+        for (piece, &end) in self.pieces.iter().zip(&self.ends) {
+            match piece {
+                Piece::New(px) => {
+                    out.extend((0..px.len()).filter(|&t| px[t] == q).map(|t| begin + t));
+                }
+                &Piece::Run { start, len, rev } => {
+                    for &k in index.of_pixel(i) {
+                        let t = (k + bm - start % bm) % bm;
+                        if t < len {
+                            out.push(begin + if rev { len - 1 - t } else { t });
+                        }
+                    }
+                }
+            }
+            begin = end;
+        }
+        out.sort_unstable();
+        out
+    }
+}
+
+fn piece_len(piece: &Piece) -> usize {
+    match piece {
+        Piece::New(px) => px.len(),
+        Piece::Run { len, .. } => *len,
+    }
+}
+
+/// Heading of the move from position `k` to `k + 1` of a view (cyclically).
+fn view_heading(walk: &View, k: usize) -> Dir {
+    walk.at(k)
+        .dir_to(walk.at(k + 1))
+        .expect("walks move between 4-adjacent pixels")
+}
+
 /// The maximal straight runs of the walk through position `k`, as (first position, moves):
 /// one for a straight pass, the incoming and the outgoing one at a turn.
-fn runs_at(walk: &Walk, k: usize) -> Vec<(usize, usize)> {
+fn runs_at(walk: &View, k: usize) -> Vec<(usize, usize)> {
     let m = walk.len();
+    let heading = view_heading;
     let (h_in, h_out) = (heading(walk, k + m - 1), heading(walk, k));
     let run = |mut s: usize, h: Dir| {
         // Back to the run's first position, then forward over its moves.
@@ -564,18 +981,19 @@ fn runs_at(walk: &Walk, k: usize) -> Vec<(usize, usize)> {
 /// perpendicular to it): the links before and after it grow or shrink by one (a link shrunk
 /// to nothing disappears), so its corners move with it. With perpendicular links on both
 /// sides no turn is added; the caller recounts anyway. Returns the new walk (starting at the
-/// slid run) and the pixels whose visits it removed and added.
-fn slide(region: &Region, walk: &Walk, s: usize, len: usize, v: Dir) -> Option<SlideResult> {
+/// slid run, as pieces of the view's base walk) and the pixels whose visits it removed and
+/// added.
+fn slide(region: &Region, walk: &View, s: usize, len: usize, v: Dir) -> Option<SlideResult> {
     let m = walk.len();
     if len == 0 || m < len + 3 {
         return None;
     }
-    let old: Vec<Pixel> = (0..=len).map(|t| walk[(s + t) % m]).collect();
+    let old: Vec<Pixel> = (0..=len).map(|t| walk.at(s + t)).collect();
     let moved: Vec<Pixel> = old.iter().map(|q| q.step(v)).collect();
     if !moved.iter().all(|&q| region.contains(q)) {
         return None;
     }
-    let (before, after) = (walk[(s + m - 1) % m], walk[(s + len + 1) % m]);
+    let (before, after) = (walk.at(s + m - 1), walk.at(s + len + 1));
     let (a, b) = (old[0], old[len]);
     let mut added = Vec::with_capacity(len + 3);
     if before != moved[0] {
@@ -587,14 +1005,13 @@ fn slide(region: &Region, walk: &Walk, s: usize, len: usize, v: Dir) -> Option<S
         added.push(moved[len]);
         added.push(b);
     }
-    let mut out = added.clone();
-    out.extend((0..m - len - 1).map(|t| walk[(s + len + 1 + t) % m]));
+    let mut out = vec![Piece::New(added.clone())];
+    out.extend(walk.sub(s + len + 1, m - len - 1));
     Some((out, old, added))
 }
 
 /// A slid walk with the pixels it stopped and started visiting (see [`slide`]).
-type SlideResult = (Walk, Vec<Pixel>, Vec<Pixel>);
-
+type SlideResult = (Vec<Piece>, Vec<Pixel>, Vec<Pixel>);
 /// How many slides one chain of [`slide_chain`] may take.
 const SLIDE_DEPTH: usize = 8;
 
@@ -607,13 +1024,26 @@ const SLIDE_EXPANSIONS: usize = 300;
 /// within `budget`. A slide moves a whole link, so one slide often just passes the excess to
 /// the next row or column; the chain pushes it on to where there is room. Chains are
 /// extended best first (least excess, then fewest slides), at most [`SLIDE_EXPANSIONS`].
-fn slide_chain(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u64) -> Option<Walk> {
+#[allow(clippy::too_many_arguments)]
+fn slide_chain(
+    region: &Region,
+    walk: &Walk,
+    turns: &Turns,
+    index: &mut Option<Visits>,
+    count: &[u32],
+    goal: u64,
+    p: usize,
+    budget: u64,
+) -> Option<Vec<Piece>> {
     use std::cmp::Reverse;
     let excess = |c: u32| u64::from(c.saturating_sub(4));
-    let goal: u64 = count.iter().map(|&c| excess(c)).sum();
     let idx = |q: Pixel| region.index_of(q).expect("slides stay in the region");
-    // Chains by (excess, slides, order of discovery): walk, coverage, pixels to slide from.
-    let mut chains = vec![(walk.clone(), count.to_vec(), vec![p])];
+    // Chains by (excess, slides, order of discovery): walk, coverage where it changed,
+    // pixels to slide from.
+    type Changed = std::collections::HashMap<usize, u32, PixelHash>;
+    let mut chains = vec![(vec![run(0, walk.len())], Changed::default(), vec![p])];
+    let index = &*index.get_or_insert_with(|| Visits::of(region, walk));
+    let base = walk;
     let mut heap = std::collections::BinaryHeap::from([Reverse((goal, 0usize, 0usize))]);
     let mut expansions = 0;
     while let Some(Reverse((now, depth, id))) = heap.pop() {
@@ -621,14 +1051,16 @@ fn slide_chain(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u6
             continue;
         }
         expansions += 1;
-        let (walk, count, from) = chains[id].clone();
+        let (pieces, changes, from) = chains[id].clone();
+        let walk = View::new(base, pieces);
+        let cov = |q: usize| changes.get(&q).copied().unwrap_or(count[q]);
         for &q in &from {
             let target = region.pixel(q);
             let mut tried = std::collections::HashSet::new();
-            let visits: Vec<usize> = (0..walk.len()).filter(|&k| walk[k] == target).collect();
+            let visits = walk.visits(target, q, index);
             for k in visits {
                 for (s, len) in runs_at(&walk, k) {
-                    let h = heading(&walk, s);
+                    let h = view_heading(&walk, s);
                     for v in [h.left(), h.right()] {
                         if !tried.insert((s, v)) {
                             continue;
@@ -636,24 +1068,28 @@ fn slide_chain(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u6
                         let Some((out, removed, added)) = slide(region, &walk, s, len, v) else {
                             continue;
                         };
-                        let mut next = count.clone();
-                        removed.iter().for_each(|&r| next[idx(r)] -= 1);
-                        added.iter().for_each(|&r| next[idx(r)] += 1);
-                        if removed.iter().any(|&r| next[idx(r)] == 0) {
+                        let mut next = changes.clone();
+                        removed
+                            .iter()
+                            .for_each(|&r| *next.entry(idx(r)).or_insert(cov(idx(r))) -= 1);
+                        added
+                            .iter()
+                            .for_each(|&r| *next.entry(idx(r)).or_insert(cov(idx(r))) += 1);
+                        if removed.iter().any(|&r| next[&idx(r)] == 0) {
                             continue;
                         }
                         let changed: std::collections::BTreeSet<usize> =
                             removed.iter().chain(&added).map(|&r| idx(r)).collect();
-                        let after = now + changed.iter().map(|&r| excess(next[r])).sum::<u64>()
-                            - changed.iter().map(|&r| excess(count[r])).sum::<u64>();
-                        if !walk_cost(&out).is_ok_and(|(_, t)| t <= budget) {
+                        let after = now + changed.iter().map(|&r| excess(next[&r])).sum::<u64>()
+                            - changed.iter().map(|&r| excess(cov(r))).sum::<u64>();
+                        if turns.cost(base, &out).is_none_or(|(_, t)| t > budget) {
                             continue;
                         }
                         if after < goal {
                             return Some(out);
                         }
                         let over: Vec<usize> =
-                            changed.into_iter().filter(|&r| next[r] > 4).collect();
+                            changed.into_iter().filter(|&r| next[&r] > 4).collect();
                         heap.push(Reverse((after, depth + 1, chains.len())));
                         chains.push((out, next, over));
                     }
@@ -665,8 +1101,9 @@ fn slide_chain(region: &Region, walk: &Walk, count: &[u32], p: usize, budget: u6
 }
 
 /// Min-turn paths (ties: fewer moves) from `start`, entered with heading `h_in`, over states
-/// (pixel, heading), of at most `limit` (turns, moves); pixel `avoid` may end a path but is
-/// never passed through.
+/// (pixel, heading) = `4 * pixel + heading`, of at most `limit` (turns, moves); pixel `avoid`
+/// may end a path but is never passed through. The states reached are kept in maps, so the
+/// search costs only what its bounds let it reach.
 #[allow(clippy::type_complexity)]
 fn min_turn_paths(
     region: &Region,
@@ -674,22 +1111,21 @@ fn min_turn_paths(
     h_in: Dir,
     avoid: usize,
     limit: (u64, u64),
-) -> (Vec<Option<(u64, u64)>>, Vec<usize>) {
-    let n = region.len();
-    let mut dist: Vec<Option<(u64, u64)>> = vec![None; 4 * n];
-    let mut prev = vec![usize::MAX; 4 * n];
+) -> (StateMap<(u64, u64)>, StateMap<usize>) {
+    let mut dist: StateMap<(u64, u64)> = Default::default();
+    let mut prev: StateMap<usize> = Default::default();
     let mut heap = std::collections::BinaryHeap::new();
     // A virtual state: at `start` with heading h_in, before any move; not stored in `dist` so
     // that paths have at least one move.
     let push = |heap: &mut std::collections::BinaryHeap<_>,
-                dist: &mut Vec<Option<(u64, u64)>>,
-                prev: &mut Vec<usize>,
+                dist: &mut StateMap<(u64, u64)>,
+                prev: &mut StateMap<usize>,
                 s: usize,
                 c: (u64, u64),
                 from: usize| {
-        if c.0 <= limit.0 && c.1 <= limit.1 && dist[s].is_none_or(|d| c < d) {
-            dist[s] = Some(c);
-            prev[s] = from;
+        if c.0 <= limit.0 && c.1 <= limit.1 && dist.get(&s).is_none_or(|&d| c < d) {
+            dist.insert(s, c);
+            prev.insert(s, from);
             heap.push(std::cmp::Reverse((c, s)));
         }
     };
@@ -706,7 +1142,7 @@ fn min_turn_paths(
         }
     }
     while let Some(std::cmp::Reverse((c, s))) = heap.pop() {
-        if dist[s] != Some(c) {
+        if dist.get(&s) != Some(&c) {
             continue;
         }
         let (r, h) = (s / 4, Dir::from_index(s % 4));
@@ -723,13 +1159,16 @@ fn min_turn_paths(
     (dist, prev)
 }
 
+/// States (pixel, heading) of [`min_turn_paths`] mapped to their values.
+type StateMap<T> = std::collections::HashMap<usize, T, PixelHash>;
+
 /// The pixels of the path found by [`min_turn_paths`] ending at pixel `q` with heading `d`,
 /// start included.
-fn trace(prev: &[usize], q: usize, d: Dir) -> Vec<usize> {
+fn trace(prev: &StateMap<usize>, q: usize, d: Dir) -> Vec<usize> {
     let mut out = vec![q];
     let mut s = q * 4 + d.index();
     loop {
-        let p = prev[s];
+        let p = prev[&s];
         if p > usize::MAX / 2 {
             out.push(usize::MAX - p);
             break;
@@ -744,48 +1183,157 @@ fn trace(prev: &[usize], q: usize, d: Dir) -> Vec<usize> {
 /// Rewrites every walk of `tour` by redundant-loop excisions and reroutes until no pixel is
 /// covered more than 4 times or none applies. Returns the rewritten tour and the number of
 /// pixels still covered more than 4 times.
+///
+/// A tour that misses a pixel of the region, or has a walk with a non-move, is not a covering
+/// tour (the checker rejects it): it is returned unchanged, resp. that walk is left alone.
 pub fn coverage4(region: &Region, tour: &CycleCover) -> (CycleCover, usize) {
-    let mut cycles = tour.cycles.clone();
-    let budgets: Vec<u64> = cycles
-        .iter()
-        .map(|w| walk_cost(w).map_or(0, |(_, t)| t))
-        .collect();
-    let mut stuck = vec![false; region.len()];
-    loop {
+    let mut search = Search::new(region, tour);
+    while search.step() {}
+    search.finish()
+}
+
+/// The state of the local search of [`coverage4`], kept up to date by every move: the walks
+/// with their turns per position, the coverage of every pixel, the excess Σ max(0, c − 4),
+/// and the pixels still to treat (covered more than 4 times and not found stuck), by coverage.
+struct Search<'a> {
+    region: &'a Region,
+    cycles: Vec<Walk>,
+    turns: Vec<Option<Turns>>,
+    /// Built when first needed, dropped when the walk changes.
+    visits: Vec<Option<Visits>>,
+    budgets: Vec<u64>,
+    count: Vec<u32>,
+    excess: u64,
+    queue: std::collections::BTreeSet<(u32, usize)>,
+    stuck: Vec<bool>,
+    stuck_list: Vec<usize>,
+}
+
+impl<'a> Search<'a> {
+    fn new(region: &'a Region, tour: &CycleCover) -> Search<'a> {
+        let cycles = tour.cycles.clone();
+        let budgets = cycles
+            .iter()
+            .map(|w| walk_cost(w).map_or(0, |(_, t)| t))
+            .collect();
         let mut count = vec![0u32; region.len()];
         for p in cycles.iter().flatten() {
             if let Some(i) = region.index_of(*p) {
                 count[i] += 1;
             }
         }
-        let Some(p) = (0..region.len())
-            .filter(|&i| count[i] > 4 && !stuck[i])
-            .max_by_key(|&i| count[i])
-        else {
-            let left = count.iter().filter(|&&c| c > 4).count();
-            return (CycleCover::new(cycles), left);
+        let covering = !count.contains(&0);
+        let queue = (0..region.len())
+            .filter(|&i| covering && count[i] > 4)
+            .map(|i| (count[i], i))
+            .collect();
+        Search {
+            region,
+            turns: cycles.iter().map(Turns::of).collect(),
+            visits: cycles.iter().map(|_| None).collect(),
+            cycles,
+            budgets,
+            excess: count.iter().map(|&c| u64::from(c.saturating_sub(4))).sum(),
+            count,
+            queue,
+            stuck: vec![false; region.len()],
+            stuck_list: Vec::new(),
+        }
+    }
+
+    /// One round at the most covered pixel left (ties: the last in region order): the first
+    /// move that applies on the first walk where one does. `false` when no pixel is left.
+    fn step(&mut self) -> bool {
+        let Some(&(_, p)) = self.queue.last() else {
+            return false;
         };
-        let mut done = false;
-        for (walk, &budget) in cycles.iter_mut().zip(&budgets) {
-            if let Some(shorter) = excise_at(region, walk, &count, p)
-                .or_else(|| pair_drop_at(region, walk, &count, p, budget))
-                .or_else(|| reroute_at(region, walk, &count, p, budget))
-                .or_else(|| excise_and_graft(region, walk, &count, p, budget))
-                .or_else(|| reverse_then_reroute(region, walk, &count, p, budget))
-                .or_else(|| slide_chain(region, walk, &count, p, budget))
-            {
-                *walk = shorter;
-                done = true;
+        let (region, count, now) = (self.region, &self.count, self.excess);
+        let mut moved = None;
+        for (w, (walk, visits)) in self.cycles.iter().zip(&mut self.visits).enumerate() {
+            let (Some(turns), budget) = (&self.turns[w], self.budgets[w]) else {
+                continue;
+            };
+            moved = excise_at(region, walk, turns, count, p)
+                .or_else(|| pair_drop_at(region, walk, turns, visits, count, now, p, budget))
+                .or_else(|| reroute_at(region, walk, turns, count, p, budget))
+                .or_else(|| excise_and_graft(region, walk, count, now, p, budget))
+                .or_else(|| reverse_then_reroute(region, walk, count, p, budget))
+                .or_else(|| slide_chain(region, walk, turns, visits, count, now, p, budget))
+                .map(|pieces| (w, pieces));
+            if moved.is_some() {
                 break;
             }
         }
-        if done {
-            stuck.iter_mut().for_each(|s| *s = false);
-        } else {
-            stuck[p] = true;
+        match moved {
+            Some((w, pieces)) => {
+                self.apply(w, &pieces);
+                for s in std::mem::take(&mut self.stuck_list) {
+                    self.stuck[s] = false;
+                    if self.count[s] > 4 {
+                        self.queue.insert((self.count[s], s));
+                    }
+                }
+            }
+            None => {
+                self.stuck[p] = true;
+                self.stuck_list.push(p);
+                self.queue.remove(&(self.count[p], p));
+            }
+        }
+        true
+    }
+
+    /// Walk `w` rewritten as `pieces`: the coverage, the excess and the queue change only at
+    /// the positions dropped and the pixels added; the turns per position are recounted.
+    fn apply(&mut self, w: usize, pieces: &[Piece]) {
+        let walk = &self.cycles[w];
+        let gone: Vec<Pixel> = dropped(walk.len(), pieces)
+            .into_iter()
+            .map(|k| walk[k])
+            .collect();
+        let new = rebuild(walk, pieces);
+        for q in gone {
+            self.change(q, -1);
+        }
+        for piece in pieces {
+            if let Piece::New(px) = piece {
+                px.iter().for_each(|&q| self.change(q, 1));
+            }
+        }
+        self.turns[w] = Turns::of(&new);
+        self.visits[w] = None;
+        self.cycles[w] = new;
+    }
+
+    fn change(&mut self, q: Pixel, delta: i32) {
+        let Some(i) = self.region.index_of(q) else {
+            return;
+        };
+        let old = self.count[i];
+        let new = old
+            .checked_add_signed(delta)
+            .expect("a dropped visit was counted");
+        self.count[i] = new;
+        self.excess =
+            self.excess + u64::from(new.saturating_sub(4)) - u64::from(old.saturating_sub(4));
+        if !self.stuck[i] {
+            if old > 4 {
+                self.queue.remove(&(old, i));
+            }
+            if new > 4 {
+                self.queue.insert((new, i));
+            }
         }
     }
+
+    fn finish(self) -> (CycleCover, usize) {
+        let left = self.count.iter().filter(|&&c| c > 4).count();
+        (CycleCover::new(self.cycles), left)
+    }
 }
+
+#[cfg(test)]
+mod reference;
 
 #[cfg(test)]
 mod tests {
@@ -818,5 +1366,329 @@ mod tests {
         assert!(rep.valid && after.is_tour());
         assert_eq!(stuck, 0);
         assert!(rep.max_coverage <= 4 && rep.turns <= before.turns);
+    }
+
+    /// Tours to rewrite: the merged tours (both merges) of the cycle-cover algorithms on
+    /// generated regions of several families and styles, and the same tours with heavy
+    /// overlap added (the tour walked twice, and straight spikes out and back at random
+    /// visits), which reach the rarer moves.
+    fn sample_tours(seeds: u64) -> Vec<(Region, CycleCover)> {
+        use crate::algorithms::{self, Merge, Objective, Options};
+        use crate::generate::{Family, GenParams, Style, generate};
+        let mut out = Vec::new();
+        for seed in 1..=seeds {
+            let (family, style, n) = match seed % 6 {
+                0 => (Family::RandomSimple, Some(Style::Blob), 120),
+                1 => (Family::RandomHoled, None, 200),
+                2 => (Family::Thin, None, 80),
+                3 => (Family::Band, None, 150),
+                4 => (Family::Donut, None, 100),
+                _ => (
+                    Family::RandomSimple,
+                    Some(Style::ALL[(seed % 5) as usize]),
+                    60,
+                ),
+            };
+            let Ok(g) = generate(&GenParams {
+                n: Some(n),
+                style,
+                ..GenParams::new(family, seed)
+            }) else {
+                continue;
+            };
+            let region = g.region;
+            for name in ["strips-matching", "strips-double", "star-cover"] {
+                let algo = algorithms::find(name).unwrap();
+                if (algo.precondition)(&region).is_err() {
+                    continue;
+                }
+                for merge in [Merge::Naive, Merge::Smart] {
+                    let opts = Options {
+                        merge,
+                        ..Options::default()
+                    };
+                    let Ok(sol) = (algo.run)(&region, &opts) else {
+                        continue;
+                    };
+                    let Some(o) = sol.outputs.iter().find(|o| o.objective == Objective::Turns)
+                    else {
+                        continue;
+                    };
+                    let walk = o.cover.cycles[0].clone();
+                    out.push((region.clone(), o.cover.clone()));
+                    // Walked twice, with spikes: at every 7th visit (shifted by the seed), out
+                    // and back along a straight line of up to 3 pixels in the region.
+                    let mut heavy = walk.clone();
+                    for (k, &q) in walk.iter().enumerate() {
+                        heavy.push(q);
+                        if (k as u64 + seed).is_multiple_of(7) {
+                            let d = Dir::from_index((k + seed as usize) % 4);
+                            let mut line = vec![q];
+                            while line.len() < 4 && region.contains(line[line.len() - 1].step(d)) {
+                                line.push(line[line.len() - 1].step(d));
+                            }
+                            heavy.extend(
+                                line[1..].iter().chain(line[..line.len() - 1].iter().rev()),
+                            );
+                        }
+                    }
+                    out.push((region.clone(), CycleCover::tour(heavy)));
+                    // Random loops from the tour's first pixel, each closed by a shortest path.
+                    let mut loops = walk.clone();
+                    let hub = region.index_of(walk[0]).unwrap();
+                    let mut rng = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+                    for _ in 0..2 + seed % 5 {
+                        loops.push(walk[0]);
+                        let mut at = hub;
+                        for _ in 0..3 + seed % 9 {
+                            rng ^= rng << 13;
+                            rng ^= rng >> 7;
+                            rng ^= rng << 17;
+                            let nb: Vec<usize> = region.neighbors(at).collect();
+                            at = nb[(rng % nb.len() as u64) as usize];
+                            loops.push(region.pixel(at));
+                        }
+                        // Back to the hub, which the next loop (or the closing move) visits.
+                        let back = shortest_path(&region, at, hub);
+                        loops.extend(back.iter().map(|&q| region.pixel(q)));
+                        loops.pop();
+                    }
+                    out.push((region.clone(), CycleCover::tour(loops)));
+                }
+            }
+        }
+        out
+    }
+
+    /// A shortest path from `a` to `b` (region indices), `a` excluded.
+    fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
+        let mut prev = vec![usize::MAX; region.len()];
+        prev[a] = a;
+        let mut queue = std::collections::VecDeque::from([a]);
+        while let Some(u) = queue.pop_front() {
+            for v in region.neighbors(u) {
+                if prev[v] == usize::MAX {
+                    prev[v] = u;
+                    queue.push_back(v);
+                }
+            }
+        }
+        let mut out = vec![b];
+        while prev[*out.last().unwrap()] != a {
+            out.push(prev[*out.last().unwrap()]);
+        }
+        out.reverse();
+        if a == b { Vec::new() } else { out }
+    }
+
+    /// The incremental search returns exactly the walks of the former implementation, which
+    /// recounted everything after every move (kept as `reference`).
+    #[test]
+    fn same_walks_as_the_reference() {
+        let (mut tours, mut over) = (0, 0);
+        for (region, tour) in sample_tours(60) {
+            let before = check(&region, &tour, Mode::Milling);
+            assert!(before.valid, "{:?}", before.error);
+            let new = coverage4(&region, &tour);
+            let old = reference::coverage4(&region, &tour);
+            assert_eq!(new.1, old.1);
+            assert!(new.0.cycles == old.0.cycles, "walks differ");
+            tours += 1;
+            over += usize::from(before.max_coverage > 4);
+        }
+        assert!(tours >= 300 && over >= 100, "{tours} tours, {over} over 4");
+    }
+
+    /// The tours of `tests/coverage4.rs` that need the rarer moves (transplants, reversals,
+    /// slide chains): the same walks as the former implementation too.
+    #[test]
+    fn rare_moves_give_the_reference_walks() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("instances/regressions");
+        let donut = crate::instance::Instance::read(&dir.join("coverage4-donut-k9-L27.grid"))
+            .unwrap()
+            .region;
+        let tour = CycleCover::read(&dir.join("coverage4-donut-k9-L27.tour.json")).unwrap();
+        let mut cases = vec![(donut, tour)];
+        for text in [
+            r#"{"cycles":[[[-2,2],[-1,2],[0,2],[1,2],[2,2],[3,2],[4,2],[3,2],[2,2],[1,2],[0,2],[-1,2],[-1,3],[-1,4],[-1,5],[-1,6],[-1,7],[-1,6],[-1,5],[-1,4],[-1,3],[-1,2],[-1,1],[-1,0],[-1,-1],[0,-1],[1,-1],[1,0],[1,1],[1,2],[1,3],[1,4],[1,5],[1,6],[1,7],[0,7],[0,6],[0,5],[0,4],[0,3],[0,2],[0,1],[0,0],[0,-1],[1,-1],[2,-1],[2,0],[2,1],[2,2],[2,3],[2,4],[2,5],[2,6],[1,6],[0,6],[-1,6],[-2,6],[-2,5],[-2,4],[-1,4],[0,4],[1,4],[2,4],[3,4],[3,5],[2,5],[2,4],[2,3],[2,2],[2,1],[2,0],[3,0],[3,1],[3,2],[2,2],[1,2],[0,2],[-1,2]]]}"#,
+            r#"{"cycles":[[[2,-2],[2,-1],[2,0],[2,1],[3,1],[3,2],[3,3],[3,2],[4,2],[5,2],[5,1],[5,0],[4,0],[3,0],[2,0],[1,0],[0,0],[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[0,7],[0,8],[0,9],[0,8],[0,7],[0,6],[0,5],[0,4],[0,3],[0,2],[0,1],[0,0],[0,-1],[0,-2],[0,-1],[0,0],[-1,0],[-2,0],[-2,-1],[-2,0],[-2,1],[-1,1],[0,1],[1,1],[2,1],[3,1],[4,1],[5,1],[6,1],[5,1],[4,1],[4,0],[4,-1],[4,-2],[5,-2],[4,-2],[4,-1],[3,-1],[2,-1],[1,-1],[0,-1],[0,0],[0,1],[0,2],[0,3],[0,4],[0,5],[0,6],[0,7],[-1,7],[0,7],[0,6],[0,5],[0,4],[-1,4],[0,4],[1,4],[1,5],[1,4],[1,3],[1,2],[1,1],[1,0],[1,-1],[2,-1]]]}"#,
+        ] {
+            let tour = CycleCover::from_json(text, "tour").unwrap();
+            let region = Region::from_pixels(tour.cycles[0].clone()).unwrap();
+            cases.push((region, tour));
+        }
+        for (region, tour) in cases {
+            let new = coverage4(&region, &tour);
+            let old = reference::coverage4(&region, &tour);
+            assert_eq!(new.1, old.1);
+            assert!(new.0.cycles == old.0.cycles, "walks differ");
+        }
+    }
+
+    /// Every move on its own, at every over-covered pixel of every state the search passes
+    /// through, gives the walk the former implementation's move gives (or none where it
+    /// gives none), so that the rarer moves are compared too.
+    #[test]
+    fn each_move_gives_the_reference_walk() {
+        let mut found = [0usize; 6];
+        for (region, tour) in sample_tours(6) {
+            let mut search = Search::new(&region, &tour);
+            loop {
+                let over: Vec<usize> = search.queue.iter().rev().take(3).map(|e| e.1).collect();
+                for p in over {
+                    for w in 0..search.cycles.len() {
+                        let (walk, count, now) = (&search.cycles[w], &search.count, search.excess);
+                        let (turns, budget) =
+                            (search.turns[w].as_ref().unwrap(), search.budgets[w]);
+                        let mut index = None;
+                        let new = [
+                            excise_at(&region, walk, turns, count, p),
+                            pair_drop_at(&region, walk, turns, &mut index, count, now, p, budget),
+                            reroute_at(&region, walk, turns, count, p, budget),
+                            excise_and_graft(&region, walk, count, now, p, budget),
+                            reverse_then_reroute(&region, walk, count, p, budget),
+                            slide_chain(&region, walk, turns, &mut index, count, now, p, budget),
+                        ]
+                        .map(|m| m.map(|pieces| rebuild(walk, &pieces)));
+                        let old = [
+                            reference::excise_at(&region, walk, count, p),
+                            reference::pair_drop_at(&region, walk, count, p, budget),
+                            reference::reroute_at(&region, walk, count, p, budget),
+                            reference::excise_and_graft(&region, walk, count, p, budget),
+                            reference::reverse_then_reroute(&region, walk, count, p, budget),
+                            reference::slide_chain(&region, walk, count, p, budget),
+                        ];
+                        for k in 0..6 {
+                            assert!(new[k] == old[k], "move {k} differs");
+                            found[k] += usize::from(new[k].is_some());
+                        }
+                    }
+                }
+                if !search.step() {
+                    break;
+                }
+            }
+        }
+        eprintln!(
+            "moves found (excise, pair drop, reroute, transplant, reversal, slides): {found:?}"
+        );
+        assert!(found.iter().all(|&f| f > 0), "{found:?}");
+    }
+
+    /// After every move the coverage, the excess, the queue of pixels to treat and the turns
+    /// per position kept by the search equal a recount of the walks, and the checker finds
+    /// the walk valid with no more turns than the input.
+    #[test]
+    fn incremental_state_equals_a_recount() {
+        let mut moves = 0;
+        for (region, tour) in sample_tours(24) {
+            let before = check(&region, &tour, Mode::Milling);
+            let mut search = Search::new(&region, &tour);
+            while search.step() {
+                let cover = CycleCover::new(search.cycles.clone());
+                let rep = check(&region, &cover, Mode::Milling);
+                assert!(rep.valid, "{:?}", rep.error);
+                assert!(rep.turns <= before.turns);
+                assert_eq!(search.count, rep.coverage);
+                let excess: u64 = rep
+                    .coverage
+                    .iter()
+                    .map(|&c| u64::from(c.saturating_sub(4)))
+                    .sum();
+                assert_eq!(search.excess, excess);
+                let queue: std::collections::BTreeSet<(u32, usize)> = (0..region.len())
+                    .filter(|&i| rep.coverage[i] > 4 && !search.stuck[i])
+                    .map(|i| (rep.coverage[i], i))
+                    .collect();
+                assert_eq!(search.queue, queue);
+                for (walk, turns) in search.cycles.iter().zip(&search.turns) {
+                    let fresh = Turns::of(walk).expect("valid walk");
+                    let t = turns.as_ref().expect("valid walk");
+                    assert_eq!(
+                        (t.total, &t.prefix, &t.u_turns),
+                        (fresh.total, &fresh.prefix, &fresh.u_turns)
+                    );
+                    assert_eq!(t.total, walk_cost(walk).unwrap().1);
+                }
+                moves += 1;
+            }
+        }
+        assert!(moves >= 200, "only {moves} moves");
+    }
+
+    /// [`Turns::cost`] of pieces equals [`walk_cost`] of the rebuilt walk, and [`dropped`]
+    /// with the new pixels accounts for the change of coverage, on random cuts of a walk.
+    #[test]
+    fn piece_costs_equal_a_recount() {
+        let walk: Walk = [
+            (0, 0),
+            (1, 0),
+            (2, 0),
+            (2, 1),
+            (2, 2),
+            (1, 2),
+            (1, 1),
+            (0, 1),
+            (0, 2),
+            (0, 3),
+            (1, 3),
+            (1, 2),
+            (0, 2),
+            (0, 1),
+        ]
+        .iter()
+        .map(|&(x, y)| Pixel::new(x, y))
+        .collect();
+        let turns = Turns::of(&walk).unwrap();
+        let m = walk.len();
+        let mut seed = 7u64;
+        let mut next = |k: usize| {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 33) as usize % k
+        };
+        for _ in 0..2000 {
+            // Up to three runs over disjoint stretches, each forward or reversed, and new pixels.
+            let mut cuts: Vec<usize> = (0..3).map(|_| next(m)).collect();
+            cuts.sort_unstable();
+            let mut pieces = Vec::new();
+            for x in 0..cuts.len() {
+                let (a, b) = (
+                    cuts[x],
+                    if x + 1 < cuts.len() {
+                        cuts[x + 1]
+                    } else {
+                        cuts[0] + m
+                    },
+                );
+                let len = next(b - a + 1);
+                pieces.push(Piece::Run {
+                    start: a,
+                    len,
+                    rev: next(2) == 1,
+                });
+                if next(3) == 0 {
+                    pieces.push(Piece::New(vec![walk[next(m)]]));
+                }
+            }
+            let out = rebuild(&walk, &pieces);
+            let expect = walk_cost(&out).ok().map(|(_, t)| (out.len() as u64, t));
+            assert_eq!(turns.cost(&walk, &pieces), expect, "{pieces:?}");
+            let mut cov: std::collections::BTreeMap<Pixel, i64> = Default::default();
+            walk.iter().for_each(|&q| *cov.entry(q).or_default() += 1);
+            dropped(m, &pieces)
+                .iter()
+                .for_each(|&k| *cov.entry(walk[k]).or_default() -= 1);
+            for p in &pieces {
+                if let Piece::New(px) = p {
+                    px.iter().for_each(|&q| *cov.entry(q).or_default() += 1);
+                }
+            }
+            let mut after: std::collections::BTreeMap<Pixel, i64> = Default::default();
+            out.iter().for_each(|&q| *after.entry(q).or_default() += 1);
+            cov.retain(|_, c| *c != 0);
+            assert_eq!(cov, after);
+        }
     }
 }
