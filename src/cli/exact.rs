@@ -47,6 +47,10 @@ pub struct ExactArgs {
     /// cap; Theorem 5.6 of the turn-cost paper says a cap of 4 costs no turns).
     #[arg(long)]
     pub max_coverage: Option<u32>,
+    /// Do not start from the best tour (or cycle cover) of the registered approximation
+    /// algorithms.
+    #[arg(long)]
+    pub no_warm_start: bool,
 }
 
 /// `exact`'s default wall-clock limit: 5 minutes, long enough for every instance of the shipped
@@ -85,6 +89,7 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         verbose: a.verbose,
         warm_start: None,
         max_coverage: a.max_coverage,
+        start_from_approximations: !a.no_warm_start,
     };
     let result = exact::solve(&inst.region, objective, &opts);
     if let (Some(path), Some(cover)) = (&a.tour_out, &result.cover) {

@@ -450,6 +450,7 @@ impl OptCache {
                 verbose: false,
                 warm_start: None,
                 max_coverage: None,
+                start_from_approximations: true,
             },
         );
         let opt = (res.status == exact::Status::Optimal)
@@ -846,6 +847,7 @@ pub fn hunt(
                         verbose: false,
                         warm_start: None,
                         max_coverage: None,
+                        start_from_approximations: true,
                     },
                 );
                 f.optimal_walk = res.cover;

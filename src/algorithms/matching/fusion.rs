@@ -1,6 +1,7 @@
 //! Running fusion-blossom on a graph metric: serially, or on a recursive bisection of the
 //! graph (its partitioned solver, still exact).
 
+use super::blocks::{blocks_with_defects, join_block_matchings};
 use super::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, Once};
@@ -74,12 +75,14 @@ pub(super) fn renamed(
 }
 
 /// Solves a minimum-weight perfect matching of the vertices `defects` in the shortest-path
-/// metric of a graph with fusion-blossom: the matched vertex pairs and the sum of the dual
-/// variables. One thread; above `serial_limit` defects on a recursive bisection of the graph
-/// (fusion-blossom's partitioned solver, still exact).
+/// metric of a graph: the matched vertex pairs and a lower bound on every perfect matching's
+/// weight (the sum of the blocks' dual sums). The graph is split at its cut vertices into
+/// blocks solved one by one ([`super::blocks`], exact); a bridge is its own answer, and
+/// every other block goes to fusion-blossom, one thread, above `serial_limit` of the
+/// block's defects on a recursive bisection of it (the partitioned solver, still exact).
 ///
-/// `extent` gives every vertex's extent (only called above `serial_limit` defects): the
-/// extents of two vertices joined by an edge must meet.
+/// `extent` gives every vertex's extent (only called when a block has more than
+/// `serial_limit` defects): the extents of two vertices joined by an edge must meet.
 pub(super) fn solve_graph_matching(
     serial_limit: usize,
     vertices: usize,
@@ -90,6 +93,135 @@ pub(super) fn solve_graph_matching(
     if defects.is_empty() {
         return Some((Vec::new(), 0));
     }
+    let mut is_defect = vec![false; vertices];
+    for &v in defects {
+        is_defect[v] = true;
+    }
+    let blocks = blocks_with_defects(vertices, &edges, &is_defect)?;
+    if std::env::var_os("MOWMILL_MATCHING_LOG").is_some() {
+        let largest = blocks.iter().map(|b| b.defects.len()).max().unwrap_or(0);
+        eprintln!(
+            "blocks: {} with defects, the largest with {largest} of {} defects",
+            blocks.len(),
+            defects.len()
+        );
+    }
+    let mut extent = Some(extent);
+    let mut extents: Option<Vec<Extent>> = None;
+    let mut local = vec![usize::MAX; vertices];
+    let mut pairs = Vec::with_capacity(defects.len());
+    let mut dual = 0i64;
+    for block in &blocks {
+        if let [a, b] = block.vertices[..] {
+            // A bridge (or parallel edges): its one T-join is its lightest edge.
+            let w = block.edges.iter().map(|&e| edges[e].2).min()?;
+            pairs.push((a, b));
+            dual += w as i64;
+            continue;
+        }
+        for (k, &v) in block.vertices.iter().enumerate() {
+            local[v] = k;
+        }
+        let own: Vec<(usize, usize, isize)> = block
+            .edges
+            .iter()
+            .map(|&e| (local[edges[e].0], local[edges[e].1], edges[e].2))
+            .collect();
+        let own_defects: Vec<usize> = block.defects.iter().map(|&v| local[v]).collect();
+        let own_extent: Vec<Extent> = if own_defects.len() > serial_limit {
+            if extents.is_none() {
+                extents = Some((extent.take()?)(&edges));
+            }
+            let all = extents.as_ref()?;
+            block.vertices.iter().map(|&v| all[v]).collect()
+        } else {
+            Vec::new()
+        };
+        let partitioned = own_defects.len() > serial_limit;
+        let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            solve_block(
+                serial_limit,
+                block.vertices.len(),
+                own.clone(),
+                &own_defects,
+                own_extent,
+            )
+        }));
+        let (found, d) = match attempt {
+            Ok(Some(solved)) => solved,
+            // The partitioned solver failed on this block: serially, it is only slower.
+            _ if partitioned => {
+                if std::env::var_os("MOWMILL_MATCHING_LOG").is_some() {
+                    eprintln!(
+                        "fusion-blossom: partitioned solve of a block with {} defects failed ({}); serially",
+                        own_defects.len(),
+                        match &attempt {
+                            Err(_) => LAST_PANIC
+                                .lock()
+                                .ok()
+                                .and_then(|l| l.clone())
+                                .unwrap_or_default(),
+                            _ => "no perfect matching".to_string(),
+                        }
+                    );
+                }
+                solve_block(
+                    usize::MAX,
+                    block.vertices.len(),
+                    own,
+                    &own_defects,
+                    Vec::new(),
+                )?
+            }
+            _ => return None,
+        };
+        pairs.extend(
+            found
+                .into_iter()
+                .map(|(a, b)| (block.vertices[a], block.vertices[b])),
+        );
+        dual += d;
+    }
+    Some((join_block_matchings(vertices, &pairs, &is_defect)?, dual))
+}
+
+/// One block of [`solve_graph_matching`] by fusion-blossom (`extent` is used above
+/// `serial_limit` defects only).
+///
+/// The partitioned solver panicked on defects that are cut vertices' twins in the graph
+/// (vertices many edges meet), so there every defect v moves to a new pendant vertex v'
+/// joined to v at weight 2: every matching then costs 2 per defect more, and the dual sum
+/// is lowered by as much.
+fn solve_block(
+    serial_limit: usize,
+    vertices: usize,
+    mut edges: Vec<(usize, usize, isize)>,
+    defects: &[usize],
+    mut extent: Vec<Extent>,
+) -> Option<(Vec<(usize, usize)>, i64)> {
+    if defects.len() > serial_limit {
+        let first = vertices;
+        for (k, &v) in defects.iter().enumerate() {
+            edges.push((v, first + k, 2));
+            extent.push(extent[v]);
+        }
+        let pendants: Vec<usize> = (first..first + defects.len()).collect();
+        let (pairs, dual) = solve_fusion(serial_limit, extent.len(), edges, &pendants, extent)?;
+        let back = |v: usize| defects[v - first];
+        let pairs = pairs.into_iter().map(|(a, b)| (back(a), back(b))).collect();
+        return Some((pairs, dual - 2 * defects.len() as i64));
+    }
+    solve_fusion(serial_limit, vertices, edges, defects, extent)
+}
+
+/// fusion-blossom on one graph: serially up to `serial_limit` defects, else partitioned.
+fn solve_fusion(
+    serial_limit: usize,
+    vertices: usize,
+    edges: Vec<(usize, usize, isize)>,
+    defects: &[usize],
+    extent: Vec<Extent>,
+) -> Option<(Vec<(usize, usize)>, i64)> {
     let (perm, partitions, fusions) = if defects.len() <= serial_limit {
         (
             (0..vertices).collect::<Vec<usize>>(),
@@ -97,7 +229,7 @@ pub(super) fn solve_graph_matching(
             Vec::new(),
         )
     } else {
-        bisection(&extent(&edges))
+        bisection(&extent)
     };
     let mut position = vec![0usize; vertices];
     for (k, &v) in perm.iter().enumerate() {
