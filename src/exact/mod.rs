@@ -533,7 +533,10 @@ pub fn approximate_start(
     let options = crate::algorithms::Options::default();
     let mut best: Option<(u64, CycleCover)> = None;
     for algorithm in crate::algorithms::REGISTRY {
-        let milling = algorithm.objectives.iter().any(|o| o.mode() == Mode::Milling);
+        let milling = algorithm
+            .objectives
+            .iter()
+            .any(|o| o.mode() == Mode::Milling);
         if !milling || (algorithm.precondition)(region).is_err() {
             continue;
         }
