@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# README's speed table: every registered algorithm, end to end (`mowmill solve`: parse, run,
+# merge, the checker's recount), on generated regions of 10^4, 10^5 and 10^6 pixels, one run
+# each, one thread. Prints a markdown table: wall seconds and peak memory per size, or what
+# stopped the run ("> T s" past the timeout, "exit K" for a failure).
+#
+#   scripts/speed-table.sh [--sizes "10000 100000 1000000"] [--timeout 300]
+#
+# Instances (seed 1): rs = random-simple, rh = random-holed --holes 100 (--no-cut for
+# holes1325, which needs no local cut vertices), band = the diagonal band B_k with k = N/5,
+# thin = thin pockets, bd = boundary (every pixel a boundary pixel, --compactness 0.2),
+# lawn = lawn-scattered. tsp65 needs a region without holes; thin-euler (a thin region whose
+# pixels all have even degree) has no generator of large instances and is left out.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sizes="10000 100000 1000000"
+timeout=300
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --sizes) sizes="$2"; shift 2 ;;
+        --timeout) timeout="$2"; shift 2 ;;
+        *) echo "usage: $0 [--sizes \"N1 N2 ...\"] [--timeout SECONDS]" >&2; exit 2 ;;
+    esac
+done
+cargo build --release --quiet
+bin=target/release/mowmill
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+
+instance() { # kind n -> path (generated once)
+    local kind=$1 n=$2 f="$dir/$1-$2.grid"
+    if [ ! -f "$f" ]; then
+        case "$kind" in
+            rs) "$bin" gen random-simple --n "$n" --seed 1 --out "$f" ;;
+            rh) "$bin" gen random-holed --n "$n" --holes 100 --seed 1 --out "$f" ;;
+            rh-nocut) "$bin" gen random-holed --n "$n" --holes 100 --no-cut --seed 1 --out "$f" ;;
+            band) "$bin" gen band --k $((n / 5)) --out "$f" ;;
+            thin) "$bin" gen thin --n "$n" --seed 1 --out "$f" ;;
+            bd) "$bin" gen boundary --n "$n" --compactness 0.2 --seed 1 --out "$f" ;;
+            lawn) "$bin" gen lawn-scattered --n "$n" --seed 1 --out "$f" ;;
+        esac >/dev/null 2>&1
+    fi
+    echo "$f"
+}
+
+measure() { # algo kind n -> one cell
+    local f rc
+    # The boundary generator gives up on its shape above about 10^5 pixels (its two-row
+    # fallback would be timed instead).
+    if [ "$2" = bd ] && [ "$3" -gt 100000 ]; then echo "–"; return; fi
+    f=$(instance "$2" "$3")
+    rc=0
+    timeout "$timeout" /usr/bin/time -f "%e %M" -o "$dir/time" "$bin" solve --algo "$1" "$f" \
+        >/dev/null 2>"$dir/err" || rc=$?
+    if [ "$rc" = 124 ]; then
+        echo "> $timeout s"
+    elif [ "$rc" != 0 ] && [ "$rc" != 1 ]; then
+        echo "exit $rc"
+    else
+        awk '{ printf "%.2f s, %d MB", $1, $2 / 1024 }' "$dir/time"
+        # Exit 1: the run finished but the checker or a guarantee failed (a finding).
+        if [ "$rc" = 1 ]; then echo -n " (exit 1)"; fi
+    fi
+}
+
+header="| algorithm | instance |"
+rule="|---|---|"
+for n in $sizes; do header="$header N = $n |"; rule="$rule---|"; done
+echo "$header"
+echo "$rule"
+while read -r algo kinds; do
+    for kind in $kinds; do
+        row="| \`$algo\` | $kind |"
+        for n in $sizes; do row="$row $(measure "$algo" "$kind" "$n") |"; done
+        echo "$row"
+    done
+done <<'EOF'
+milling25 rs rh band
+tsp65 rs band
+holes1325 rh-nocut
+star-cover rs rh band
+strips-double rs rh band
+strips-matching rs rh band
+thin-cc thin
+thin-merge thin
+boundary-cc bd
+lawn-mst lawn rs
+lawn-christofides lawn rs
+lawn-2opt lawn rs
+lawn-box lawn rs
+EOF
