@@ -15,6 +15,10 @@ use crate::error::{Error, Result};
 use crate::region::{MAX_PIXELS, Pixel, Region};
 use std::path::Path;
 
+/// A `.grid` picture is written only up to this many bytes, or 64 per pixel if that is more:
+/// a sparse region (a long diagonal band) would otherwise ask for gigabytes.
+pub const MAX_PICTURE_BYTES: usize = 1 << 27;
+
 /// A parsed `.grid` file: its comment lines (the text after `;`, verbatim) and its region.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct GridFile {
@@ -156,7 +160,17 @@ impl GridFile {
                 b.min_x, b.min_y
             )));
         }
-        s.reserve((b.max_x as usize + 2) * (b.max_y as usize + 1));
+        let bytes = (b.max_x as usize + 2) * (b.max_y as usize + 1);
+        if bytes > MAX_PICTURE_BYTES.max(64 * self.region.len()) {
+            return Err(Error::invalid(format!(
+                "the .grid picture of this region would take {bytes} bytes for {} pixels (its \
+                 bounding box, {} x {}, is mostly empty): write a pixel list (.gg) or WKT instead",
+                self.region.len(),
+                b.max_x + 1,
+                b.max_y + 1
+            )));
+        }
+        s.reserve(bytes);
         for y in (0..=b.max_y).rev() {
             for x in 0..=b.max_x {
                 s.push(if self.region.contains(Pixel::new(x, y)) {

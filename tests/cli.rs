@@ -764,3 +764,26 @@ fn solve_weighted_with_exact() {
     assert_eq!(v["exact"]["value"], 206);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A sparse region (the diagonal band, 10^5 pixels in a 20,002² box) is not written as a
+/// mostly empty `.grid` picture of 400 MB: exit 2 with the way out; `.gg` and `.wkt` are
+/// written by extension and read back to the same region.
+#[test]
+fn gen_writes_sparse_regions_as_pixel_lists() {
+    let dir = temp_dir("sparse-gen");
+    let grid = dir.join("band.grid");
+    let out = mowmill(&["gen", "band", "--k", "20000", "--out", grid.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("mostly empty") && err.contains(".gg"), "{err}");
+    assert!(!grid.exists());
+    for ext in ["gg", "wkt"] {
+        let f = dir.join(format!("band.{ext}"));
+        let out = mowmill(&["gen", "band", "--k", "20000", "--out", f.to_str().unwrap()]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(std::fs::metadata(&f).unwrap().len() < 4_000_000, "a small file");
+        let info = json(&mowmill(&["info", f.to_str().unwrap(), "--json"]));
+        assert_eq!(info["n"], 100_004);
+        assert_eq!(info["holes"], 0);
+    }
+}

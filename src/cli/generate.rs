@@ -21,7 +21,8 @@ pub struct GenArgs {
     /// Seed of the portable ChaCha generator; required by the random families.
     #[arg(long)]
     pub seed: Option<u64>,
-    /// Output .grid file.
+    /// Output file: `.grid`, or by its extension a pixel list (`.gg`, `.csv`) or `.wkt`
+    /// (for sparse regions, whose `.grid` picture would be mostly empty).
     #[arg(long)]
     pub out: PathBuf,
 }
@@ -112,7 +113,17 @@ pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
         params.set(param, value)?;
     }
     let file = generate::generate(&params)?;
-    file.write(&a.out)?;
+    // The format follows the extension: a pixel list or WKT for sparse regions (a long band),
+    // whose .grid picture would be mostly empty; .grid otherwise.
+    let text = match a.out.extension().and_then(|e| e.to_str()) {
+        Some("gg" | "csv") => {
+            let meta: String = file.comments.iter().map(|c| format!("#{c}\n")).collect();
+            meta + &mowmill::pixel_list::to_pixel_list(&file.region)
+        }
+        Some("wkt") => mowmill::wkt::to_wkt(&file.region) + "\n",
+        _ => file.to_text()?,
+    };
+    std::fs::write(&a.out, text).map_err(|e| Error::io(&a.out, e))?;
     eprintln!(
         "wrote {}: {} pixels, {} holes",
         a.out.display(),
