@@ -350,7 +350,7 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
         t.is_multiple_of(2),
         "strip lines have two ends, so lone ends come in pairs"
     );
-    let dist: Vec<Vec<u32>> = ends.iter().map(|&a| bfs(region, a).0).collect();
+    let dist: Vec<Vec<u32>> = ends.iter().map(|&a| bfs(region, a)).collect();
     let at = |x: usize, y: usize| dist[x][ends[y]];
     // Maximum cardinality and weight `big − d` make the maximum-weight matching a perfect
     // matching of minimum total distance (every pair is reachable: the region is connected).
@@ -399,29 +399,40 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
     added
 }
 
-/// Breadth-first search from `a` in the grid graph: distances (u32::MAX where unreachable)
-/// and predecessors.
-fn bfs(region: &Region, a: usize) -> (Vec<u32>, Vec<usize>) {
+/// Breadth-first search from `a` in the grid graph: distances (u32::MAX where unreachable).
+fn bfs(region: &Region, a: usize) -> Vec<u32> {
     let mut dist = vec![u32::MAX; region.len()];
-    let mut prev = vec![usize::MAX; region.len()];
     dist[a] = 0;
-    prev[a] = a;
     let mut queue = std::collections::VecDeque::from([a]);
     while let Some(v) = queue.pop_front() {
         for w in region.neighbors(v) {
             if dist[w] == u32::MAX {
                 dist[w] = dist[v] + 1;
-                prev[w] = v;
                 queue.push_back(w);
             }
         }
     }
-    (dist, prev)
+    dist
 }
 
-/// A shortest path from `a` to `b` in the grid graph.
+/// A shortest path from `a` to `b` in the grid graph: the breadth-first search from `a`,
+/// stopped once it reaches `b` (the predecessors it has set are those of the whole search, so
+/// the path is the same).
 fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
-    let (_, prev) = bfs(region, a);
+    let mut prev = vec![usize::MAX; region.len()];
+    prev[a] = a;
+    let mut queue = std::collections::VecDeque::from([a]);
+    'search: while let Some(v) = queue.pop_front() {
+        for w in region.neighbors(v) {
+            if prev[w] == usize::MAX {
+                prev[w] = v;
+                if w == b {
+                    break 'search;
+                }
+                queue.push_back(w);
+            }
+        }
+    }
     let mut path = vec![b];
     while *path.last().expect("non-empty") != a {
         path.push(prev[*path.last().expect("non-empty")]);
