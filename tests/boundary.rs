@@ -162,7 +162,10 @@ fn ray_graph_matching_equals_the_complete_minimum_on_many_small_regions() {
         ones += o;
     }
     eprintln!("{count} regions, {ends} link ends, {ones} one-pixel links");
-    assert!(ends > 40 * count as usize && ones > 0, "the regions have link ends");
+    assert!(
+        ends > 40 * count as usize && ones > 0,
+        "the regions have link ends"
+    );
 }
 
 /// Hand-made: one-pixel links alone, several crossing one run (their ends need the clone and
