@@ -802,3 +802,46 @@ fn gen_writes_sparse_regions_as_pixel_lists() {
         assert_eq!(info["holes"], 0);
     }
 }
+
+/// `exact --start FILE` takes a tour file as its start (the optimum is unchanged), and a start
+/// file that is not a tour is refused with exit 2.
+#[test]
+fn exact_starts_from_a_given_tour() {
+    let dir = temp_dir("exact-start");
+    let tour = dir.join("tour.json");
+    let grid = fixture("two-holes.grid");
+    let first = json(&mowmill(&[
+        "exact",
+        &grid,
+        "--objective",
+        "turns",
+        "--json",
+        "--tour-out",
+        tour.to_str().unwrap(),
+    ]));
+    assert_eq!(first["status"], "optimal");
+    for objective in ["turns", "cc-turns"] {
+        let again = json(&mowmill(&[
+            "exact",
+            &grid,
+            "--objective",
+            objective,
+            "--json",
+            "--start",
+            tour.to_str().unwrap(),
+        ]));
+        assert_eq!(again["status"], "optimal");
+        assert!(again["value"].as_u64() <= first["value"].as_u64());
+    }
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, "{ not json").unwrap();
+    let out = mowmill(&[
+        "exact",
+        &grid,
+        "--objective",
+        "turns",
+        "--start",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}

@@ -5,6 +5,7 @@ use clap::Args;
 use mowmill::exact;
 use mowmill::instance::Instance;
 use mowmill::topology;
+use mowmill::tour::CycleCover;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -49,8 +50,12 @@ pub struct ExactArgs {
     pub max_coverage: Option<u32>,
     /// Do not start from the best tour (or cycle cover) of the registered approximation
     /// algorithms.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "start")]
     pub no_warm_start: bool,
+    /// Start from this tour file (a tour or cycle cover, as `--tour-out` writes); used when
+    /// the checker accepts it for the objective.
+    #[arg(long)]
+    pub start: Option<PathBuf>,
 }
 
 /// `exact`'s default wall-clock limit: 5 minutes, long enough for every instance of the shipped
@@ -87,7 +92,7 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         time_limit: (!a.no_time_limit).then_some(a.time_limit),
         threads: a.threads,
         verbose: a.verbose,
-        warm_start: None,
+        warm_start: a.start.as_deref().map(CycleCover::read).transpose()?,
         max_coverage: a.max_coverage,
         start_from_approximations: !a.no_warm_start,
     };
