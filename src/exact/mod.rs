@@ -370,7 +370,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
     let started;
     let opts = if opts.warm_start.is_none() && opts.start_from_approximations {
         started = ExactOptions {
-            warm_start: approximate_start(region, objective, opts.max_coverage),
+            warm_start: approximate_start(region, objective, opts.max_coverage, &deadline),
             ..opts.clone()
         };
         &started
@@ -509,16 +509,27 @@ fn not_connected(region: &Region) -> bool {
     topology::components(region).count > 1
 }
 
+/// Above this many pixels, [`approximate_start`] leaves out [`MATCHING_ALGORITHMS`].
+const START_MATCHING_LIMIT: usize = 20_000;
+
+/// The algorithms built on an endpoint matching.
+const MATCHING_ALGORITHMS: [&str; 4] = ["strips-matching", "thin-cc", "thin-merge", "boundary-cc"];
+
 /// The cheapest cover the registered milling approximation algorithms find for `objective`
 /// (each output recounted by the checker; a tour for the tour objectives; at most
 /// `max_coverage` visits per pixel when set), to start the exact solver from: the 2016 CPLEX
 /// study of minimum-turn covers fed its approximations as start solutions, and a good
 /// incumbent from the start lets reduced-cost fixing remove more of the model. `None` for
 /// `lawn-tsp` or when no algorithm gives one.
-pub fn approximate_start(
+///
+/// No algorithm starts once half of the solve's time is spent, and above
+/// [`START_MATCHING_LIMIT`] pixels the algorithms built on an endpoint matching (whose time
+/// grows fastest: minutes at 10^6 pixels) are left out.
+fn approximate_start(
     region: &Region,
     objective: Objective,
     max_coverage: Option<u32>,
+    deadline: &Deadline,
 ) -> Option<CycleCover> {
     if objective == Objective::LawnTsp || region.is_empty() {
         return None;
@@ -537,7 +548,10 @@ pub fn approximate_start(
             .objectives
             .iter()
             .any(|o| o.mode() == Mode::Milling);
-        if !milling || (algorithm.precondition)(region).is_err() {
+        let half_spent = deadline.remaining().is_some_and(|r| r < deadline.elapsed());
+        let slow =
+            region.len() > START_MATCHING_LIMIT && MATCHING_ALGORITHMS.contains(&algorithm.name);
+        if !milling || half_spent || slow || (algorithm.precondition)(region).is_err() {
             continue;
         }
         // An algorithm that fails or panics only gives no start.
