@@ -8,6 +8,26 @@
 
 use crate::flow::FlowGraph;
 use crate::topology::graph_components;
+use std::cell::Cell;
+use std::time::Instant;
+
+thread_local! {
+    /// The running solve's deadline on this thread (see [`stop_separation_at`]).
+    static STOP_AT: Cell<Option<Instant>> = const { Cell::new(None) };
+}
+
+/// Exact separation takes up to N maximum flows (quadratic and more: 37 s at 20,000
+/// pixels), so past `at` [`violated_cuts`] returns the cuts it has found so far. A partial
+/// separation only weakens the LP, never a bound: every cut it returns is valid.
+pub(crate) fn stop_separation_at(at: Option<Instant>) {
+    STOP_AT.with(|s| s.set(at));
+}
+
+fn separation_expired() -> bool {
+    STOP_AT
+        .with(|s| s.get())
+        .is_some_and(|t| Instant::now() >= t)
+}
 
 /// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
 /// weight is below `threshold`, for a graph on `n` nodes with weighted edges.
@@ -44,6 +64,9 @@ pub(crate) fn violated_cuts(
     let mut side = vec![false; n];
     let mut seen = std::collections::HashSet::new();
     for s in 1..n {
+        if s % 64 == 0 && separation_expired() {
+            break;
+        }
         let t = parent[s];
         let f = g.max_flow(s, t, f64::INFINITY, &mut side);
         // Gusfield: later nodes on s's side with the same parent now hang below s.

@@ -39,6 +39,7 @@ use super::lp::{Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology::graph_components;
+use petgraph::unionfind::UnionFind;
 
 const NONE: u32 = u32::MAX;
 
@@ -82,6 +83,8 @@ struct Move {
     rem: Vec<usize>,
     /// Passages gained, as (pixel, side, side).
     add: Vec<(usize, u8, u8)>,
+    /// The two side components it joins.
+    joins: (u32, u32),
 }
 
 pub(crate) struct PassageModel<'a> {
@@ -448,7 +451,14 @@ impl<'a> PassageModel<'a> {
     /// Merges the side components of integer counts into one, greedily by cheapest move:
     /// re-pairing two passages at a pixel both components cross, swapping two parallel edges
     /// of a unit square onto its other two sides, or a doubled edge between adjacent pixels.
+    ///
+    /// Each round lists every move once (O(N)) and applies them cheapest first (ties in
+    /// scan order), skipping a move that joins components already joined this round or
+    /// touches a pixel an applied move touched (its cost may have changed): the first move of
+    /// a round is the single cheapest, as in a one-move-per-round greedy, and a round joins
+    /// many components, so the rounds are few even with thousands of components.
     pub(crate) fn connect(&self, mut counts: Vec<u32>) -> Vec<u32> {
+        let mut touched = vec![false; self.region.len()];
         loop {
             let x: Vec<f64> = counts.iter().map(|&c| f64::from(c)).collect();
             let (label, count) = self.side_components(&x, 0.5);
@@ -456,12 +466,16 @@ impl<'a> PassageModel<'a> {
                 return counts;
             }
             let comp = |v: usize, d: u8| label[v * 4 + d as usize];
-            let mut best: Option<Move> = None;
-            let mut consider = |delta: i64, rem: Vec<usize>, add: Vec<(usize, u8, u8)>| {
-                if best.as_ref().is_none_or(|b| delta < b.delta) {
-                    best = Some(Move { delta, rem, add });
-                }
-            };
+            let mut moves: Vec<Move> = Vec::new();
+            let mut consider =
+                |delta: i64, rem: Vec<usize>, add: Vec<(usize, u8, u8)>, joins: (u32, u32)| {
+                    moves.push(Move {
+                        delta,
+                        rem,
+                        add,
+                        joins,
+                    });
+                };
             let cost_of = |v: usize, a: u8, b: u8| self.passage_cost(v, a, b);
             for v in 0..self.region.len() {
                 let here: Vec<usize> = (self.first[v]..self.first[v + 1])
@@ -477,7 +491,12 @@ impl<'a> PassageModel<'a> {
                         let old = self.cost(k1) as i64 + self.cost(k2) as i64;
                         for (s1, s2) in [((p.a, q.a), (p.b, q.b)), ((p.a, q.b), (p.b, q.a))] {
                             let delta = cost_of(v, s1.0, s1.1) + cost_of(v, s2.0, s2.1) - old;
-                            consider(delta, vec![k1, k2], vec![(v, s1.0, s1.1), (v, s2.0, s2.1)]);
+                            consider(
+                                delta,
+                                vec![k1, k2],
+                                vec![(v, s1.0, s1.1), (v, s2.0, s2.1)],
+                                (comp(v, p.a), comp(v, q.a)),
+                            );
                         }
                     }
                 }
@@ -505,6 +524,7 @@ impl<'a> PassageModel<'a> {
                                 delta,
                                 vec![k, j],
                                 vec![(v, p.a, s), (v, s, p.b), (w, q.a, t), (w, t, q.b)],
+                                (comp(v, p.a), comp(w, q.a)),
                             );
                         }
                     }
@@ -559,19 +579,37 @@ impl<'a> PassageModel<'a> {
                     let rem = vec![k1, k2, k3, k4];
                     let delta: i64 = add.iter().map(|&(v, a, b)| cost_of(v, a, b)).sum::<i64>()
                         - rem.iter().map(|&k| self.cost(k) as i64).sum::<i64>();
-                    consider(delta, rem, add);
+                    consider(delta, rem, add, (comp(v1, d), comp(w1, d)));
                 }
             }
-            let Some(Move { rem, add, .. }) = best else {
+            if moves.is_empty() {
                 return counts;
-            };
-            for k in rem {
-                counts[k] -= 1;
             }
-            for (v, a, b) in add {
-                if !self.add_passage(&mut counts, v, a, b) {
-                    return counts;
+            moves.sort_by_key(|m| m.delta);
+            let mut joined = UnionFind::<u32>::new(count);
+            let mut applied: Vec<usize> = Vec::new();
+            for m in moves {
+                let pixels = m.rem.iter().map(|&k| self.vars[k].pixel);
+                let pixels: Vec<usize> = pixels.chain(m.add.iter().map(|a| a.0)).collect();
+                if joined.equiv(m.joins.0, m.joins.1) || pixels.iter().any(|&v| touched[v]) {
+                    continue;
                 }
+                for &k in &m.rem {
+                    counts[k] -= 1;
+                }
+                for &(v, a, b) in &m.add {
+                    if !self.add_passage(&mut counts, v, a, b) {
+                        return counts;
+                    }
+                }
+                joined.union(m.joins.0, m.joins.1);
+                for v in pixels {
+                    touched[v] = true;
+                    applied.push(v);
+                }
+            }
+            for v in applied {
+                touched[v] = false;
             }
         }
     }
