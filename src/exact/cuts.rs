@@ -3,31 +3,13 @@
 //! Integer and fractional solutions are treated alike: first the connected components of the
 //! support (a disconnected support violates the cut of each component by 2), then, on a
 //! connected support, all minimum cuts of a Gomory–Hu tree by Gusfield's algorithm (n − 1
-//! maximum flows, Dinic's algorithm in [`crate::flow`]), keeping every tree cut lighter than 2. The graphs here
-//! have at most a few thousand nodes, so exact separation is cheap next to an LP re-solve.
+//! maximum flows, Dinic's algorithm in [`crate::flow`]), keeping every tree cut lighter than 2. On a
+//! few thousand nodes exact separation is cheap next to an LP re-solve; on larger graphs it
+//! stops at the solve's deadline with the cuts found so far.
 
+use super::lp::Deadline;
 use crate::flow::FlowGraph;
 use crate::topology::graph_components;
-use std::cell::Cell;
-use std::time::Instant;
-
-thread_local! {
-    /// The running solve's deadline on this thread (see [`stop_separation_at`]).
-    static STOP_AT: Cell<Option<Instant>> = const { Cell::new(None) };
-}
-
-/// Exact separation takes up to N maximum flows (quadratic and more: 37 s at 20,000
-/// pixels), so past `at` [`violated_cuts`] returns the cuts it has found so far. A partial
-/// separation only weakens the LP, never a bound: every cut it returns is valid.
-pub(crate) fn stop_separation_at(at: Option<Instant>) {
-    STOP_AT.with(|s| s.set(at));
-}
-
-fn separation_expired() -> bool {
-    STOP_AT
-        .with(|s| s.get())
-        .is_some_and(|t| Instant::now() >= t)
-}
 
 /// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
 /// weight is below `threshold`, for a graph on `n` nodes with weighted edges.
@@ -39,6 +21,7 @@ pub(crate) fn violated_cuts(
     n: usize,
     edges: &[(usize, usize, f64)],
     threshold: f64,
+    deadline: &Deadline,
 ) -> Vec<Vec<bool>> {
     if n < 2 {
         return Vec::new();
@@ -64,7 +47,9 @@ pub(crate) fn violated_cuts(
     let mut side = vec![false; n];
     let mut seen = std::collections::HashSet::new();
     for s in 1..n {
-        if s % 64 == 0 && separation_expired() {
+        // Up to N maximum flows (37 s at 20,000 pixels): past the deadline the cuts found so
+        // far are returned. A partial separation only weakens the LP; every cut is valid.
+        if s % 64 == 0 && deadline.expired() {
             break;
         }
         let t = parent[s];
@@ -107,7 +92,7 @@ mod tests {
     #[test]
     fn components_give_zero_cuts() {
         let edges = [(0, 1, 1.0), (1, 2, 1.0), (2, 0, 1.0), (3, 4, 2.0)];
-        let cuts = violated_cuts(5, &edges, 2.0 - 1e-6);
+        let cuts = violated_cuts(5, &edges, 2.0 - 1e-6, &Deadline::new(None));
         assert_eq!(cuts, vec![vec![false, false, false, true, true]]);
     }
 
@@ -124,7 +109,7 @@ mod tests {
             (0, 3, 0.5),
             (2, 5, 0.5),
         ];
-        let cuts = violated_cuts(6, &edges, 2.0 - 1e-6);
+        let cuts = violated_cuts(6, &edges, 2.0 - 1e-6, &Deadline::new(None));
         assert!(!cuts.is_empty());
         for c in &cuts {
             assert!(cut_weight(&edges, c) < 2.0 - 1e-6);
@@ -133,6 +118,6 @@ mod tests {
         assert!(cuts.contains(&vec![false, false, false, true, true, true]));
         // A 2-edge-connected graph with all cuts >= 2 yields nothing.
         let ring: Vec<(usize, usize, f64)> = (0..6).map(|i| (i, (i + 1) % 6, 1.0)).collect();
-        assert!(violated_cuts(6, &ring, 2.0 - 1e-6).is_empty());
+        assert!(violated_cuts(6, &ring, 2.0 - 1e-6, &Deadline::new(None)).is_empty());
     }
 }

@@ -30,7 +30,8 @@ use std::collections::HashSet;
 pub(crate) trait CutModel {
     fn formulation(&self) -> &Formulation;
     /// Cuts violated by `x` (fractional or integral), as rows of the formulation.
-    fn separate(&self, x: &[f64], integral: bool) -> Vec<Row>;
+    /// Cuts violated by `x`; past `deadline` a separation may stop early with the cuts found.
+    fn separate(&self, x: &[f64], integral: bool, deadline: &Deadline) -> Vec<Row>;
     /// Whether an integral `x` satisfying the formulation is feasible for the problem.
     fn is_feasible(&self, x: &[f64]) -> bool;
     /// A feasible solution built from an integer solution of a relaxation, if the model can.
@@ -192,7 +193,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 self.s.lp_bound = Some(self.s.lp_bound.map_or(b, |old| old.max(b)));
                 self.raise(b, "lp relaxation with cuts");
             }
-            let cuts = self.model.separate(&sol.x, false);
+            let cuts = self.model.separate(&sol.x, false, self.deadline);
             let objective = sol.objective;
             self.last_lp = Some(sol);
             let fresh = self.add_cuts(cuts);
@@ -267,7 +268,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
             if self.accepts(&xi) {
                 self.offer(xi, "heuristic mip");
             } else {
-                let cuts = self.model.separate(&xi, true);
+                let cuts = self.model.separate(&xi, true, self.deadline);
                 if let Some(r) = self.model.repair(&xi) {
                     self.offer(r, "heuristic mip, repaired");
                 }
@@ -380,7 +381,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 };
                 return self.finish(stop);
             }
-            let cuts = self.model.separate(&xi, true);
+            let cuts = self.model.separate(&xi, true, self.deadline);
             self.log(|| {
                 format!(
                     "MIP round {}: value {:.1}, {} violated cuts",

@@ -11,7 +11,7 @@
 
 use super::cuts::violated_cuts;
 use super::driver::CutModel;
-use super::lp::{Formulation, Row};
+use super::lp::{Deadline, Formulation, Row};
 use crate::region::{Pixel, Region};
 use crate::topology::graph_components;
 
@@ -271,7 +271,7 @@ impl CutModel for LawnModel<'_> {
         &self.formulation
     }
 
-    fn separate(&self, x: &[f64], _integral: bool) -> Vec<Row> {
+    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
         let n = self.n();
         let weighted: Vec<(usize, usize, f64)> = self
             .pairs
@@ -280,7 +280,7 @@ impl CutModel for LawnModel<'_> {
             .filter(|&(k, _)| x[k] > 1e-9)
             .map(|(k, &(i, j))| (i as usize, j as usize, x[k]))
             .collect();
-        violated_cuts(n, &weighted, 2.0 - 1e-6)
+        violated_cuts(n, &weighted, 2.0 - 1e-6, deadline)
             .into_iter()
             .map(|s| {
                 let inside = s.iter().filter(|&&b| b).count();

@@ -10,7 +10,7 @@
 
 use super::cuts::violated_cuts;
 use super::driver::CutModel;
-use super::lp::{Formulation, Row};
+use super::lp::{Deadline, Formulation, Row};
 use super::walks::euler_walk;
 use crate::region::{Pixel, Region};
 use crate::topology::graph_components;
@@ -192,14 +192,14 @@ impl CutModel for MillingModel<'_> {
         &self.formulation
     }
 
-    fn separate(&self, x: &[f64], _integral: bool) -> Vec<Row> {
+    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
         let weighted: Vec<(usize, usize, f64)> = self
             .edges
             .iter()
             .enumerate()
             .map(|(k, &(a, b))| (a, b, x[k]))
             .collect();
-        violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6)
+        violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6, deadline)
             .into_iter()
             .map(|s| {
                 let terms = (0..self.num_edges())

@@ -367,9 +367,6 @@ impl Answer {
 /// ```
 pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> ExactResult {
     let deadline = Deadline::new(opts.time_limit);
-    cuts::stop_separation_at(opts.time_limit.and_then(|l| {
-        std::time::Instant::now().checked_add(std::time::Duration::try_from_secs_f64(l).ok()?)
-    }));
     let started;
     let opts = if opts.warm_start.is_none() && opts.start_from_approximations {
         started = ExactOptions {

@@ -35,7 +35,7 @@
 
 use super::cuts::violated_cuts;
 use super::driver::CutModel;
-use super::lp::{Formulation, Row};
+use super::lp::{Deadline, Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology::graph_components;
@@ -620,7 +620,7 @@ impl CutModel for PassageModel<'_> {
         &self.formulation
     }
 
-    fn separate(&self, x: &[f64], _integral: bool) -> Vec<Row> {
+    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
         if !self.needs_connectivity() {
             return Vec::new();
         }
@@ -629,7 +629,7 @@ impl CutModel for PassageModel<'_> {
             .iter()
             .map(|&(v, d, w)| (v, w, self.side_usage(x, v, d)))
             .collect();
-        let cuts = violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6);
+        let cuts = violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6, deadline);
         if !cuts.is_empty() {
             return cuts
                 .into_iter()

@@ -138,11 +138,13 @@ pub(super) fn solve_graph_matching(
             Vec::new()
         };
         let partitioned = own_defects.len() > serial_limit;
+        // The edges are kept for a serial retry only where the partitioned solver may fail.
+        let retry = partitioned.then(|| own.clone());
         let attempt = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             solve_block(
                 serial_limit,
                 block.vertices.len(),
-                own.clone(),
+                own,
                 &own_defects,
                 own_extent,
             )
@@ -150,7 +152,7 @@ pub(super) fn solve_graph_matching(
         let (found, d) = match attempt {
             Ok(Some(solved)) => solved,
             // The partitioned solver failed on this block: serially, it is only slower.
-            _ if partitioned => {
+            _ if retry.is_some() => {
                 if std::env::var_os("MOWMILL_MATCHING_LOG").is_some() {
                     eprintln!(
                         "fusion-blossom: partitioned solve of a block with {} defects failed ({}); serially",
@@ -168,7 +170,7 @@ pub(super) fn solve_graph_matching(
                 solve_block(
                     usize::MAX,
                     block.vertices.len(),
-                    own,
+                    retry?,
                     &own_defects,
                     Vec::new(),
                 )?
@@ -188,8 +190,8 @@ pub(super) fn solve_graph_matching(
 /// One block of [`solve_graph_matching`] by fusion-blossom (`extent` is used above
 /// `serial_limit` defects only).
 ///
-/// The partitioned solver panicked on defects that are cut vertices' twins in the graph
-/// (vertices many edges meet), so there every defect v moves to a new pendant vertex v'
+/// The partitioned solver panicked on defects at vertices that many edges meet (a run crossed
+/// by many runs), so there every defect v moves to a new pendant vertex v'
 /// joined to v at weight 2: every matching then costs 2 per defect more, and the dual sum
 /// is lowered by as much.
 fn solve_block(
