@@ -497,16 +497,16 @@ impl<'a> Walks<'a> {
         }
     }
 
-    /// Candidate node pairs (x, z) of different initial cycles, each class in pixel order:
-    /// orthogonal crossings (one walk straight through the pixel horizontally, the other
-    /// vertically), other pairs at one pixel, pairs at adjacent pixels.
-    fn candidate_pairs(&self) -> [Vec<(u32, u32)>; 3] {
-        let n = self.region.len();
-        let visits = |p: usize| self.visits(p);
-        let (mut crossing, mut same, mut adjacent) = (Vec::new(), Vec::new(), Vec::new());
-        for p in 0..n {
-            for &x in visits(p) {
-                for &z in visits(p) {
+    /// Candidate node pairs (x, z) of different initial cycles at one pixel, each class in
+    /// pixel order: orthogonal crossings (one walk straight through the pixel horizontally,
+    /// the other vertically), and the other pairs at one pixel. The third class, pairs at
+    /// adjacent pixels, is the largest by far (17 million at 10^6 pixels) and is walked by
+    /// [`for_each_candidate`](Self::for_each_candidate) instead of being stored.
+    fn shared_pixel_pairs(&self) -> [Vec<(u32, u32)>; 2] {
+        let (mut crossing, mut same) = (Vec::new(), Vec::new());
+        for p in 0..self.region.len() {
+            for &x in self.visits(p) {
+                for &z in self.visits(p) {
                     if x < z && self.cycle[x as usize] != self.cycle[z as usize] {
                         let axes = (self.straight_axis(x), self.straight_axis(z));
                         if matches!(axes, (Some(a), Some(b)) if a != b) {
@@ -516,16 +516,43 @@ impl<'a> Walks<'a> {
                         }
                     }
                 }
-                for q in self.region.neighbors(p) {
-                    for &z in visits(q) {
-                        if x < z && self.cycle[x as usize] != self.cycle[z as usize] {
-                            adjacent.push((x, z));
+            }
+        }
+        [crossing, same]
+    }
+
+    /// Calls `f` on every candidate pair of nodes of different merged cycles, class by class
+    /// (crossings, other pairs at one pixel, pairs at adjacent pixels), each in pixel order.
+    /// The adjacent pairs are those of input nodes of different initial cycles: an input
+    /// node's pixel and initial cycle never change, so walking them now gives the same pairs
+    /// in the same order as listing them up front.
+    fn for_each_candidate(
+        &mut self,
+        shared: &[Vec<(u32, u32)>; 2],
+        mut f: impl FnMut(&mut Self, u32, u32),
+    ) {
+        for &(x, z) in shared.iter().flatten() {
+            if self.root_of(x) != self.root_of(z) {
+                f(self, x, z);
+            }
+        }
+        let region = self.region;
+        for p in 0..region.len() {
+            for k in self.visit_start[p]..self.visit_start[p + 1] {
+                let x = self.visit_nodes[k as usize];
+                for q in region.neighbors(p) {
+                    for l in self.visit_start[q]..self.visit_start[q + 1] {
+                        let z = self.visit_nodes[l as usize];
+                        if x < z
+                            && self.cycle[x as usize] != self.cycle[z as usize]
+                            && self.root_of(x) != self.root_of(z)
+                        {
+                            f(self, x, z);
                         }
                     }
                 }
             }
         }
-        [crossing, same, adjacent]
     }
 
     fn into_cover(self) -> CycleCover {
@@ -569,16 +596,14 @@ pub fn merge_cycles(
         return (cover.clone(), MergeStats::default());
     }
     let mut w = Walks::new(region, cover);
-    let classes = w.candidate_pairs();
+    let shared = w.shared_pixel_pairs();
     match strategy {
         Merge::Naive => {
-            for &(x, z) in classes.iter().flatten() {
-                if w.root_of(x) != w.root_of(z)
-                    && let Some((d, op)) = w.best_op(x, z)
-                {
+            w.for_each_candidate(&shared, |w, x, z| {
+                if let Some((d, op)) = w.best_op(x, z) {
                     w.apply(op, d);
                 }
-            }
+            });
         }
         Merge::Smart => {
             // Costs are small integers: a bucket queue, lowest cost first, with lazily
@@ -587,24 +612,19 @@ pub fn merge_cycles(
             let mut buckets: Vec<Vec<(u32, u32)>> = vec![Vec::new(); 64];
             let slot = |d: i32| (d - LOW).clamp(0, 63) as usize;
             // Free merges first, in one pass in pixel order; then the remaining pairs by cost.
-            for &(x, z) in classes.iter().flatten() {
-                if w.root_of(x) != w.root_of(z)
-                    && let Some((d, op)) = w.best_op(x, z)
+            w.for_each_candidate(&shared, |w, x, z| {
+                if let Some((d, op)) = w.best_op(x, z)
                     && d <= 0
                     && !w.exceeds_four(op)
                 {
                     w.apply(op, d);
                 }
-            }
+            });
             let mut blocked: Vec<(u32, u32)> = Vec::new();
-            for &(x, z) in classes.iter().flatten() {
-                if w.root_of(x) != w.root_of(z) {
-                    match w.best_op(x, z) {
-                        Some((d, _)) => buckets[slot(d)].push((x, z)),
-                        None => blocked.push((x, z)),
-                    }
-                }
-            }
+            w.for_each_candidate(&shared, |w, x, z| match w.best_op(x, z) {
+                Some((d, _)) => buckets[slot(d)].push((x, z)),
+                None => blocked.push((x, z)),
+            });
             // Within a bucket (one cost), pairs whose merge would bring a pixel above 4
             // visits wait until the bucket's other pairs are done: same turns, less coverage.
             // A pair with no allowed operation yet (only detours, at an unsettled pixel) is
