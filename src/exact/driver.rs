@@ -20,6 +20,10 @@
 //!    bound, are proven bounds.
 //!
 //! The loop stops as soon as the incumbent meets the best bound; nothing else is optimal.
+//!
+//! "Even" above is the grid's case: a model whose integer values are only known to be
+//! integers (discrete milling on general graphs) says so through [`CutModel::step`], and the
+//! rounding, the target `U − step` and the MIP's proof gap follow it.
 
 use super::lp::{
     Deadline, Formulation, IncrementalLp, LpSolution, Outcome, Row, Settings, ceil_bound, solve_mip,
@@ -42,6 +46,13 @@ pub(crate) trait CutModel {
     /// solutions only become incumbents).
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         None
+    }
+    /// The spacing of the objective's values on integer solutions: every integer solution's
+    /// value is a multiple of `step` (2 on the grid, where closed walks have even length and an
+    /// even number of quarter turns; 1 where nothing is known). Bounds are rounded up to a
+    /// multiple of it, and a MIP gap below it is a proof.
+    fn step(&self) -> u64 {
+        2
     }
 }
 
@@ -66,9 +77,11 @@ pub(crate) struct Solved {
     pub rounds: u32,
 }
 
-/// Rounds a proven real bound up to the next even integer.
-pub(crate) fn even_bound(b: f64) -> Option<u64> {
-    ceil_bound(b).map(|v| v + v % 2)
+/// Rounds a proven real bound up to the next multiple of `step` (the spacing of the
+/// objective's values on integer solutions, [`CutModel::step`]).
+pub(crate) fn step_bound(b: f64, step: u64) -> Option<u64> {
+    let step = step.max(1);
+    ceil_bound(b).map(|v| v.div_ceil(step) * step)
 }
 
 struct Loop<'m, M: CutModel> {
@@ -189,7 +202,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 Outcome::Infeasible => return Err(Stop::Infeasible),
                 Outcome::Failed(m) => return Err(Stop::Error(m.clone())),
             }
-            if let Some(b) = even_bound(sol.objective) {
+            if let Some(b) = step_bound(sol.objective, self.model.step()) {
                 self.s.lp_bound = Some(self.s.lp_bound.map_or(b, |old| old.max(b)));
                 self.raise(b, "lp relaxation with cuts");
             }
@@ -228,7 +241,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
         let Some(u) = self.s.upper else {
             return self.f().clone();
         };
-        let target = u.saturating_sub(2);
+        let target = u.saturating_sub(self.model.step());
         let mut g = self.f().clone();
         self.model.tighten(&mut g, target);
         match &self.last_lp {
@@ -260,7 +273,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
             start.as_deref(),
             &cap,
             self.settings,
-            Some(5.99),
+            Some(3.0 * self.model.step() as f64 - 0.01),
         );
         self.s.rounds += 1;
         if let Some(x) = &mip.x {
@@ -326,7 +339,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 self.s.best.as_deref(),
                 self.deadline,
                 self.settings,
-                None,
+                Some(self.model.step() as f64 - 0.01),
             );
             self.s.rounds += 1;
             match &mip.outcome {
@@ -342,7 +355,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
                     };
                 }
                 Outcome::TimeLimit => {
-                    if let Some(b) = even_bound(mip.dual_bound) {
+                    if let Some(b) = step_bound(mip.dual_bound, self.model.step()) {
                         self.raise(b, "mip dual bound");
                     }
                     if let Some(x) = &mip.x {
@@ -368,7 +381,11 @@ impl<'m, M: CutModel> Loop<'m, M> {
                 ));
             };
             // Optimal within an absolute gap below 2 on an even objective: the optimum of R.
-            if let Some(b) = even_bound(mip.dual_bound.max(mip.objective - 1.99)) {
+            let step = self.model.step() as f64;
+            if let Some(b) = step_bound(
+                mip.dual_bound.max(mip.objective - (step - 0.01)),
+                self.model.step(),
+            ) {
                 self.raise(b, "mip");
             }
             let xi = self.round_integers(x);

@@ -69,13 +69,13 @@
 //! as for every objective, only when the checker's recount of the returned cover equals the
 //! proven bound.
 
-mod cuts;
-mod driver;
+pub(crate) mod cuts;
+pub(crate) mod driver;
 mod lawn;
-mod lp;
+pub(crate) mod lp;
 mod milling;
 mod turns;
-mod walks;
+pub(crate) mod walks;
 
 use crate::bounds::{self, Bound};
 use crate::checker::{self, Mode};

@@ -1,0 +1,1593 @@
+//! Exact baselines for discrete milling (issue 17): proven optima of `cc-turns`, `turns`
+//! (tour), `length`, `weighted` and `weighted-cc` on a [`Discrete`] instance, and the
+//! maximum rook placement of Lemma 4.3 of *Optimal covering tours with turn costs*.
+//!
+//! The models are the grid models of [`crate::exact`] with a pixel's four sides replaced by a
+//! vertex's *ports* (its incident edges), and they run in the same cut loop
+//! (`crate::exact::driver`), with the same LP/MIP layer.
+//!
+//! # Formulations
+//!
+//! * **Passage model** (`cc-turns`, `turns`, `weighted`, `weighted-cc`): for every vertex `v`
+//!   and unordered pair `{a, b}` of its ports (`a = b` a U-turn) an integer `p_{v,ab} >= 0`,
+//!   the number of times a walk passes through `v` between the edges `va` and `vb`, of turn
+//!   cost [`Discrete::turn`] (0 through a collinear pair, 1 otherwise, 2 for a U-turn).
+//!   Coverage: `Σ_ab p_{v,ab} >= 1` at every vertex with a neighbour. Consistency: on every
+//!   edge `{v, w}` the passage ends at port `w` of `v` equal those at port `v` of `w` (a
+//!   U-turn counts twice): the edge's multiplicity. An isolated vertex is a one-vertex walk
+//!   (length 0, 4 turns: the checker's convention) outside the model.
+//!   `cc-turns` minimizes `Σ turn · p`; `weighted-cc` minimizes `Σ (1 + C turn) p` plus a
+//!   binary column of cost 4C per vertex with a neighbour, the one-vertex walk; `turns` and
+//!   `weighted` minimize the same as their cover versions with connectivity cuts (below).
+//! * **Length** (`length`): edge multiplicities `x_e ∈ {0, 1, 2}`, `z_v >= 1` with
+//!   `Σ_{e ∋ v} x_e = 2 z_v` and `x(δ(S)) >= 2` for every proper vertex set `S`; minimize
+//!   `Σ x_e`. An optimal closed walk never uses an edge three times (removing two copies keeps
+//!   every degree even and the multigraph connected), and a connected even multigraph on all
+//!   vertices is walked by an Euler tour: the model's optimum is the shortest closed walk
+//!   visiting every vertex.
+//!
+//! # Why the passage model is exact
+//!
+//! A closed walk of two or more vertices gives one passage per visit, with the turn of that
+//! visit, and its passages balance on every edge; a one-vertex walk at a vertex with a
+//! neighbour `w` costs what the walk `v, w` costs in turns (two U-turns, 4) and is the stay
+//! column of `weighted-cc`. Conversely, balanced passages decompose into closed walks by
+//! pairing, on every edge, the passage ends at its two ports (any pairing): each passage is
+//! one visit with its turn, so length and turns are kept.
+//!
+//! **Tours.** Split every vertex into its ports: a passage joins two ports of its vertex, a
+//! used edge joins its two ports. Two closed walks through one port both traverse that
+//! port's edge and are spliced there into one with the same passages
+//! (`crate::exact::walks::splice_walks`), so the walks of a solution whose used ports form
+//! one connected graph are one tour. A tour's port graph is connected and, as a closed walk,
+//! crosses every port set `S` an even number of times; if `S` holds every port of some vertex
+//! and none of another, the tour (visiting both) has ports on both sides and crosses `S`
+//! at least twice: `Σ_{edges across S} x_e + Σ_{passages across S} p >= 2`. These cuts are
+//! separated exactly for `S` a union of whole vertices (minimum cuts), and from the
+//! components of the used port graph otherwise. An integer solution whose port components
+//! include one that touches every vertex is repaired by dropping the others (their cost is
+//! not negative).
+//!
+//! **U-turn reduction** (`cc-turns` and `turns` only, where length is free). A U-turn at `v`
+//! back onto the edge from `u`, when `u, v` continue straight onto `w = straight_on(u, v)`,
+//! can be replaced by `u → v → w → v → u`: two straight passes through `v` (0 turns each;
+//! collinearity is symmetric) and a U-turn at `w` back onto `wv` (2 turns). Turns are kept,
+//! every vertex visited stays visited, and the walks stay one walk where they were one.
+//! Repeating the move walks along the channel of the edge `uv`; since the collinear pairs
+//! form a matching, that channel is either a path, whose far end is reached (no straight
+//! continuation there), or a cycle, on which the move never ends. So a U-turn column exists
+//! only where the channel does not continue straight, or where the channel is cyclic. With
+//! length counted (`weighted`, `weighted-cc`) every U-turn is kept.
+//!
+//! # Bounds
+//!
+//! On a general graph neither length nor turns have a known parity (a triangle without
+//! collinear pairs is a closed walk of length 3 and 3 turns), so real bounds are rounded up to
+//! the next integer (the cut loop's `step` 1), except `length` on a bipartite graph, where
+//! every closed walk has even length (step 2). The reduced-cost fixing of the cut loop, the
+//! cheap bounds and the budget bounds of `tighten` are argued at their definitions. The cheap
+//! bound of the turn objectives is a greedy [`rook_placement`]; of `length` the number of
+//! vertices (for two or more).
+//!
+//! The returned walks always go through [`check::check`]; the reported value is the
+//! checker's recount, and the status is `optimal` only when it equals the proven bound.
+
+use super::check::{self, Report};
+use super::{Discrete, VertexWalk};
+use crate::exact::cuts::violated_cuts;
+use crate::exact::driver::{self, CutModel, Solved, Stop};
+use crate::exact::lp::{Deadline, Formulation, Outcome, Row, Settings, solve_mip};
+use crate::exact::walks::{euler_walk, splice_walks};
+use crate::exact::{Objective, Status};
+use crate::topology::graph_components;
+use serde::Serialize;
+
+const NONE: u32 = u32::MAX;
+
+/// Options of an exact discrete solve.
+#[derive(Clone, Debug)]
+pub struct DiscreteOptions {
+    /// Wall-clock limit in seconds for the whole solve (None: no limit).
+    pub time_limit: Option<f64>,
+    /// HiGHS threads per solve.
+    pub threads: usize,
+    /// Print HiGHS's log and the cut loop's progress to stderr.
+    pub verbose: bool,
+}
+
+impl Default for DiscreteOptions {
+    fn default() -> Self {
+        DiscreteOptions {
+            time_limit: None,
+            threads: 1,
+            verbose: false,
+        }
+    }
+}
+
+/// The answer of an exact discrete solve: the fields of [`crate::exact::ExactResult`] with
+/// vertex walks in place of a grid cover.
+#[derive(Clone, Debug, Serialize)]
+pub struct DiscreteExactResult {
+    pub objective: String,
+    /// The checker's recount of the objective for `walks`.
+    pub value: Option<u64>,
+    /// A proven lower bound on the optimum.
+    pub lower_bound: u64,
+    pub status: Status,
+    pub seconds: f64,
+    /// Rounds of cut separation (LP and MIP).
+    pub rounds: u32,
+    pub length: Option<u64>,
+    pub turns: Option<u64>,
+    pub cycles: Option<usize>,
+    /// Whether the checker accepted `walks`.
+    pub valid: bool,
+    pub message: Option<String>,
+    /// Which bound `lower_bound` is.
+    pub lb_source: String,
+    /// The LP relaxation bound with the cuts found, when the LP phase ran.
+    pub lp_bound: Option<u64>,
+    /// The turn cost C of `weighted` and `weighted-cc`.
+    pub turn_cost: Option<u32>,
+    /// Number of vertices.
+    pub n: usize,
+    /// The checker's largest number of visits of one vertex.
+    pub max_coverage: Option<u32>,
+    #[serde(skip)]
+    pub walks: Option<Vec<VertexWalk>>,
+}
+
+/// The objective's value of checked walks.
+pub fn value_of(objective: Objective, report: &Report) -> u64 {
+    match objective {
+        Objective::Length | Objective::LawnTsp => report.length,
+        Objective::CcTurns | Objective::TourTurns => report.turns,
+        Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
+            report.length + u64::from(turn_cost) * report.turns
+        }
+    }
+}
+
+/// A bound and where it comes from.
+#[derive(Clone, Copy, Debug)]
+struct Lower {
+    value: u64,
+    source: &'static str,
+}
+
+/// What a solver hands back before checking.
+struct Answer {
+    stop: Stop,
+    walks: Option<Vec<VertexWalk>>,
+    lower: Lower,
+    lp_bound: Option<u64>,
+    rounds: u32,
+}
+
+impl Answer {
+    fn trivial(walks: Vec<VertexWalk>, lower: Lower) -> Answer {
+        Answer {
+            stop: Stop::Optimal,
+            walks: Some(walks),
+            lower,
+            lp_bound: None,
+            rounds: 0,
+        }
+    }
+
+    fn stopped(stop: Stop, lower: Lower) -> Answer {
+        Answer {
+            stop,
+            walks: None,
+            lower,
+            lp_bound: None,
+            rounds: 0,
+        }
+    }
+}
+
+/// Solves `objective` on a discrete instance exactly, within `opts.time_limit`.
+///
+/// # Arguments
+/// * `inst` — the graph with its collinear pairs.
+/// * `objective` — `length`, `cc-turns`, `turns`, `weighted` or `weighted-cc` (`lawn-tsp` has
+///   no discrete meaning and is an error).
+/// * `opts` — time limit, threads and verbosity.
+///
+/// # Returns
+/// A [`DiscreteExactResult`] whose walks have passed [`check::check`] with recounted cost
+/// `value`, a proven `lower_bound`, and `status` `optimal` exactly when the two are equal;
+/// `infeasible` for a tour objective on a disconnected graph.
+///
+/// # Complexity
+/// Exponential in the worst case (the problems are NP-hard); LP rounds with O(V) maximum
+/// flows of separation each, then MIP rounds.
+///
+/// # Guarantee
+/// `status == optimal` implies `value` is the optimum; otherwise `lower_bound <= OPT <= value`
+/// (see the module documentation for the models and the arguments).
+pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> DiscreteExactResult {
+    let deadline = Deadline::new(opts.time_limit);
+    let settings = Settings {
+        threads: opts.threads.max(1),
+        verbose: opts.verbose,
+    };
+    let none = Lower {
+        value: 0,
+        source: "none",
+    };
+    let answer = if inst.is_empty() {
+        Answer::stopped(Stop::Error("the instance has no vertex".into()), none)
+    } else {
+        match objective {
+            Objective::LawnTsp => Answer::stopped(
+                Stop::Error("lawn-tsp is not defined on discrete instances".into()),
+                none,
+            ),
+            Objective::Length => solve_length(inst, &deadline, &settings),
+            _ => solve_passages(inst, objective, &deadline, &settings),
+        }
+    };
+    assemble(inst, objective, answer, deadline.elapsed())
+}
+
+/// The checked result: the walks are recounted, and the status is `optimal` only when the
+/// recount equals the proven bound.
+fn assemble(inst: &Discrete, objective: Objective, a: Answer, seconds: f64) -> DiscreteExactResult {
+    let mut r = DiscreteExactResult {
+        objective: objective.to_string(),
+        value: None,
+        lower_bound: a.lower.value,
+        status: Status::Error,
+        seconds,
+        rounds: a.rounds,
+        length: None,
+        turns: None,
+        cycles: None,
+        valid: false,
+        message: None,
+        lb_source: a.lower.source.to_string(),
+        lp_bound: a.lp_bound,
+        turn_cost: objective.turn_cost(),
+        n: inst.len(),
+        max_coverage: None,
+        walks: None,
+    };
+    let mut message = match &a.stop {
+        Stop::Error(m) => Some(m.clone()),
+        Stop::Infeasible => Some("no covering tour exists: the graph is not connected".into()),
+        _ => None,
+    };
+    if let Some(walks) = a.walks {
+        let report = check::check(inst, &walks);
+        let value = value_of(objective, &report);
+        if !report.valid {
+            message = Some(format!(
+                "internal: the checker rejected the walks: {}",
+                report.error.unwrap_or_default()
+            ));
+        } else if objective.is_tour() && report.cycles != 1 {
+            message = Some(format!(
+                "internal: a tour with {} closed walks",
+                report.cycles
+            ));
+        } else if value < a.lower.value {
+            message = Some(format!(
+                "internal: value {value} below the proven bound {}",
+                a.lower.value
+            ));
+        } else {
+            r.value = Some(value);
+            r.length = Some(report.length);
+            r.turns = Some(report.turns);
+            r.cycles = Some(report.cycles);
+            r.max_coverage = Some(report.max_coverage);
+            r.valid = true;
+            r.walks = Some(walks);
+        }
+    }
+    r.status = match (&a.stop, r.value) {
+        _ if message.is_some() && !matches!(a.stop, Stop::Infeasible) => Status::Error,
+        (Stop::Infeasible, _) => Status::Infeasible,
+        (_, Some(v)) if v == r.lower_bound => Status::Optimal,
+        (Stop::Error(_), _) => Status::Error,
+        _ => Status::TimeLimit,
+    };
+    if r.status == Status::TimeLimit && r.value.is_none() {
+        message.get_or_insert_with(|| "time limit before any feasible cover".into());
+    }
+    r.message = message;
+    r
+}
+
+fn to_answer(s: Solved, walks: Option<Vec<VertexWalk>>, cheap: Lower) -> Answer {
+    let lower = if s.lower > cheap.value {
+        Lower {
+            value: s.lower,
+            source: s.lower_source,
+        }
+    } else {
+        cheap
+    };
+    Answer {
+        stop: s.stop,
+        walks,
+        lower,
+        lp_bound: s.lp_bound,
+        rounds: s.rounds,
+    }
+}
+
+fn is_connected(inst: &Discrete) -> bool {
+    graph_components(
+        inst.len(),
+        inst.edges().map(|(a, b)| (a as usize, b as usize)),
+    )
+    .1 <= 1
+}
+
+fn is_bipartite(inst: &Discrete) -> bool {
+    let mut colour = vec![u8::MAX; inst.len()];
+    for s in 0..inst.len() as u32 {
+        if colour[s as usize] != u8::MAX {
+            continue;
+        }
+        colour[s as usize] = 0;
+        let mut stack = vec![s];
+        while let Some(v) = stack.pop() {
+            for &w in inst.neighbors(v) {
+                if colour[w as usize] == u8::MAX {
+                    colour[w as usize] = 1 - colour[v as usize];
+                    stack.push(w);
+                } else if colour[w as usize] == colour[v as usize] {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+/// For every component of the graph, a closed walk around a spanning tree (every tree edge
+/// twice; a one-vertex component is the one-vertex walk).
+fn tree_walks(inst: &Discrete) -> Vec<VertexWalk> {
+    let n = inst.len();
+    let mut seen = vec![false; n];
+    let mut out = Vec::new();
+    for root in 0..n as u32 {
+        if seen[root as usize] {
+            continue;
+        }
+        seen[root as usize] = true;
+        let mut walk = vec![root];
+        // Iterative DFS recording the walk down and back up: (vertex, next neighbour index).
+        let mut stack: Vec<(u32, usize)> = vec![(root, 0)];
+        while let Some(top) = stack.len().checked_sub(1) {
+            let (v, next) = stack[top];
+            if let Some(&w) = inst.neighbors(v).get(next) {
+                stack[top].1 += 1;
+                if !seen[w as usize] {
+                    seen[w as usize] = true;
+                    walk.push(w);
+                    stack.push((w, 0));
+                }
+            } else {
+                stack.pop();
+                if let Some(&(parent, _)) = stack.last() {
+                    walk.push(parent);
+                }
+            }
+        }
+        // The walk ends back at the root: drop that repeat (walks are cyclic).
+        if walk.len() > 1 {
+            walk.pop();
+        }
+        out.push(walk);
+    }
+    out
+}
+
+// ---------------------------------------------------------------------------------------
+// Channels and rooks.
+
+/// A maximal straight channel: edges joined end to end through collinear pairs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Channel {
+    /// Its vertices in order along the channel (a cyclic channel does not repeat its first
+    /// vertex; a channel may pass a vertex twice through two different pairs, listed twice).
+    pub vertices: Vec<u32>,
+    /// Whether the channel closes on itself (a closed walk along it has no turn).
+    pub cyclic: bool,
+}
+
+/// The maximal straight channels of an instance: every edge lies on exactly one.
+///
+/// # Returns
+/// The channels, and for every vertex the indices of the channels through it.
+///
+/// # Complexity
+/// O(E log μ) time, O(E) extra space.
+pub fn channels(inst: &Discrete) -> (Vec<Channel>, Vec<Vec<u32>>) {
+    let mut done: std::collections::HashSet<(u32, u32)> = std::collections::HashSet::new();
+    let mut out = Vec::new();
+    let mut through = vec![Vec::new(); inst.len()];
+    for (a, b) in inst.edges() {
+        if done.contains(&(a, b)) {
+            continue;
+        }
+        // Forward from a -> b.
+        let mut forward = vec![a, b];
+        let mut cyclic = false;
+        let (mut u, mut v) = (a, b);
+        while let Some(w) = inst.straight_on(u, v) {
+            if (v, w) == (a, b) {
+                cyclic = true;
+                break;
+            }
+            forward.push(w);
+            (u, v) = (v, w);
+        }
+        let vertices = if cyclic {
+            // The last vertex pushed is `a` again.
+            forward.pop();
+            forward
+        } else {
+            let mut backward = Vec::new();
+            let (mut u, mut v) = (b, a);
+            while let Some(w) = inst.straight_on(u, v) {
+                backward.push(w);
+                (u, v) = (v, w);
+            }
+            backward.reverse();
+            backward.extend(forward);
+            backward
+        };
+        let m = vertices.len();
+        let steps = if cyclic { m } else { m - 1 };
+        for i in 0..steps {
+            let (x, y) = (vertices[i], vertices[(i + 1) % m]);
+            done.insert((x.min(y), x.max(y)));
+        }
+        let id = out.len() as u32;
+        for &x in &vertices {
+            if !through[x as usize].contains(&id) {
+                through[x as usize].push(id);
+            }
+        }
+        out.push(Channel { vertices, cyclic });
+    }
+    (out, through)
+}
+
+/// A rook placement: vertices no two of which lie on a common channel.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct RookPlacement {
+    /// The number of rooks, a lower bound on the turns of every cycle cover (and tour).
+    pub size: u64,
+    /// The rooks, sorted.
+    pub rooks: Vec<u32>,
+    /// Whether `size` is proven maximum (by the MILP); otherwise the placement is greedy.
+    pub exact: bool,
+}
+
+/// Above this many vertices [`rook_placement`] does not try the MILP.
+pub const ROOK_MILP_LIMIT: usize = 20_000;
+
+/// A maximum rook placement (Lemma 4.3 of *Optimal covering tours with turn costs*), by a
+/// MILP when cheap, greedily otherwise.
+///
+/// A rook *attacks* every vertex it reaches by one link, i.e. every vertex on a maximal
+/// straight channel through it ([`channels`]). Rooks are placed only on vertices that lie on
+/// no cyclic channel (see the guarantee for why).
+///
+/// # Arguments
+/// * `inst` — the instance.
+/// * `time_limit` — seconds for the MILP; `Some(0.0)` (or more than [`ROOK_MILP_LIMIT`]
+///   vertices) skips it.
+///
+/// # Returns
+/// The placement; `exact` when the MILP `max Σ y_v` subject to `Σ_{v ∈ K} y_v <= 1` for every
+/// channel `K` (each channel's vertices attack each other pairwise, and attack is exactly
+/// sharing a channel, so these cliques are the whole attack graph) was solved to optimality.
+/// Otherwise the greedy placement (repeatedly the free vertex attacking the fewest free
+/// vertices), or the MILP's incumbent when it is larger, with `exact = false`.
+///
+/// # Complexity
+/// Greedy: O(V · Σ_K |K|). MILP: exponential in the worst case, bounded by `time_limit`.
+///
+/// # Guarantee
+/// Every cycle cover (hence every tour) has at least `size` turns. Proof: a closed walk of
+/// one vertex costs 4 turns and visits one vertex. A closed walk `W` of two or more vertices
+/// that passes straight everywhere stays on one channel, which then is cyclic; so it visits
+/// no rook. Otherwise let `k >= 1` be the number of its visits that are not straight (a turn
+/// of 1, or a U-turn of 2): they cut `W` into exactly `k` links (maximal straight runs), and
+/// `turns(W) >= k`. A link runs along one channel, so the vertices it visits (its ends
+/// included) attack each other pairwise, and it visits at most one rook. Every visit of `W`
+/// lies on a link, so `W` visits at most `k <= turns(W)` rooks; summing over the walks of a
+/// cover that visits every rook gives `turns >= size`. The paper's Lemma 4.3 places rooks on
+/// every vertex; on a graph with a cyclic channel (a cycle of collinear pairs) that fails —
+/// the cycle walked around once is a cover of 0 turns — hence the exclusion, which is void
+/// on grid graphs (their channels are paths).
+pub fn rook_placement(inst: &Discrete, time_limit: Option<f64>) -> RookPlacement {
+    let (chans, through) = channels(inst);
+    let n = inst.len();
+    let eligible: Vec<bool> = (0..n)
+        .map(|v| through[v].iter().all(|&c| !chans[c as usize].cyclic))
+        .collect();
+    let greedy = greedy_rooks(&chans, &through, &eligible);
+    let try_milp = n <= ROOK_MILP_LIMIT && time_limit.is_none_or(|t| t > 0.0);
+    if try_milp && let Some((rooks, exact)) = milp_rooks(&chans, &eligible, time_limit) {
+        if exact || rooks.len() > greedy.len() {
+            return RookPlacement {
+                size: rooks.len() as u64,
+                rooks,
+                exact,
+            };
+        }
+    }
+    RookPlacement {
+        size: greedy.len() as u64,
+        rooks: greedy,
+        exact: false,
+    }
+}
+
+/// Greedy rook placement: the free eligible vertex attacking the fewest free vertices first.
+fn greedy_rooks(chans: &[Channel], through: &[Vec<u32>], eligible: &[bool]) -> Vec<u32> {
+    let n = eligible.len();
+    let mut free: Vec<bool> = eligible.to_vec();
+    let mut rooks = Vec::new();
+    loop {
+        let attacked = |v: usize, free: &[bool]| -> usize {
+            through[v]
+                .iter()
+                .flat_map(|&c| chans[c as usize].vertices.iter())
+                .filter(|&&w| free[w as usize])
+                .count()
+        };
+        let Some(v) = (0..n)
+            .filter(|&v| free[v])
+            .min_by_key(|&v| attacked(v, &free))
+        else {
+            break;
+        };
+        rooks.push(v as u32);
+        free[v] = false;
+        for &c in &through[v] {
+            for &w in &chans[c as usize].vertices {
+                free[w as usize] = false;
+            }
+        }
+    }
+    rooks.sort_unstable();
+    rooks
+}
+
+/// The rook MILP (one clique row per channel); `None` if HiGHS gives no solution. The flag
+/// says whether the solution is proven optimal.
+fn milp_rooks(
+    chans: &[Channel],
+    eligible: &[bool],
+    time_limit: Option<f64>,
+) -> Option<(Vec<u32>, bool)> {
+    let mut f = Formulation::default();
+    for &e in eligible {
+        f.add_col(-1.0, 0.0, if e { 1.0 } else { 0.0 }, true);
+    }
+    for c in chans {
+        let mut vs: Vec<usize> = c.vertices.iter().map(|&v| v as usize).collect();
+        vs.sort_unstable();
+        vs.dedup();
+        if vs.len() >= 2 {
+            f.rows
+                .push(Row::range(vs.into_iter().map(|v| (v, 1.0)), 0.0, 1.0));
+        }
+    }
+    let settings = Settings {
+        threads: 1,
+        verbose: false,
+    };
+    // Values are integers: a gap below 1 proves optimality.
+    let mip = solve_mip(
+        &f,
+        &[],
+        None,
+        &Deadline::new(time_limit),
+        &settings,
+        Some(0.99),
+    );
+    let x = mip.x?;
+    let rooks: Vec<u32> = (0..x.len())
+        .filter(|&v| x[v] > 0.5)
+        .map(|v| v as u32)
+        .collect();
+    if !f.is_feasible(&x.iter().map(|v| v.round()).collect::<Vec<_>>(), &[]) {
+        return None;
+    }
+    Some((rooks, mip.outcome == Outcome::Optimal))
+}
+
+// ---------------------------------------------------------------------------------------
+// Length.
+
+/// The `length` model (see the module documentation).
+struct LengthModel<'a> {
+    inst: &'a Discrete,
+    edges: Vec<(usize, usize)>,
+    incident: Vec<Vec<usize>>,
+    step: u64,
+    formulation: Formulation,
+}
+
+impl<'a> LengthModel<'a> {
+    fn new(inst: &'a Discrete) -> LengthModel<'a> {
+        let n = inst.len();
+        let edges: Vec<(usize, usize)> = inst
+            .edges()
+            .map(|(a, b)| (a as usize, b as usize))
+            .collect();
+        let mut incident = vec![Vec::new(); n];
+        for (k, &(a, b)) in edges.iter().enumerate() {
+            incident[a].push(k);
+            incident[b].push(k);
+        }
+        let mut f = Formulation::default();
+        for _ in &edges {
+            f.add_col(1.0, 0.0, 2.0, true);
+        }
+        for at in &incident {
+            let z = f.add_col(0.0, 1.0, (at.len() as f64).max(1.0), true);
+            let terms = at.iter().map(|&k| (k, 1.0)).chain([(z, -2.0)]);
+            f.rows.push(Row::range(terms, 0.0, 0.0));
+        }
+        LengthModel {
+            inst,
+            edges,
+            incident,
+            step: if is_bipartite(inst) { 2 } else { 1 },
+            formulation: f,
+        }
+    }
+
+    fn columns(&self, mult: &[u32]) -> Vec<f64> {
+        let mut x: Vec<f64> = mult.iter().map(|&m| f64::from(m)).collect();
+        for at in &self.incident {
+            let deg: u32 = at.iter().map(|&k| mult[k]).sum();
+            x.push(f64::from(deg / 2));
+        }
+        x
+    }
+
+    fn multiplicities(&self, x: &[f64]) -> Vec<u32> {
+        x[..self.edges.len()]
+            .iter()
+            .map(|&v| v.round().max(0.0) as u32)
+            .collect()
+    }
+
+    fn labels(&self, mult: &[u32]) -> (Vec<u32>, usize) {
+        let used = (0..self.edges.len())
+            .filter(|&k| mult[k] > 0)
+            .map(|k| self.edges[k]);
+        graph_components(self.inst.len(), used)
+    }
+
+    /// Edge multiplicities of a closed walk, reduced to at most 2 per edge (same parity,
+    /// still connected).
+    fn walk_multiplicities(&self, walk: &[u32]) -> Vec<u32> {
+        let index: std::collections::HashMap<(usize, usize), usize> = self
+            .edges
+            .iter()
+            .enumerate()
+            .map(|(k, &e)| (e, k))
+            .collect();
+        let mut mult = vec![0u32; self.edges.len()];
+        let m = walk.len();
+        for i in 0..m {
+            let (a, b) = (walk[i] as usize, walk[(i + 1) % m] as usize);
+            mult[index[&(a.min(b), a.max(b))]] += 1;
+        }
+        for x in &mut mult {
+            while *x > 2 {
+                *x -= 2;
+            }
+        }
+        mult
+    }
+
+    fn walk(&self, mult: &[u32]) -> VertexWalk {
+        let start = (0..self.edges.len())
+            .find(|&k| mult[k] > 0)
+            .map_or(0, |k| self.edges[k].0);
+        euler_walk(self.inst.len(), &self.edges, mult, start)
+            .into_iter()
+            .map(|v| v as u32)
+            .collect()
+    }
+}
+
+impl CutModel for LengthModel<'_> {
+    fn formulation(&self) -> &Formulation {
+        &self.formulation
+    }
+
+    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
+        let weighted: Vec<(usize, usize, f64)> = self
+            .edges
+            .iter()
+            .enumerate()
+            .map(|(k, &(a, b))| (a, b, x[k]))
+            .collect();
+        violated_cuts(self.inst.len(), &weighted, 2.0 - 1e-6, deadline)
+            .into_iter()
+            .map(|s| {
+                let terms = (0..self.edges.len())
+                    .filter(|&k| s[self.edges[k].0] != s[self.edges[k].1])
+                    .map(|k| (k, 1.0));
+                Row::at_least(terms, 2.0)
+            })
+            .collect()
+    }
+
+    fn is_feasible(&self, x: &[f64]) -> bool {
+        self.labels(&self.multiplicities(x)).1 == 1
+    }
+
+    /// Joins the components by doubling an edge between two of them (the graph is
+    /// connected, so one exists) until one is left.
+    fn repair(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let mut mult = self.multiplicities(x);
+        loop {
+            let (label, count) = self.labels(&mult);
+            if count <= 1 {
+                return Some(self.columns(&mult));
+            }
+            let k = (0..self.edges.len())
+                .find(|&k| label[self.edges[k].0] != label[self.edges[k].1])?;
+            mult[k] += 2;
+        }
+    }
+
+    /// Every closed walk in a bipartite graph has even length.
+    fn step(&self) -> u64 {
+        self.step
+    }
+}
+
+fn solve_length(inst: &Discrete, deadline: &Deadline, settings: &Settings) -> Answer {
+    let n = inst.len();
+    let lower = Lower {
+        value: if n >= 2 { n as u64 } else { 0 },
+        source: "every vertex visited",
+    };
+    if !is_connected(inst) {
+        return Answer::stopped(Stop::Infeasible, lower);
+    }
+    if n == 1 {
+        let only = Lower {
+            value: 0,
+            source: "the only tour",
+        };
+        return Answer::trivial(vec![vec![0]], only);
+    }
+    let model = LengthModel::new(inst);
+    let tree = tree_walks(inst);
+    let start = model.columns(&model.walk_multiplicities(&tree[0]));
+    let s = driver::run(
+        &model,
+        Some(start),
+        (lower.value, lower.source),
+        deadline,
+        settings,
+    );
+    let walks = s
+        .best
+        .as_ref()
+        .map(|x| vec![model.walk(&model.multiplicities(x))]);
+    to_answer(s, walks, lower)
+}
+
+// ---------------------------------------------------------------------------------------
+// Passages.
+
+/// Which objective the passage model minimizes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Goal {
+    CycleCover,
+    Tour,
+    /// Length + C · turns over tours.
+    Weighted(u32),
+    /// Length + C · turns over cycle covers.
+    WeightedCycleCover(u32),
+}
+
+impl Goal {
+    fn of(objective: Objective) -> Goal {
+        match objective {
+            Objective::CcTurns => Goal::CycleCover,
+            Objective::Weighted { turn_cost } => Goal::Weighted(turn_cost),
+            Objective::WeightedCc { turn_cost } => Goal::WeightedCycleCover(turn_cost),
+            _ => Goal::Tour,
+        }
+    }
+
+    fn turn_cost(self) -> Option<u32> {
+        match self {
+            Goal::Weighted(c) | Goal::WeightedCycleCover(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    fn is_tour(self) -> bool {
+        matches!(self, Goal::Tour | Goal::Weighted(_))
+    }
+}
+
+/// One passage column: at vertex `v` between its local ports `a <= b`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Pass {
+    v: u32,
+    a: u32,
+    b: u32,
+}
+
+/// The passage model (see the module documentation).
+struct PassageModel<'a> {
+    inst: &'a Discrete,
+    goal: Goal,
+    /// Global index of local port 0 of every vertex (cumulative degrees).
+    port_start: Vec<usize>,
+    /// Whether each global port's edge lies on a cyclic channel.
+    cyclic: Vec<bool>,
+    vars: Vec<Pass>,
+    /// Columns of vertex v: first[v]..first[v + 1].
+    first: Vec<usize>,
+    /// Edges (v, w) with v < w.
+    edges: Vec<(u32, u32)>,
+    isolated: usize,
+    /// `weighted-cc`: the one-vertex walk column of every vertex with a neighbour (NONE
+    /// elsewhere).
+    stay: Vec<u32>,
+    formulation: Formulation,
+}
+
+impl<'a> PassageModel<'a> {
+    fn new(inst: &'a Discrete, goal: Goal) -> PassageModel<'a> {
+        let n = inst.len();
+        let mut port_start = Vec::with_capacity(n + 1);
+        let mut total = 0;
+        for v in 0..n as u32 {
+            port_start.push(total);
+            total += inst.degree(v);
+        }
+        port_start.push(total);
+        let (chans, _) = channels(inst);
+        let mut cyclic = vec![false; total];
+        for c in chans.iter().filter(|c| c.cyclic) {
+            let m = c.vertices.len();
+            for i in 0..m {
+                let (x, y) = (c.vertices[i], c.vertices[(i + 1) % m]);
+                let px = port_start[x as usize] + local_port(inst, x, y);
+                let py = port_start[y as usize] + local_port(inst, y, x);
+                cyclic[px] = true;
+                cyclic[py] = true;
+            }
+        }
+        let mut m = PassageModel {
+            inst,
+            goal,
+            port_start,
+            cyclic,
+            vars: Vec::new(),
+            first: Vec::with_capacity(n + 1),
+            edges: inst.edges().collect(),
+            isolated: 0,
+            stay: vec![NONE; n],
+            formulation: Formulation::default(),
+        };
+        let mut f = Formulation::default();
+        for v in 0..n as u32 {
+            m.first.push(m.vars.len());
+            let d = inst.degree(v) as u32;
+            for a in 0..d {
+                for b in a..d {
+                    if a == b && goal.turn_cost().is_none() && !m.has_uturn_column(v, a) {
+                        continue;
+                    }
+                    let t = f64::from(m.turn(v, a, b));
+                    let cost = match goal.turn_cost() {
+                        Some(c) => 1.0 + f64::from(c) * t,
+                        None => t,
+                    };
+                    f.add_col(cost, 0.0, f64::INFINITY, true);
+                    m.vars.push(Pass { v, a, b });
+                }
+            }
+        }
+        m.first.push(m.vars.len());
+        if let Goal::WeightedCycleCover(c) = goal {
+            for v in 0..n {
+                if inst.degree(v as u32) > 0 {
+                    m.stay[v] = f.num_cols() as u32;
+                    f.add_col(4.0 * f64::from(c), 0.0, 1.0, true);
+                }
+            }
+        }
+        for &(v, w) in &m.edges {
+            let pv = local_port(inst, v, w) as u32;
+            let pw = local_port(inst, w, v) as u32;
+            let terms = m
+                .port_terms(v, pv)
+                .chain(m.port_terms(w, pw).map(|(k, c)| (k, -c)));
+            f.rows.push(Row::range(terms, 0.0, 0.0));
+        }
+        for v in 0..n {
+            if inst.degree(v as u32) == 0 {
+                m.isolated += 1;
+            } else {
+                let stay = (m.stay[v] != NONE).then_some((m.stay[v] as usize, 1.0));
+                f.rows.push(Row::at_least(
+                    (m.first[v]..m.first[v + 1]).map(|k| (k, 1.0)).chain(stay),
+                    1.0,
+                ));
+            }
+        }
+        m.formulation = f;
+        m
+    }
+
+    /// Whether the U-turn at `v` back through local port `a` keeps its column: the channel
+    /// does not continue straight beyond `v`, or it is cyclic (module documentation).
+    fn has_uturn_column(&self, v: u32, a: u32) -> bool {
+        let u = self.inst.neighbors(v)[a as usize];
+        self.inst.straight_on(u, v).is_none()
+            || self.cyclic[self.port_start[v as usize] + a as usize]
+    }
+
+    /// The turns of passing `v` between local ports `a` and `b`.
+    fn turn(&self, v: u32, a: u32, b: u32) -> u32 {
+        let nb = self.inst.neighbors(v);
+        self.inst.turn(nb[a as usize], v, nb[b as usize])
+    }
+
+    /// The usage of local port `p` of `v` as (column, coefficient) terms.
+    fn port_terms(&self, v: u32, p: u32) -> impl Iterator<Item = (usize, f64)> + '_ {
+        (self.first[v as usize]..self.first[v as usize + 1]).filter_map(move |k| {
+            let q = self.vars[k];
+            let c = u8::from(q.a == p) + u8::from(q.b == p);
+            (c > 0).then_some((k, f64::from(c)))
+        })
+    }
+
+    fn port_usage(&self, x: &[f64], v: u32, p: u32) -> f64 {
+        self.port_terms(v, p).map(|(k, c)| c * x[k]).sum()
+    }
+
+    /// The cost of the isolated vertices' one-vertex walks, outside the model.
+    fn isolated_cost(&self) -> u64 {
+        4 * self.goal.turn_cost().map_or(1, u64::from) * self.isolated as u64
+    }
+
+    fn global(&self, v: u32, p: u32) -> usize {
+        self.port_start[v as usize] + p as usize
+    }
+
+    /// Labels of the used ports' components (u32::MAX for unused ports) and their number.
+    fn port_components(&self, x: &[f64], eps: f64) -> (Vec<u32>, usize) {
+        let total = *self.port_start.last().unwrap_or(&0);
+        let mut used = vec![false; total];
+        let mut joined = Vec::new();
+        for (k, p) in self.vars.iter().enumerate() {
+            if x[k] > eps {
+                let (ga, gb) = (self.global(p.v, p.a), self.global(p.v, p.b));
+                used[ga] = true;
+                used[gb] = true;
+                joined.push((ga, gb));
+            }
+        }
+        for &(v, w) in &self.edges {
+            let pv = local_port(self.inst, v, w) as u32;
+            if self.port_usage(x, v, pv) > eps {
+                let pw = local_port(self.inst, w, v) as u32;
+                joined.push((self.global(v, pv), self.global(w, pw)));
+            }
+        }
+        let (raw, _) = graph_components(total, joined);
+        let mut map = std::collections::HashMap::new();
+        let label = (0..total)
+            .map(|i| {
+                if used[i] {
+                    let next = map.len() as u32;
+                    *map.entry(raw[i]).or_insert(next)
+                } else {
+                    u32::MAX
+                }
+            })
+            .collect();
+        (label, map.len())
+    }
+
+    /// The cut row `Σ_{edges across S} x_e + Σ_{passages across S} p >= 2` of a port set.
+    fn port_cut(&self, s: &[bool]) -> Row {
+        let mut terms: Vec<(usize, f64)> = Vec::new();
+        for &(v, w) in &self.edges {
+            let pv = local_port(self.inst, v, w) as u32;
+            let pw = local_port(self.inst, w, v) as u32;
+            if s[self.global(v, pv)] != s[self.global(w, pw)] {
+                terms.extend(self.port_terms(v, pv));
+            }
+        }
+        for (k, p) in self.vars.iter().enumerate() {
+            if s[self.global(p.v, p.a)] != s[self.global(p.v, p.b)] {
+                terms.push((k, 1.0));
+            }
+        }
+        Row::at_least(terms, 2.0)
+    }
+
+    /// Cuts between port components: `S` = the ports of a set `Q` of components plus every
+    /// port of the vertices only `Q` touches, valid when some vertex is touched only by `Q`
+    /// and some vertex not at all. Components of the support and of heavier parts.
+    fn crossing_cuts(&self, x: &[f64]) -> Vec<Row> {
+        let n = self.inst.len();
+        let mut out = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        for threshold in [1e-6, 0.3, 0.6, 0.9] {
+            let (label, count) = self.port_components(x, threshold);
+            if count <= 1 {
+                continue;
+            }
+            let count = count.min(64);
+            let comp = |g: usize| -> Option<u32> {
+                (label[g] != u32::MAX && (label[g] as usize) < count).then_some(label[g])
+            };
+            let touch: Vec<u64> = (0..n)
+                .map(|v| {
+                    (self.port_start[v]..self.port_start[v + 1])
+                        .filter_map(comp)
+                        .fold(0u64, |m, l| m | 1u64 << l)
+                })
+                .collect();
+            let try_q = |q: u64| -> Option<Vec<bool>> {
+                let private = (0..n).any(|v| touch[v] != 0 && touch[v] & !q == 0);
+                let untouched = (0..n).any(|v| touch[v] & q == 0);
+                (private && untouched).then(|| {
+                    let mut s = vec![false; self.cyclic.len()];
+                    for v in 0..n {
+                        for g in self.port_start[v]..self.port_start[v + 1] {
+                            s[g] = comp(g).is_some_and(|l| q >> l & 1 == 1)
+                                || (touch[v] != 0 && touch[v] & !q == 0);
+                        }
+                    }
+                    s
+                })
+            };
+            let mut sets: Vec<Vec<bool>> = (0..count).filter_map(|c| try_q(1u64 << c)).collect();
+            if sets.is_empty() {
+                let mut qs = touch.clone();
+                qs.sort_unstable();
+                qs.dedup();
+                sets.extend(qs.into_iter().filter_map(try_q).take(8));
+            }
+            for s in sets {
+                if seen.insert(s.clone()) {
+                    let row = self.port_cut(&s);
+                    if row.activity(x) < 2.0 - 1e-6 {
+                        out.push(row);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn counts(&self, x: &[f64]) -> Vec<u32> {
+        x.iter().map(|&v| v.round().max(0.0) as u32).collect()
+    }
+
+    fn as_x(counts: &[u32]) -> Vec<f64> {
+        counts.iter().map(|&c| f64::from(c)).collect()
+    }
+
+    fn column(&self, v: u32, a: u32, b: u32) -> Option<usize> {
+        let (a, b) = (a.min(b), a.max(b));
+        (self.first[v as usize]..self.first[v as usize + 1])
+            .find(|&k| self.vars[k].a == a && self.vars[k].b == b)
+    }
+
+    /// Adds one passage at `v` between local ports `a` and `b`; a U-turn without a column
+    /// becomes two straight passes and the U-turn one vertex further along the channel (same
+    /// turns). False if impossible.
+    fn add_passage(&self, counts: &mut [u32], v: u32, a: u32, b: u32) -> bool {
+        let mut v = v;
+        let mut a = a;
+        let mut b = b;
+        // A path channel has at most V vertices: the pushes end.
+        for _ in 0..=self.inst.len() {
+            if let Some(k) = self.column(v, a, b) {
+                counts[k] += 1;
+                return true;
+            }
+            if a != b {
+                return false;
+            }
+            let u = self.inst.neighbors(v)[a as usize];
+            let Some(w) = self.inst.straight_on(u, v) else {
+                return false;
+            };
+            let s = local_port(self.inst, v, w) as u32;
+            let Some(k) = self.column(v, a, s) else {
+                return false;
+            };
+            counts[k] += 2;
+            let back = local_port(self.inst, w, v) as u32;
+            (v, a, b) = (w, back, back);
+        }
+        false
+    }
+
+    /// The cost of a passage as `add_passage` realises it (i64::MAX / 4 if impossible).
+    fn passage_cost(&self, v: u32, a: u32, b: u32) -> i64 {
+        let (mut v, mut a, mut b) = (v, a, b);
+        let mut total = 0i64;
+        for _ in 0..=self.inst.len() {
+            if let Some(k) = self.column(v, a, b) {
+                return total + self.formulation.cost[k] as i64;
+            }
+            if a != b {
+                break;
+            }
+            let u = self.inst.neighbors(v)[a as usize];
+            let Some(w) = self.inst.straight_on(u, v) else {
+                break;
+            };
+            let s = local_port(self.inst, v, w) as u32;
+            let Some(k) = self.column(v, a, s) else {
+                break;
+            };
+            total += 2 * self.formulation.cost[k] as i64;
+            let back = local_port(self.inst, w, v) as u32;
+            (v, a, b) = (w, back, back);
+        }
+        i64::MAX / 4
+    }
+
+    /// Passage counts of closed walks (a one-vertex walk at a vertex with a neighbour is the
+    /// stay column of `weighted-cc`, or else a step to a neighbour and back: same turns).
+    fn walk_counts(&self, walks: &[VertexWalk]) -> Option<Vec<u32>> {
+        let mut counts = vec![0u32; self.formulation.num_cols()];
+        for walk in walks {
+            if walk.len() == 1 {
+                let v = walk[0];
+                if self.inst.degree(v) == 0 {
+                    continue;
+                }
+                let s = self.stay[v as usize];
+                if s != NONE && counts[s as usize] == 0 {
+                    counts[s as usize] = 1;
+                    continue;
+                }
+                let w = self.inst.neighbors(v)[0];
+                let (pv, pw) = (
+                    local_port(self.inst, v, w) as u32,
+                    local_port(self.inst, w, v) as u32,
+                );
+                if !self.add_passage(&mut counts, v, pv, pv)
+                    || !self.add_passage(&mut counts, w, pw, pw)
+                {
+                    return None;
+                }
+                continue;
+            }
+            let m = walk.len();
+            for i in 0..m {
+                let (prev, cur, next) = (walk[(i + m - 1) % m], walk[i], walk[(i + 1) % m]);
+                let nb = self.inst.neighbors(cur);
+                let a = nb.binary_search(&prev).ok()? as u32;
+                let b = nb.binary_search(&next).ok()? as u32;
+                if !self.add_passage(&mut counts, cur, a, b) {
+                    return None;
+                }
+            }
+        }
+        Some(counts)
+    }
+
+    /// Whether integer counts are feasible: the formulation's rows, and for tours one port
+    /// component.
+    fn is_feasible_counts(&self, counts: &[u32]) -> bool {
+        let x = Self::as_x(counts);
+        self.formulation.is_feasible(&x, &[])
+            && (!self.goal.is_tour() || self.port_components(&x, 0.5).1 == 1)
+    }
+
+    /// Drops port components whose every vertex another kept component also visits (most
+    /// expensive first); coverage is kept and the cost does not grow.
+    fn drop_redundant(&self, counts: &mut [u32]) {
+        let x = Self::as_x(counts);
+        let (label, count) = self.port_components(&x, 0.5);
+        if count <= 1 {
+            return;
+        }
+        let n = self.inst.len();
+        let mut cost = vec![0.0; count];
+        for (k, p) in self.vars.iter().enumerate() {
+            if counts[k] > 0 {
+                cost[label[self.global(p.v, p.a)] as usize] += self.formulation.cost[k] * x[k];
+            }
+        }
+        // touching[v] = components visiting v.
+        let touching: Vec<Vec<u32>> = (0..n)
+            .map(|v| {
+                let mut t: Vec<u32> = (self.port_start[v]..self.port_start[v + 1])
+                    .map(|g| label[g])
+                    .filter(|&l| l != u32::MAX)
+                    .collect();
+                t.sort_unstable();
+                t.dedup();
+                t
+            })
+            .collect();
+        let mut order: Vec<usize> = (0..count).collect();
+        order.sort_by(|&a, &b| cost[b].total_cmp(&cost[a]));
+        let mut dropped = vec![false; count];
+        for c in order {
+            let redundant = (0..n).all(|v| {
+                !touching[v].contains(&(c as u32))
+                    || touching[v]
+                        .iter()
+                        .any(|&o| o as usize != c && !dropped[o as usize])
+            });
+            if redundant {
+                dropped[c] = true;
+            }
+        }
+        for (k, p) in self.vars.iter().enumerate() {
+            if counts[k] > 0 && dropped[label[self.global(p.v, p.a)] as usize] {
+                counts[k] = 0;
+            }
+        }
+    }
+
+    /// Merges the port components of covering integer counts into one, greedily by the
+    /// cheapest move: re-pairing two passages of different components at a vertex, or a
+    /// doubled edge between passages of different components at its two ends. In a
+    /// connected graph with every vertex covered one of them always applies.
+    ///
+    /// # Complexity
+    /// O(components · (Σ_v passages_v² + Σ_vw passages_v · passages_w) · V) time.
+    fn connect(&self, mut counts: Vec<u32>) -> Vec<u32> {
+        loop {
+            let x = Self::as_x(&counts);
+            let (label, count) = self.port_components(&x, 0.5);
+            if count <= 1 {
+                return counts;
+            }
+            let comp = |v: u32, p: u32| label[self.global(v, p)];
+            let cost = |k: usize| self.formulation.cost[k] as i64;
+            // (delta, removed columns, added passages)
+            let mut best: Option<(i64, Vec<usize>, Vec<(u32, u32, u32)>)> = None;
+            let mut consider = |delta: i64, rem: Vec<usize>, add: Vec<(u32, u32, u32)>| {
+                if best.as_ref().is_none_or(|b| delta < b.0) {
+                    best = Some((delta, rem, add));
+                }
+            };
+            for v in 0..self.inst.len() as u32 {
+                let here: Vec<usize> = (self.first[v as usize]..self.first[v as usize + 1])
+                    .filter(|&k| counts[k] > 0)
+                    .collect();
+                for &k1 in &here {
+                    for &k2 in &here {
+                        let (p, q) = (self.vars[k1], self.vars[k2]);
+                        if k1 >= k2 || comp(v, p.a) == comp(v, q.a) {
+                            continue;
+                        }
+                        let old = cost(k1) + cost(k2);
+                        for (s1, s2) in [((p.a, q.a), (p.b, q.b)), ((p.a, q.b), (p.b, q.a))] {
+                            let delta = self.passage_cost(v, s1.0, s1.1)
+                                + self.passage_cost(v, s2.0, s2.1)
+                                - old;
+                            consider(delta, vec![k1, k2], vec![(v, s1.0, s1.1), (v, s2.0, s2.1)]);
+                        }
+                    }
+                }
+            }
+            for &(v, w) in &self.edges {
+                let s = local_port(self.inst, v, w) as u32;
+                let t = local_port(self.inst, w, v) as u32;
+                for k in
+                    (self.first[v as usize]..self.first[v as usize + 1]).filter(|&k| counts[k] > 0)
+                {
+                    for j in (self.first[w as usize]..self.first[w as usize + 1])
+                        .filter(|&j| counts[j] > 0)
+                    {
+                        let (p, q) = (self.vars[k], self.vars[j]);
+                        if comp(v, p.a) == comp(w, q.a) {
+                            continue;
+                        }
+                        let add = vec![(v, p.a, s), (v, s, p.b), (w, q.a, t), (w, t, q.b)];
+                        let delta = add
+                            .iter()
+                            .map(|&(y, a, b)| self.passage_cost(y, a, b))
+                            .sum::<i64>()
+                            - cost(k)
+                            - cost(j);
+                        consider(delta, vec![k, j], add);
+                    }
+                }
+            }
+            let Some((_, rem, add)) = best else {
+                return counts;
+            };
+            for k in rem {
+                counts[k] -= 1;
+            }
+            for (v, a, b) in add {
+                if !self.add_passage(&mut counts, v, a, b) {
+                    return counts;
+                }
+            }
+        }
+    }
+
+    /// The closed walks of integer passage counts, spliced into as few walks as possible,
+    /// plus the one-vertex walks (isolated vertices and stay columns).
+    fn walks(&self, counts: &[u32]) -> Vec<VertexWalk> {
+        let mut passages: Vec<Pass> = Vec::new();
+        for (k, &c) in counts.iter().enumerate().take(self.vars.len()) {
+            for _ in 0..c {
+                passages.push(self.vars[k]);
+            }
+        }
+        let end_port = |k: usize, end: usize| {
+            if end == 0 {
+                passages[k].a
+            } else {
+                passages[k].b
+            }
+        };
+        // slots[global port] = the passage ends at that port, in order.
+        let total = *self.port_start.last().unwrap_or(&0);
+        let mut slots: Vec<Vec<(u32, u8)>> = vec![Vec::new(); total];
+        let mut pos = vec![[0u32; 2]; passages.len()];
+        for k in 0..passages.len() {
+            for end in 0..2 {
+                let g = self.global(passages[k].v, end_port(k, end));
+                pos[k][end] = slots[g].len() as u32;
+                slots[g].push((k as u32, end as u8));
+            }
+        }
+        let mut used = vec![false; passages.len()];
+        let mut walks: Vec<Vec<usize>> = Vec::new();
+        for first in 0..passages.len() {
+            if used[first] {
+                continue;
+            }
+            let mut walk = Vec::new();
+            let (mut k, mut enter) = (first, 0usize);
+            loop {
+                used[k] = true;
+                let v = passages[k].v;
+                walk.push(v as usize);
+                let out = 1 - enter;
+                let p = end_port(k, out);
+                let w = self.inst.neighbors(v)[p as usize];
+                let back = local_port(self.inst, w, v) as u32;
+                let (j, e) = slots[self.global(w, back)][pos[k][out] as usize];
+                k = j as usize;
+                enter = e as usize;
+                if k == first && enter == 0 {
+                    break;
+                }
+            }
+            walks.push(walk);
+        }
+        let mut out: Vec<VertexWalk> = splice_walks(walks)
+            .into_iter()
+            .map(|w| w.into_iter().map(|v| v as u32).collect())
+            .collect();
+        for v in 0..self.inst.len() {
+            let stays = self.stay[v] != NONE && counts[self.stay[v] as usize] > 0;
+            if self.inst.degree(v as u32) == 0 || stays {
+                out.push(vec![v as u32]);
+            }
+        }
+        out
+    }
+
+    /// The number of vertices with a neighbour.
+    fn covered(&self) -> usize {
+        self.inst.len() - self.isolated
+    }
+}
+
+/// The local port of neighbour `w` at `v`.
+fn local_port(inst: &Discrete, v: u32, w: u32) -> usize {
+    inst.neighbors(v)
+        .binary_search(&w)
+        .expect("w is a neighbour of v")
+}
+
+impl CutModel for PassageModel<'_> {
+    fn formulation(&self) -> &Formulation {
+        &self.formulation
+    }
+
+    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
+        if !self.goal.is_tour() {
+            return Vec::new();
+        }
+        let weighted: Vec<(usize, usize, f64)> = self
+            .edges
+            .iter()
+            .map(|&(v, w)| {
+                let pv = local_port(self.inst, v, w) as u32;
+                (v as usize, w as usize, self.port_usage(x, v, pv))
+            })
+            .collect();
+        let cuts = violated_cuts(self.inst.len(), &weighted, 2.0 - 1e-6, deadline);
+        if !cuts.is_empty() {
+            return cuts
+                .into_iter()
+                .map(|s| {
+                    let ports: Vec<bool> = (0..self.inst.len())
+                        .flat_map(|v| {
+                            std::iter::repeat_n(s[v], self.port_start[v + 1] - self.port_start[v])
+                        })
+                        .collect();
+                    self.port_cut(&ports)
+                })
+                .collect();
+        }
+        self.crossing_cuts(x)
+    }
+
+    fn is_feasible(&self, x: &[f64]) -> bool {
+        self.is_feasible_counts(&self.counts(x))
+    }
+
+    fn repair(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let mut counts = self.counts(x);
+        if self.goal.is_tour() {
+            self.drop_redundant(&mut counts);
+            counts = self.connect(counts);
+        }
+        self.is_feasible_counts(&counts)
+            .then(|| Self::as_x(&counts))
+    }
+
+    /// Bounds valid for every integer solution of model cost at most `target`:
+    ///
+    /// * a column of cost `c > 0` is used at most `(target − rest) / c` times, where `rest`
+    ///   is what the other vertices cost at least: nothing with turn costs only, one passage
+    ///   (cost >= 1) each with length counted (`weighted`; `weighted-cc` too when C >= 1,
+    ///   where a one-vertex walk costs 4C >= 1);
+    /// * a straight passage on a channel that is a path is used at most T times, T the turn
+    ///   budget (`target`, or `(target − V') / C` for `weighted` whose tour has length at least
+    ///   the V' vertices with a neighbour, or `target / C` for `weighted-cc`): each such pass
+    ///   lies on a different link of the walks (a link passes a pair of a path channel at
+    ///   most once), every link ends at both ends in a visit that is not straight (the
+    ///   channel ends or is left), and such a visit of turn cost t ∈ {1, 2} ends at most 2 links,
+    ///   so there are at most 2T link ends and T links. On a cyclic channel a closed walk may
+    ///   go around without turning, so nothing is assumed there.
+    fn tighten(&self, f: &mut Formulation, target: u64) {
+        let n = self.covered() as f64;
+        let target = target as f64;
+        let (budget, rest) = match self.goal {
+            Goal::Weighted(c) if c > 0 => ((target - n).max(0.0) / f64::from(c), n - 1.0),
+            Goal::Weighted(_) => (f64::INFINITY, n - 1.0),
+            Goal::WeightedCycleCover(c) if c > 0 => (target / f64::from(c), n - 1.0),
+            Goal::WeightedCycleCover(_) => (f64::INFINITY, 0.0),
+            _ => (target, 0.0),
+        };
+        for (k, p) in self.vars.iter().enumerate() {
+            let c = f.cost[k];
+            let mut hi = if c > 0.0 {
+                ((target - rest).max(0.0) / c).floor()
+            } else {
+                f64::INFINITY
+            };
+            if self.turn(p.v, p.a, p.b) == 0 && !self.cyclic[self.global(p.v, p.a)] {
+                hi = hi.min(budget.floor());
+            }
+            f.hi[k] = f.hi[k].min(hi).max(f.lo[k]);
+        }
+    }
+
+    fn heuristic_caps(&self) -> Option<Vec<f64>> {
+        Some(vec![2.0; self.formulation.num_cols()])
+    }
+
+    /// Nothing is known about parity on a general graph.
+    fn step(&self) -> u64 {
+        1
+    }
+}
+
+/// The cheap bound of a turn objective: a greedy rook placement (turns of any cycle cover,
+/// [`rook_placement`]), plus the length bound `V` for `weighted` tours (every vertex visited;
+/// both hold for the same tour).
+fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> Lower {
+    let rooks = rook_placement(inst, Some(0.0)).size;
+    match goal {
+        Goal::CycleCover | Goal::Tour => Lower {
+            value: rooks,
+            source: "greedy rook placement",
+        },
+        Goal::Weighted(c) => Lower {
+            value: if inst.len() >= 2 {
+                inst.len() as u64
+            } else {
+                0
+            } + u64::from(c) * rooks,
+            source: "V + C * greedy rook placement",
+        },
+        Goal::WeightedCycleCover(c) => Lower {
+            value: u64::from(c) * rooks,
+            source: "C * greedy rook placement",
+        },
+    }
+}
+
+fn solve_passages(
+    inst: &Discrete,
+    objective: Objective,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Answer {
+    let goal = Goal::of(objective);
+    let lower = cheap_turn_bound(inst, goal);
+    if goal.is_tour() {
+        if !is_connected(inst) {
+            return Answer::stopped(Stop::Infeasible, lower);
+        }
+        if inst.len() == 1 {
+            // The one-vertex walk: length 0, 4 turns; the only tour.
+            let only = Lower {
+                value: 4 * goal.turn_cost().map_or(1, u64::from),
+                source: "the only tour",
+            };
+            return Answer::trivial(vec![vec![0]], only);
+        }
+    }
+    let model = PassageModel::new(inst, goal);
+    let constant = model.isolated_cost();
+    // The start: spanning-tree walks of the components, joined for tours.
+    let tree: Vec<VertexWalk> = tree_walks(inst)
+        .into_iter()
+        .filter(|w| w.len() > 1 || inst.degree(w[0]) > 0)
+        .collect();
+    let start = model
+        .walk_counts(&tree)
+        .map(|c| if goal.is_tour() { model.connect(c) } else { c })
+        .filter(|c| model.is_feasible_counts(c))
+        .map(|c| PassageModel::as_x(&c));
+    let s = if model.formulation().num_cols() == 0 {
+        Solved {
+            stop: Stop::Optimal,
+            best: Some(Vec::new()),
+            upper: Some(constant),
+            lower: constant,
+            lower_source: lower.source,
+            lp_bound: None,
+            rounds: 0,
+        }
+    } else {
+        let inner = lower.value.saturating_sub(constant);
+        let mut s = driver::run(&model, start, (inner, lower.source), deadline, settings);
+        s.lower += constant;
+        s.lp_bound = s.lp_bound.map(|b| b + constant);
+        s
+    };
+    let walks = s.best.as_ref().map(|x| {
+        let mut counts = model.counts(x);
+        if goal.is_tour() {
+            // A feasible tour solution may carry redundant components only if the driver
+            // accepted it; dropping them keeps the cost or lowers it.
+            model.drop_redundant(&mut counts);
+        }
+        model.walks(&counts)
+    });
+    to_answer(s, walks, lower)
+}
