@@ -517,14 +517,15 @@ pub fn rook_placement(inst: &Discrete, time_limit: Option<f64>) -> RookPlacement
         .collect();
     let greedy = greedy_rooks(&chans, &through, &eligible);
     let try_milp = n <= ROOK_MILP_LIMIT && time_limit.is_none_or(|t| t > 0.0);
-    if try_milp && let Some((rooks, exact)) = milp_rooks(&chans, &eligible, time_limit) {
-        if exact || rooks.len() > greedy.len() {
-            return RookPlacement {
-                size: rooks.len() as u64,
-                rooks,
-                exact,
-            };
-        }
+    if try_milp
+        && let Some((rooks, exact)) = milp_rooks(&chans, &eligible, time_limit)
+        && (exact || rooks.len() > greedy.len())
+    {
+        return RookPlacement {
+            size: rooks.len() as u64,
+            rooks,
+            exact,
+        };
     }
     RookPlacement {
         size: greedy.len() as u64,
@@ -824,6 +825,10 @@ impl Goal {
     }
 }
 
+/// A merging move of [`PassageModel::connect`]: its cost change, the columns losing one
+/// passage and the passages gained as (vertex, port, port).
+type Move = (i64, Vec<usize>, Vec<(u32, u32, u32)>);
+
 /// One passage column: at vertex `v` between its local ports `a <= b`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Pass {
@@ -1053,14 +1058,13 @@ impl<'a> PassageModel<'a> {
                 let private = (0..n).any(|v| touch[v] != 0 && touch[v] & !q == 0);
                 let untouched = (0..n).any(|v| touch[v] & q == 0);
                 (private && untouched).then(|| {
-                    let mut s = vec![false; self.cyclic.len()];
-                    for v in 0..n {
-                        for g in self.port_start[v]..self.port_start[v + 1] {
-                            s[g] = comp(g).is_some_and(|l| q >> l & 1 == 1)
-                                || (touch[v] != 0 && touch[v] & !q == 0);
-                        }
-                    }
-                    s
+                    (0..n)
+                        .flat_map(|v| {
+                            let private = touch[v] != 0 && touch[v] & !q == 0;
+                            (self.port_start[v]..self.port_start[v + 1])
+                                .map(move |g| private || comp(g).is_some_and(|l| q >> l & 1 == 1))
+                        })
+                        .collect()
                 })
             };
             let mut sets: Vec<Vec<bool>> = (0..count).filter_map(|c| try_q(1u64 << c)).collect();
@@ -1267,7 +1271,7 @@ impl<'a> PassageModel<'a> {
             let comp = |v: u32, p: u32| label[self.global(v, p)];
             let cost = |k: usize| self.formulation.cost[k] as i64;
             // (delta, removed columns, added passages)
-            let mut best: Option<(i64, Vec<usize>, Vec<(u32, u32, u32)>)> = None;
+            let mut best: Option<Move> = None;
             let mut consider = |delta: i64, rem: Vec<usize>, add: Vec<(u32, u32, u32)>| {
                 if best.as_ref().is_none_or(|b| delta < b.0) {
                     best = Some((delta, rem, add));
@@ -1351,10 +1355,10 @@ impl<'a> PassageModel<'a> {
         let total = *self.port_start.last().unwrap_or(&0);
         let mut slots: Vec<Vec<(u32, u8)>> = vec![Vec::new(); total];
         let mut pos = vec![[0u32; 2]; passages.len()];
-        for k in 0..passages.len() {
-            for end in 0..2 {
+        for (k, at) in pos.iter_mut().enumerate() {
+            for (end, slot) in at.iter_mut().enumerate() {
                 let g = self.global(passages[k].v, end_port(k, end));
-                pos[k][end] = slots[g].len() as u32;
+                *slot = slots[g].len() as u32;
                 slots[g].push((k as u32, end as u8));
             }
         }
@@ -1881,9 +1885,15 @@ mod tests {
             Objective::WeightedCc { turn_cost: 2 },
             Objective::WeightedCc { turn_cost: 0 },
         ];
-        let mut tours = 0;
+        let (mut tours, mut cyclic, mut odd) = (0, 0, 0);
         for _ in 0..RANDOM_GRAPHS {
             let inst = random_instance(&mut rng, 7);
+            if channels(&inst).0.iter().any(|c| c.cyclic) {
+                cyclic += 1;
+            }
+            if brute_optimum(&inst, Objective::CcTurns).is_some_and(|v| v % 2 == 1) {
+                odd += 1;
+            }
             for objective in objectives {
                 let want = brute_optimum(&inst, objective);
                 assert_eq!(optimum(&inst, objective), want, "{objective} on {inst:?}");
@@ -1897,9 +1907,15 @@ mod tests {
             let cc = brute_optimum(&inst, Objective::CcTurns).expect("a cover exists");
             assert!(rooks.size <= cc);
         }
+        // The instances must exercise what the grid does not have.
         assert!(
             tours > RANDOM_GRAPHS / 3,
             "only {tours} connected instances"
+        );
+        assert!(cyclic > 20, "only {cyclic} instances with a cyclic channel");
+        assert!(
+            odd > 20,
+            "only {odd} instances with an odd cc-turns optimum"
         );
     }
 
