@@ -1664,17 +1664,34 @@ mod tests {
         let n = rng.random_range(1..=max);
         let p = rng.random_range(0.25..0.8);
         let mut edges = Vec::new();
+        let mut collinear = Vec::new();
+        // A third of the instances get a planted cyclic channel on 0..k.
+        let k = if n >= 3 && rng.random_bool(0.33) {
+            rng.random_range(3..=n) as u32
+        } else {
+            0
+        };
+        for i in 0..k {
+            edges.push((i, (i + 1) % k));
+            collinear.push((i, (i + k - 1) % k, (i + 1) % k));
+        }
         for a in 0..n as u32 {
             for b in a + 1..n as u32 {
-                if rng.random_bool(p) {
+                let ring = a < k && b < k && (b == a + 1 || (a == 0 && b == k - 1));
+                if !ring && rng.random_bool(p) {
                     edges.push((a, b));
                 }
             }
         }
-        let mut collinear = Vec::new();
         for v in 0..n as u32 {
             let mut nb: Vec<u32> = edges
                 .iter()
+                .filter(|&&(a, b)| {
+                    !(v < k && a < k && b < k && (a == v || b == v) && {
+                        let w = if a == v { b } else { a };
+                        w == (v + 1) % k || w == (v + k - 1) % k
+                    })
+                })
                 .filter_map(|&(a, b)| (a == v).then_some(b).or((b == v).then_some(a)))
                 .collect();
             for i in (1..nb.len()).rev() {
