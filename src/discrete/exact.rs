@@ -1886,8 +1886,8 @@ mod tests {
         }
     }
 
-    const RANDOM_REGIONS: usize = 200;
-    const RANDOM_GRAPHS: usize = 300;
+    const RANDOM_REGIONS: usize = 150;
+    const RANDOM_GRAPHS: usize = 250;
 
     /// The models against the brute force on random non-grid instances, every objective;
     /// the exact rook placement against enumeration, and below the cc-turns optimum.
