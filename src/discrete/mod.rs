@@ -18,6 +18,8 @@
 //! [`check::check`].
 
 pub mod check;
+pub mod merge;
+pub mod star_cover;
 
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
