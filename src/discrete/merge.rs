@@ -564,9 +564,10 @@ pub fn theorem_4_2_bound(turns: u64, cycles: usize) -> u64 {
 /// The proven bound on the merged tour: t + 4(c − 1).
 ///
 /// # Guarantee
-/// Every merge is a splice (≤ +2) or an exchange or a detour across an edge: each of the four
-/// new turns is at most 1 there, since x's walk neighbours and z lie on different channels at
-/// x unless they share a vertex, and so the change is ≤ +4 (module documentation).
+/// Pairs at one vertex always have a splice of cost ≤ +2 and sit in the buckets of cost ≤ 2,
+/// so every merge made while two cycles still share a vertex costs ≤ +2. Afterwards (merged
+/// cycles' vertex sets are unions, so no sharing comes back) an exchange or detour across an
+/// edge makes four new turns each ≤ 1 (a U-turn would need a vertex in both cycles): ≤ +4.
 pub fn proven_bound(turns: u64, cycles: usize) -> u64 {
     turns + 4 * (cycles.max(1) as u64 - 1)
 }
