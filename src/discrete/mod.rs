@@ -19,6 +19,8 @@
 
 pub mod check;
 pub mod exact;
+pub mod merge;
+pub mod star_cover;
 
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
