@@ -73,6 +73,7 @@
 //! checker's recount, and the status is `optimal` only when it equals the proven bound.
 
 use super::check::{self, Report};
+use super::star_cover::{self, Channel};
 use super::{Discrete, VertexWalk};
 use crate::exact::cuts::violated_cuts;
 use crate::exact::driver::{self, CutModel, Solved, Stop};
@@ -391,73 +392,14 @@ fn tree_walks(inst: &Discrete) -> Vec<VertexWalk> {
 // ---------------------------------------------------------------------------------------
 // Channels and rooks.
 
-/// A maximal straight channel: edges joined end to end through collinear pairs.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Channel {
-    /// Its vertices in order along the channel (a cyclic channel does not repeat its first
-    /// vertex; a channel may pass a vertex twice through two different pairs, listed twice).
-    pub vertices: Vec<u32>,
-    /// Whether the channel closes on itself (a closed walk along it has no turn).
-    pub cyclic: bool,
-}
-
-/// The maximal straight channels of an instance: every edge lies on exactly one.
-///
-/// # Returns
-/// The channels, and for every vertex the indices of the channels through it.
-///
-/// # Complexity
-/// O(E log μ) time, O(E) extra space.
+/// The maximal straight channels of an instance ([`star_cover::channels`], the one
+/// computation of them) and, for every vertex, the indices of the channels through it.
 pub fn channels(inst: &Discrete) -> (Vec<Channel>, Vec<Vec<u32>>) {
-    let mut done: std::collections::HashSet<(u32, u32)> = std::collections::HashSet::new();
-    let mut out = Vec::new();
-    let mut through = vec![Vec::new(); inst.len()];
-    for (a, b) in inst.edges() {
-        if done.contains(&(a, b)) {
-            continue;
-        }
-        // Forward from a -> b.
-        let mut forward = vec![a, b];
-        let mut cyclic = false;
-        let (mut u, mut v) = (a, b);
-        while let Some(w) = inst.straight_on(u, v) {
-            if (v, w) == (a, b) {
-                cyclic = true;
-                break;
-            }
-            forward.push(w);
-            (u, v) = (v, w);
-        }
-        let vertices = if cyclic {
-            // The last vertex pushed is `a` again.
-            forward.pop();
-            forward
-        } else {
-            let mut backward = Vec::new();
-            let (mut u, mut v) = (b, a);
-            while let Some(w) = inst.straight_on(u, v) {
-                backward.push(w);
-                (u, v) = (v, w);
-            }
-            backward.reverse();
-            backward.extend(forward);
-            backward
-        };
-        let m = vertices.len();
-        let steps = if cyclic { m } else { m - 1 };
-        for i in 0..steps {
-            let (x, y) = (vertices[i], vertices[(i + 1) % m]);
-            done.insert((x.min(y), x.max(y)));
-        }
-        let id = out.len() as u32;
-        for &x in &vertices {
-            if !through[x as usize].contains(&id) {
-                through[x as usize].push(id);
-            }
-        }
-        out.push(Channel { vertices, cyclic });
-    }
-    (out, through)
+    let ch = star_cover::channels(inst);
+    let through = (0..inst.len() as u32)
+        .map(|v| ch.through(inst, v))
+        .collect();
+    (ch.list, through)
 }
 
 /// A rook placement: vertices no two of which lie on a common channel.
@@ -513,7 +455,7 @@ pub fn rook_placement(inst: &Discrete, time_limit: Option<f64>) -> RookPlacement
     let (chans, through) = channels(inst);
     let n = inst.len();
     let eligible: Vec<bool> = (0..n)
-        .map(|v| through[v].iter().all(|&c| !chans[c as usize].cyclic))
+        .map(|v| through[v].iter().all(|&c| !chans[c as usize].closed))
         .collect();
     let greedy = greedy_rooks(&chans, &through, &eligible);
     let try_milp = n <= ROOK_MILP_LIMIT && time_limit.is_none_or(|t| t > 0.0);
@@ -543,7 +485,7 @@ fn greedy_rooks(chans: &[Channel], through: &[Vec<u32>], eligible: &[bool]) -> V
         let attacked = |v: usize, free: &[bool]| -> usize {
             through[v]
                 .iter()
-                .flat_map(|&c| chans[c as usize].vertices.iter())
+                .flat_map(|&c| chans[c as usize].verts.iter())
                 .filter(|&&w| free[w as usize])
                 .count()
         };
@@ -556,7 +498,7 @@ fn greedy_rooks(chans: &[Channel], through: &[Vec<u32>], eligible: &[bool]) -> V
         rooks.push(v as u32);
         free[v] = false;
         for &c in &through[v] {
-            for &w in &chans[c as usize].vertices {
+            for &w in &chans[c as usize].verts {
                 free[w as usize] = false;
             }
         }
@@ -577,7 +519,7 @@ fn milp_rooks(
         f.add_col(-1.0, 0.0, if e { 1.0 } else { 0.0 }, true);
     }
     for c in chans {
-        let mut vs: Vec<usize> = c.vertices.iter().map(|&v| v as usize).collect();
+        let mut vs: Vec<usize> = c.verts.iter().map(|&v| v as usize).collect();
         vs.sort_unstable();
         vs.dedup();
         if vs.len() >= 2 {
@@ -869,10 +811,10 @@ impl<'a> PassageModel<'a> {
         port_start.push(total);
         let (chans, _) = channels(inst);
         let mut cyclic = vec![false; total];
-        for c in chans.iter().filter(|c| c.cyclic) {
-            let m = c.vertices.len();
+        for c in chans.iter().filter(|c| c.closed) {
+            let m = c.verts.len();
             for i in 0..m {
-                let (x, y) = (c.vertices[i], c.vertices[(i + 1) % m]);
+                let (x, y) = (c.verts[i], c.verts[(i + 1) % m]);
                 let px = port_start[x as usize] + local_port(inst, x, y);
                 let py = port_start[y as usize] + local_port(inst, y, x);
                 cyclic[px] = true;
@@ -1905,7 +1847,7 @@ mod tests {
         let (mut tours, mut cyclic, mut odd) = (0, 0, 0);
         for _ in 0..RANDOM_GRAPHS {
             let inst = random_instance(&mut rng, 7);
-            if channels(&inst).0.iter().any(|c| c.cyclic) {
+            if channels(&inst).0.iter().any(|c| c.closed) {
                 cyclic += 1;
             }
             if brute_optimum(&inst, Objective::CcTurns).is_some_and(|v| v % 2 == 1) {
@@ -1949,7 +1891,7 @@ mod tests {
         .unwrap();
         let (chans, _) = channels(&ring);
         assert_eq!(chans.len(), 1);
-        assert!(chans[0].cyclic);
+        assert!(chans[0].closed);
         assert_eq!(rook_placement(&ring, None).size, 0);
         assert_eq!(optimum(&ring, Objective::CcTurns), Some(0));
         assert_eq!(optimum(&ring, Objective::TourTurns), Some(0));
