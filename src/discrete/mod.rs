@@ -18,6 +18,7 @@
 //! [`check::check`].
 
 pub mod check;
+pub mod format;
 
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
