@@ -19,6 +19,7 @@
 
 pub mod check;
 pub mod format;
+pub mod generate;
 pub mod lattice;
 
 use crate::error::{Error, Result};
