@@ -425,7 +425,7 @@ pub fn to_json(inst: &Discrete) -> String {
         }
     }
     s.push(']');
-    if inst.coords(0).is_some() {
+    if !inst.is_empty() && inst.coords(0).is_some() {
         let three = has_z(inst);
         s.push_str(",\n \"coords\": [");
         for v in 0..n as u32 {
@@ -920,7 +920,7 @@ pub fn to_text(inst: &Discrete) -> String {
             let _ = writeln!(s, "c {v} {a} {b}");
         }
     }
-    if inst.coords(0).is_some() {
+    if !inst.is_empty() && inst.coords(0).is_some() {
         let three = has_z(inst);
         for v in 0..n as u32 {
             let [x, y, z] = inst.coords(v).unwrap_or([0.0; 3]);

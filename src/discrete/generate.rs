@@ -163,8 +163,7 @@ pub fn random_voxels(n: usize, seed: u64, cavities: usize) -> Result<VoxelRegion
         // The block starts at 1..=a−1−side on each axis, so its shell is in the box.
         let span = a - 1 - side;
         let c = [0; 3].map(|_| 1 + below(&mut rng, span));
-        let cube = |lo: usize, hi: usize| {
-            let c = c;
+        let cube = move |lo: usize, hi: usize| {
             (lo..hi).flat_map(move |dz| {
                 (lo..hi)
                     .flat_map(move |dy| (lo..hi).map(move |dx| (c[0] + dx, c[1] + dy, c[2] + dz)))

@@ -45,8 +45,8 @@
 //!
 //! # The hexagonal-cell text form
 //!
-//! A `.grid` picture ([`crate::gridfile`]) read in the *odd-r offset* layout: the row of
-//! column c and height r (r = 0 the last row) is the cell of axial coordinates
+//! A `.grid` picture ([`crate::gridfile`]) read in the *odd-r offset* layout: the character in
+//! column c of the row at height r (r = 0 the last row) is the cell of axial coordinates
 //! (q, r) = (c − ⌊r/2⌋, r); the odd rows sit half a cell to the right of the even ones, so the
 //! picture
 //!
@@ -56,7 +56,9 @@
 //! ```
 //!
 //! is the 6 cells (0, 0), (1, 0), (2, 0), (0, 1), (1, 1), (2, 1), of which (0, 1) touches
-//! (0, 0) and (1, 0). The drawing coordinates are those of pointy-top hexagons with unit
+//! (0, 0), (1, 0) and (1, 1). The `.grid` reader's rules, limit ([`crate::region::MAX_PIXELS`]
+//! cells) and error messages apply. Writing puts one comment line first, then the picture of
+//! the offset bounding box. The drawing coordinates are those of pointy-top hexagons with unit
 //! centre spacing: (q + r/2, r·√3/2).
 
 use super::Discrete;
@@ -69,13 +71,16 @@ use std::path::Path;
 /// √3/2, the height of a row of the triangular lattice of unit spacing.
 const ROW_HEIGHT: f64 = 0.866_025_403_784_438_6;
 
+/// Pairs of sites opposite each other across a site.
+type OppositePairs<K> = Vec<(K, K)>;
+
 /// The instance of sites on a lattice: vertex `i` is `sites[i]` (sorted, distinct), joined to
 /// each neighbour that `forward` lists (every lattice edge listed from one of its ends), with
 /// the opposite pairs that `opposite` lists collinear where both ends are sites.
 fn lattice_instance<K: Ord + Copy>(
     sites: &[K],
     forward: &dyn Fn(K, &mut Vec<K>),
-    opposite: &dyn Fn(K, &mut Vec<(K, K)>),
+    opposite: &dyn Fn(K, &mut OppositePairs<K>),
     coords: &dyn Fn(K) -> [f64; 3],
     d: u32,
 ) -> Discrete {
