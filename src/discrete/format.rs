@@ -317,16 +317,17 @@ fn assemble(s: Stated, describe: &dyn Fn(Site) -> String) -> std::result::Result
 // ---------------------------------------------------------------------------------------------
 // JSON
 
-#[derive(Serialize, Deserialize)]
+/// The JSON form as serde reads it (written by hand in [`to_json`]).
+#[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct InstanceJson {
     vertices: u64,
     edges: Vec<[u32; 2]>,
     #[serde(default)]
     collinear: Vec<[u32; 3]>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default)]
     coords: Option<Vec<Vec<f64>>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default)]
     directions: Option<u32>,
 }
 
@@ -365,7 +366,8 @@ pub fn parse_json(text: &str, file: &str) -> Result<Discrete> {
     };
     let coords = match raw.coords {
         None => None,
-        Some(points) => {
+        Some(mut points) => {
+            exact_numbers(text, &mut points);
             let mut out = Vec::with_capacity(points.len().min(MAX_VERTICES + 1));
             for (k, p) in points.iter().enumerate() {
                 match p[..] {
@@ -403,6 +405,34 @@ pub fn parse_json(text: &str, file: &str) -> Result<Discrete> {
         let (line, column) = at(f.site);
         Error::parse(file, line, column, f.message)
     })
+}
+
+/// Reads the numbers of the `coords` list (already checked by serde to be lists of numbers)
+/// again from the text with Rust's correctly rounded parser: serde_json's default float
+/// parser (without its `float_roundtrip` feature) may miss by an ulp, and coordinates must
+/// read back as the `f64` they were written from.
+fn exact_numbers(text: &str, points: &mut [Vec<f64>]) -> Option<()> {
+    let b = text.as_bytes();
+    let mut p = json_site(text, Site::key("coords"))?;
+    p = skip_ws(b, p + 1);
+    for point in points.iter_mut() {
+        let mut q = skip_ws(b, p + 1);
+        for x in point.iter_mut() {
+            let end = skip_value(b, q)?;
+            if let Ok(exact) = text[q..end].parse::<f64>() {
+                *x = exact;
+            }
+            q = skip_ws(b, end);
+            if b.get(q) == Some(&b',') {
+                q = skip_ws(b, q + 1);
+            }
+        }
+        p = skip_ws(b, skip_value(b, p)?);
+        if b.get(p) == Some(&b',') {
+            p = skip_ws(b, p + 1);
+        }
+    }
+    Some(())
 }
 
 /// The JSON form, on one line per list entry group: `vertices`, `edges`, `collinear`, then
@@ -1047,6 +1077,24 @@ mod tests {
             assert_eq!(to_text(&back), t);
             assert_eq!(parse_discrete(&j, "x").unwrap(), g);
             assert_eq!(parse_discrete(&t, "x").unwrap(), g);
+        }
+    }
+
+    #[test]
+    fn generated_instances_round_trip() {
+        use crate::discrete::generate::*;
+        for seed in 0..4 {
+            let params = PlaneParams::default();
+            for g in [
+                random_voxels(60, seed, 1).unwrap().to_discrete(),
+                random_hex(40, seed).unwrap().to_discrete(),
+                random_honeycomb(40, seed).unwrap().to_discrete(),
+                random_plane_graph(40, seed, &params).unwrap(),
+            ] {
+                let (j, t) = (to_json(&g), to_text(&g));
+                assert_eq!(parse_json(&j, "g.json").unwrap(), g);
+                assert_eq!(parse_text(&t, "g.dm").unwrap(), g);
+            }
         }
     }
 
