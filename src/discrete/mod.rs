@@ -19,6 +19,9 @@
 
 pub mod check;
 pub mod exact;
+pub mod format;
+pub mod generate;
+pub mod lattice;
 pub mod merge;
 pub mod star_cover;
 
