@@ -178,6 +178,9 @@ fn message(e: &anyhow::Error) -> String {
 fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         Command::Gen(args) => gen_command(args),
+        Command::Info { file, json } if cli::discrete::is_discrete(&file) => {
+            cli::discrete::info(&file, json)
+        }
         Command::Info { file, json } => {
             let inst = Instance::read(&file)?;
             let mut v = serde_json::to_value(topology::summary(&inst.region))?;
@@ -192,6 +195,9 @@ fn run(cli: Cli) -> Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
+        Command::Validate {
+            file, tour, json, ..
+        } if cli::discrete::is_discrete(&file) => cli::discrete::validate(&file, &tour, json),
         Command::Validate {
             file,
             tour,

@@ -73,6 +73,14 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
     }
     let objective =
         exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
+    if super::discrete::is_discrete(&a.file) {
+        let opts = mowmill::discrete::exact::DiscreteOptions {
+            time_limit: (!a.no_time_limit).then_some(a.time_limit),
+            threads: a.threads,
+            verbose: a.verbose,
+        };
+        return super::discrete::exact(&a.file, objective, opts, a.tour_out.as_deref(), a.json);
+    }
     let inst = Instance::read(&a.file)?;
     // A milling tour of a disconnected region does not exist: that is bad input for this
     // objective (exit 2, like `solve`), not a solver failure.

@@ -15,8 +15,9 @@ pub struct ExportArgs {
     /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
     pub file: PathBuf,
     /// Output format: tsplib (MAN_2D instance of the pixels), gg (pixel list "x y", y up), wkt
-    /// (POLYGON/MULTIPOLYGON of the union of the pixels) or grid (moved to non-negative
-    /// coordinates).
+    /// (POLYGON/MULTIPOLYGON of the union of the pixels), grid (moved to non-negative
+    /// coordinates), or dm / dm-json (the region as a discrete-milling instance, its grid
+    /// graph with the east-west and north-south pairs collinear; vertex i is pixel i).
     #[arg(long, value_enum)]
     pub format: ExportFormat,
     /// Write here instead of to standard output.
@@ -30,6 +31,8 @@ pub enum ExportFormat {
     Gg,
     Wkt,
     Grid,
+    Dm,
+    DmJson,
 }
 
 pub fn export_command(a: ExportArgs) -> Result<ExitCode> {
@@ -38,6 +41,12 @@ pub fn export_command(a: ExportArgs) -> Result<ExitCode> {
         ExportFormat::Tsplib => mowmill::tsplib::to_tsplib(&inst.region, &inst.name),
         ExportFormat::Gg => mowmill::pixel_list::to_pixel_list(&inst.region),
         ExportFormat::Wkt => mowmill::wkt::to_wkt(&inst.region) + "\n",
+        ExportFormat::Dm => mowmill::discrete::format::to_text(
+            &mowmill::discrete::Discrete::from_region(&inst.region),
+        ),
+        ExportFormat::DmJson => mowmill::discrete::format::to_json(
+            &mowmill::discrete::Discrete::from_region(&inst.region),
+        ),
         // .grid rows start at x = 0 and end at y = 0, so a region reaching below either is
         // moved up and right; its metadata comments come along.
         ExportFormat::Grid => GridFile {

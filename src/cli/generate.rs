@@ -13,9 +13,10 @@ use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct GenArgs {
-    /// Instance family (see the list below).
+    /// Instance family (see the list below; `voxel`, `hex`, `honeycomb` and `plane` are
+    /// discrete-milling instances, written as `.dm`, `.json`, `.vox` or `.hex`).
     #[arg(value_parser = family_parser())]
-    pub family: Family,
+    pub family: String,
     #[command(flatten)]
     pub params: ParamArgs,
     /// Seed of the portable ChaCha generator; required by the random families.
@@ -27,8 +28,13 @@ pub struct GenArgs {
     pub out: PathBuf,
 }
 
-fn family_parser() -> impl TypedValueParser<Value = Family> {
-    PossibleValuesParser::new(Family::ALL.map(Family::name)).try_map(|s| s.parse::<Family>())
+fn family_parser() -> PossibleValuesParser {
+    PossibleValuesParser::new(
+        Family::ALL
+            .map(Family::name)
+            .into_iter()
+            .chain(super::discrete::FAMILIES.iter().copied()),
+    )
 }
 
 fn style_parser() -> impl TypedValueParser<Value = Style> {
@@ -96,7 +102,27 @@ impl FromArgMatches for ParamArgs {
 }
 
 pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
-    let info = a.family.info();
+    if super::discrete::FAMILIES.contains(&a.family.as_str()) {
+        let (mut n, mut holes) = (None, None);
+        for &(param, value) in &a.params.0 {
+            match (param, value) {
+                (Param::N, ParamValue::Count(v)) => n = Some(v),
+                (Param::Holes, ParamValue::Count(v)) => holes = Some(v),
+                _ => {
+                    return Err(Error::invalid(format!(
+                        "parameter `{}` does not apply to family {} (it takes: n{})",
+                        param.name(),
+                        a.family,
+                        if a.family == "voxel" { ", holes" } else { "" }
+                    ))
+                    .into());
+                }
+            }
+        }
+        return super::discrete::generate(&a.family, n, holes, a.seed, &a.out);
+    }
+    let family: Family = a.family.parse()?;
+    let info = family.info();
     let seed = match a.seed {
         Some(seed) => seed,
         None if info.random => {
@@ -108,7 +134,7 @@ pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
         }
         None => 0,
     };
-    let mut params = GenParams::new(a.family, seed);
+    let mut params = GenParams::new(family, seed);
     for &(param, value) in &a.params.0 {
         params.set(param, value)?;
     }

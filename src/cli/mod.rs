@@ -2,6 +2,7 @@
 
 pub mod algos;
 pub mod bench;
+pub mod discrete;
 pub mod exact;
 pub mod export;
 pub mod generate;

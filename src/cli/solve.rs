@@ -107,6 +107,20 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             "--turn-cost applies to --objective weighted or weighted-cc"
         ));
     }
+    if super::discrete::is_discrete(&a.file) {
+        let Some(algo) = &a.algo else {
+            bail!(mowmill::Error::invalid(
+                "outside programs (--command) run on grid instances only"
+            ));
+        };
+        return super::discrete::solve(
+            &a.file,
+            algo,
+            matches!(wanted, Some(Objective::CcTurns)),
+            a.tour_out.as_deref(),
+            a.json,
+        );
+    }
     let inst = Instance::read(&a.file)?;
     let options = Options {
         merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
