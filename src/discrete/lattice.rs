@@ -461,6 +461,17 @@ impl HexRegion {
         )
     }
 
+    /// Reads a hexagonal-cell text file.
+    pub fn read(path: &Path) -> Result<HexRegion> {
+        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let name = path.display().to_string();
+        HexRegion::parse(&utf8_text(bytes, &name)?, &name)
+    }
+
+    pub fn write(&self, path: &Path) -> Result<()> {
+        std::fs::write(path, self.to_text()?).map_err(|e| Error::io(path, e))
+    }
+
     /// The hexagonal-cell text: a comment line, then the offset picture. Fails when a cell has
     /// r < 0 or an offset column below 0 (see [`HexRegion::normalized`]).
     pub fn to_text(&self) -> Result<String> {
@@ -795,6 +806,10 @@ mod tests {
         let again = HexRegion::parse(&n.to_text().unwrap(), "h.hex").unwrap();
         assert_eq!(again, n);
         assert_eq!(again.to_discrete().edge_count(), 3);
+        let path = std::env::temp_dir().join(format!("mowmill-hex-{}.hex", std::process::id()));
+        n.write(&path).unwrap();
+        assert_eq!(HexRegion::read(&path).unwrap(), n);
+        std::fs::remove_file(&path).unwrap();
         let e = HexRegion::parse("#\n#?\n", "h.hex")
             .unwrap_err()
             .to_string();
