@@ -16,38 +16,15 @@ use super::Discrete;
 use super::format::MAX_VERTICES;
 use super::lattice::{HEX_STEPS, HexRegion, HoneycombRegion, HoneycombVertex, VoxelRegion};
 use crate::error::{Error, Result};
-use rand::{RngExt, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use std::collections::VecDeque;
 
-type Rng = ChaCha8Rng;
+use crate::generate::rng::{Rng, below, rng_for, unit};
 
 /// Stream tags: one independent stream per family.
 const TAG_VOXELS: u64 = 0xD17_0001;
 const TAG_HEX: u64 = 0xD17_0002;
 const TAG_HONEYCOMB: u64 = 0xD17_0003;
 const TAG_PLANE: u64 = 0xD17_0004;
-
-/// The seeding of `crate::generate`'s streams (private to that module): splitmix64 of the seed
-/// and the tag, into ChaCha8.
-fn rng_for(seed: u64, tag: u64) -> Rng {
-    fn splitmix(mut z: u64) -> u64 {
-        z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    Rng::seed_from_u64(splitmix(seed ^ splitmix(tag)))
-}
-
-/// Uniform in `0..n` (n ≥ 1), through u64 so that 32- and 64-bit machines agree.
-fn below(rng: &mut Rng, n: usize) -> usize {
-    rng.random_range(0..n as u64) as usize
-}
-
-fn unit(rng: &mut Rng) -> f64 {
-    rng.random::<f64>()
-}
 
 /// The smallest k with k^power ≥ m (integers, so no platform's `cbrt` decides a box size).
 fn root_ceil(m: usize, power: u32) -> usize {

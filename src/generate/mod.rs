@@ -136,7 +136,8 @@ mod random_holed;
 mod random_simple;
 mod rect;
 mod registry;
-mod rng;
+// Shared with the discrete generators (`crate::discrete::generate`).
+pub(crate) mod rng;
 mod spec;
 mod staircase;
 mod styles;
