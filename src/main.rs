@@ -209,19 +209,20 @@ fn run(cli: Cli) -> Result<ExitCode> {
             let report = checker::check(&inst.region, &cover, mode);
             if json {
                 println!("{}", serde_json::to_string_pretty(&report)?);
-            } else if report.valid {
-                println!(
-                    "valid: length {}, turns {}, {} cycle(s), max coverage {}",
-                    report.length, report.turns, report.cycles, report.max_coverage
-                );
-            } else {
-                println!("invalid: {}", report.error.as_deref().unwrap_or("?"));
+                return Ok(if report.valid {
+                    ExitCode::SUCCESS
+                } else {
+                    ExitCode::from(1)
+                });
             }
-            Ok(if report.valid {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(1)
-            })
+            Ok(cli::print_validation(&cli::Checked {
+                valid: report.valid,
+                length: report.length,
+                turns: report.turns,
+                cycles: report.cycles,
+                max_coverage: report.max_coverage,
+                error: report.error.as_deref(),
+            }))
         }
         Command::Export(args) => export_command(args),
         Command::Solve(args) => solve_command(args),

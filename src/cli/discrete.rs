@@ -60,7 +60,7 @@ pub fn info(path: &Path, as_json: bool) -> Result<ExitCode> {
         "model": "discrete",
         "n": inst.len(),
         "edges": inst.edge_count(),
-        "components": components(&inst),
+        "components": inst.components(),
         "delta": p.delta,
         "mu": p.mu,
         "rho": p.rho,
@@ -70,29 +70,6 @@ pub fn info(path: &Path, as_json: bool) -> Result<ExitCode> {
     });
     print_object(&v, as_json)?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// The number of connected components.
-fn components(inst: &Discrete) -> usize {
-    let mut seen = vec![false; inst.len()];
-    let mut count = 0;
-    for s in 0..inst.len() as u32 {
-        if seen[s as usize] {
-            continue;
-        }
-        count += 1;
-        seen[s as usize] = true;
-        let mut stack = vec![s];
-        while let Some(v) = stack.pop() {
-            for &w in inst.neighbors(v) {
-                if !seen[w as usize] {
-                    seen[w as usize] = true;
-                    stack.push(w);
-                }
-            }
-        }
-    }
-    count
 }
 
 fn print_object(v: &serde_json::Value, as_json: bool) -> Result<()> {
@@ -114,19 +91,20 @@ pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
     let report = check::check(&inst, &cover.cycles);
     if as_json {
         println!("{}", serde_json::to_string_pretty(&report)?);
-    } else if report.valid {
-        println!(
-            "valid: length {}, turns {}, {} cycle(s), max coverage {}",
-            report.length, report.turns, report.cycles, report.max_coverage
-        );
-    } else {
-        println!("invalid: {}", report.error.as_deref().unwrap_or("?"));
+        return Ok(if report.valid {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(1)
+        });
     }
-    Ok(if report.valid {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    })
+    Ok(super::print_validation(&super::Checked {
+        valid: report.valid,
+        length: report.length,
+        turns: report.turns,
+        cycles: report.cycles,
+        max_coverage: report.max_coverage,
+        error: report.error.as_deref(),
+    }))
 }
 
 /// `exact` on a discrete instance (the passage model of [`dexact`]).
@@ -138,12 +116,12 @@ pub fn exact(
     as_json: bool,
 ) -> Result<ExitCode> {
     let inst = read(path)?;
-    if objective.is_tour() && components(&inst) != 1 {
+    if objective.is_tour() && inst.components() != 1 {
         return Err(Error::invalid(format!(
             "{}: the instance has {} connected components; objective {objective} is a tour, \
              which needs one (cc-turns accepts several)",
             path.display(),
-            components(&inst)
+            inst.components()
         ))
         .into());
     }
@@ -154,20 +132,15 @@ pub fn exact(
     if as_json {
         println!("{}", serde_json::to_string_pretty(&result)?);
     } else {
-        println!(
-            "{} {}: value {} lower bound {} ({}) in {:.2}s, {} rounds{}",
-            result.objective,
-            result.status,
-            result.value.map_or("-".to_string(), |v| v.to_string()),
+        super::print_exact_line(
+            &result.objective,
+            &result.status.to_string(),
+            result.value,
             result.lower_bound,
-            result.lb_source,
+            &result.lb_source,
             result.seconds,
             result.rounds,
-            result
-                .message
-                .as_deref()
-                .map(|m| format!(" — {m}"))
-                .unwrap_or_default()
+            result.message.as_deref(),
         );
     }
     let ok = result.valid && !matches!(result.status, mowmill::exact::Status::Error);
@@ -263,7 +236,7 @@ pub fn solve(
     if let Some(out) = tour_out {
         DiscreteCover::new(shown.clone()).write(out)?;
     }
-    let valid = cc.valid && tr.valid && tr.cycles == components(&inst);
+    let valid = cc.valid && tr.valid && tr.cycles == inst.components();
     let all_hold = verdicts.iter().all(|v| v["holds"] == json!(true));
     let v = json!({
         "algorithm": algo,

@@ -111,20 +111,15 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
     if a.json {
         println!("{}", serde_json::to_string_pretty(&result)?);
     } else {
-        println!(
-            "{} {}: value {} lower bound {} ({}) in {:.2}s, {} rounds{}",
-            result.objective,
-            result.status,
-            result.value.map_or("-".to_string(), |v| v.to_string()),
+        super::print_exact_line(
+            &result.objective.to_string(),
+            &result.status.to_string(),
+            result.value,
             result.lower_bound,
-            result.lb_source,
+            &result.lb_source,
             result.seconds,
             result.rounds,
-            result
-                .message
-                .as_deref()
-                .map(|m| format!(" — {m}"))
-                .unwrap_or_default()
+            result.message.as_deref(),
         );
     }
     let ok = result.valid && !matches!(result.status, exact::Status::Error);

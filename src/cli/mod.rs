@@ -11,6 +11,50 @@ pub mod solve;
 pub mod tight;
 
 use clap::builder::{PossibleValue, PossibleValuesParser};
+use std::process::ExitCode;
+
+/// What a checker recounted, as `validate` prints it (both models' reports have these).
+pub struct Checked<'a> {
+    pub valid: bool,
+    pub length: u64,
+    pub turns: u64,
+    pub cycles: usize,
+    pub max_coverage: u32,
+    pub error: Option<&'a str>,
+}
+
+/// Prints `validate`'s line and gives its exit code (1 when invalid).
+pub fn print_validation(c: &Checked) -> ExitCode {
+    if c.valid {
+        println!(
+            "valid: length {}, turns {}, {} cycle(s), max coverage {}",
+            c.length, c.turns, c.cycles, c.max_coverage
+        );
+        ExitCode::SUCCESS
+    } else {
+        println!("invalid: {}", c.error.unwrap_or("?"));
+        ExitCode::from(1)
+    }
+}
+
+/// The one line `exact` prints for a solve of either model.
+#[allow(clippy::too_many_arguments)]
+pub fn print_exact_line(
+    objective: &str,
+    status: &str,
+    value: Option<u64>,
+    lower_bound: u64,
+    lb_source: &str,
+    seconds: f64,
+    rounds: u32,
+    message: Option<&str>,
+) {
+    println!(
+        "{objective} {status}: value {} lower bound {lower_bound} ({lb_source}) in {seconds:.2}s, {rounds} rounds{}",
+        value.map_or("-".to_string(), |v| v.to_string()),
+        message.map(|m| format!(" — {m}")).unwrap_or_default()
+    );
+}
 
 /// A clap parser that accepts exactly `names` and lists them in `--help`; the old objective
 /// spelling `tour-turns` is accepted as an alias of `turns`.

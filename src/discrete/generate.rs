@@ -347,20 +347,7 @@ mod tests {
     use crate::discrete::format::to_text;
 
     fn connected(g: &Discrete) -> bool {
-        let mut seen = vec![false; g.len()];
-        let mut stack = vec![0u32];
-        seen[0] = true;
-        let mut count = 1;
-        while let Some(v) = stack.pop() {
-            for &w in g.neighbors(v) {
-                if !seen[w as usize] {
-                    seen[w as usize] = true;
-                    count += 1;
-                    stack.push(w);
-                }
-            }
-        }
-        count == g.len()
+        g.components() == 1
     }
 
     /// The enclosed empty components of a voxel region (6-connected empties that the outside

@@ -231,6 +231,12 @@ impl Discrete {
         })
     }
 
+    /// The number of connected components.
+    pub fn components(&self) -> usize {
+        let edges = self.edges().map(|(a, b)| (a as usize, b as usize));
+        crate::topology::graph_components(self.len(), edges).1
+    }
+
     /// Whether `a` and `b` are joined by an edge.
     pub fn adjacent(&self, a: u32, b: u32) -> bool {
         (a as usize) < self.len() && self.port(a, b).is_some()

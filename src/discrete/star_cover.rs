@@ -542,29 +542,7 @@ pub(crate) mod tests {
             .collect();
         let mut inst = Discrete::new(cells.len(), &edges, &collinear, Some(coords)).ok()?;
         inst.set_directions(Some(axes.len() as u32));
-        (!inst.is_empty() && components(&inst) == 1).then_some(inst)
-    }
-
-    pub(crate) fn components(inst: &Discrete) -> usize {
-        let mut seen = vec![false; inst.len()];
-        let mut count = 0;
-        for s in 0..inst.len() {
-            if seen[s] {
-                continue;
-            }
-            count += 1;
-            let mut stack = vec![s as u32];
-            seen[s] = true;
-            while let Some(v) = stack.pop() {
-                for &w in inst.neighbors(v) {
-                    if !seen[w as usize] {
-                        seen[w as usize] = true;
-                        stack.push(w);
-                    }
-                }
-            }
-        }
-        count
+        (!inst.is_empty() && inst.components() == 1).then_some(inst)
     }
 
     /// Independently of [`channels`]: the vertices one straight link away from `r`, and
@@ -799,7 +777,7 @@ pub(crate) mod tests {
                 continue;
             }
             let inst = Discrete::from_region(&region);
-            if components(&inst) != 1 {
+            if inst.components() != 1 {
                 continue;
             }
             tested += 1;
@@ -925,7 +903,7 @@ pub(crate) mod tests {
 
 #[cfg(test)]
 mod hill_climb {
-    use super::tests::{Figures, assert_pipeline, components, random_instance};
+    use super::tests::{Figures, assert_pipeline, random_instance};
     use super::*;
     use crate::discrete::check::check;
     use crate::discrete::merge::{merge, theorem_4_2_bound};
@@ -969,7 +947,7 @@ mod hill_climb {
             }
         }
         let out = Discrete::new(n as usize, &edges, &pairs, None).ok()?;
-        (components(&out) == 1).then_some(out)
+        (out.components() == 1).then_some(out)
     }
 
     /// Hill-climbs small instances for (a) the star cover's turns against Σ β over the rooks
