@@ -1796,7 +1796,7 @@ mod tests {
         }
         assert!(fixtures >= 5, "only {fixtures} fixtures");
         let mut rng = ChaCha8Rng::seed_from_u64(1717);
-        for _ in 0..RANDOM_REGIONS {
+        for _ in 0..soak(RANDOM_REGIONS) {
             regions.push(random_region(&mut rng, 16));
         }
         let grid_opts = ExactOptions {
@@ -1831,6 +1831,14 @@ mod tests {
     const RANDOM_REGIONS: usize = 150;
     const RANDOM_GRAPHS: usize = 250;
 
+    /// `MOWMILL_SOAK=K` runs K instances instead of `default` (a soak; the seeds are fixed).
+    fn soak(default: usize) -> usize {
+        std::env::var("MOWMILL_SOAK")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(default)
+    }
+
     /// The models against the brute force on random non-grid instances, every objective;
     /// the exact rook placement against enumeration, and below the cc-turns optimum.
     #[test]
@@ -1845,7 +1853,7 @@ mod tests {
             Objective::WeightedCc { turn_cost: 0 },
         ];
         let (mut tours, mut cyclic, mut odd) = (0, 0, 0);
-        for _ in 0..RANDOM_GRAPHS {
+        for _ in 0..soak(RANDOM_GRAPHS) {
             let inst = random_instance(&mut rng, 7);
             if channels(&inst).0.iter().any(|c| c.closed) {
                 cyclic += 1;
@@ -1868,7 +1876,7 @@ mod tests {
         }
         // The instances must exercise what the grid does not have.
         assert!(
-            tours > RANDOM_GRAPHS / 3,
+            tours > soak(RANDOM_GRAPHS) / 3,
             "only {tours} connected instances"
         );
         assert!(cyclic > 20, "only {cyclic} instances with a cyclic channel");
