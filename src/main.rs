@@ -102,7 +102,8 @@ enum Command {
     },
     /// Draw an instance, optionally with a tour over it, to SVG or PNG.
     Draw {
-        /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
+        /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list; discrete: .dm, .json,
+        /// .vox, .hex).
         file: PathBuf,
         /// Tour file to draw over the region.
         #[arg(long)]
@@ -269,6 +270,14 @@ fn run(cli: Cli) -> Result<ExitCode> {
             })
         }
         Command::Algos(a) => algos_command(a),
+        Command::Draw {
+            file,
+            tour,
+            out,
+            title,
+        } if cli::discrete::is_discrete(&file) => {
+            cli::discrete::draw(&file, tour.as_deref(), &out, title)
+        }
         Command::Draw {
             file,
             tour,

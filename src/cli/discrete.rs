@@ -384,3 +384,29 @@ pub fn generate(
     );
     Ok(ExitCode::SUCCESS)
 }
+
+/// `draw` on a discrete instance: its cells (or its graph) and, with `--tour`, the walk file's
+/// walks, to SVG or PNG; one panel per z-layer for voxels. The caption carries the checker's
+/// counts, as for grid regions.
+pub fn draw(
+    path: &Path,
+    tour: Option<&Path>,
+    out: &Path,
+    title: Option<String>,
+) -> Result<ExitCode> {
+    let inst = read(path)?;
+    let cover = tour.map(DiscreteCover::read).transpose()?;
+    let walks = cover.as_ref().map(|c| c.cycles.as_slice());
+    let name = path.file_stem().map_or_else(
+        || path.display().to_string(),
+        |s| s.to_string_lossy().into_owned(),
+    );
+    let opts = mowmill::draw::DrawOptions {
+        title: Some(title.unwrap_or(name)),
+        caption: Some(mowmill::discrete::draw::caption(&inst, walks)),
+        ..mowmill::draw::DrawOptions::default()
+    };
+    mowmill::discrete::draw::draw(&inst, walks, out, &opts)?;
+    eprintln!("wrote {}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
