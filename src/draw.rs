@@ -54,7 +54,7 @@ pub const DETAIL_LIMIT: usize = 200;
 pub const AUTO_SIDE_PX: f64 = 800.0;
 
 /// The largest automatic pixel size, so that tiny regions do not turn into posters.
-const MAX_AUTO_PIXEL_SIZE: f64 = 120.0;
+pub(crate) const MAX_AUTO_PIXEL_SIZE: f64 = 120.0;
 
 /// The largest picture [`draw`] will make, in output pixels.
 const MAX_IMAGE_PX: u64 = 64_000_000;
@@ -337,11 +337,11 @@ fn grid_segments(region: &Region) -> Vec<[(i32, i32); 2]> {
 }
 
 /// Sideways distance between two strands of an edge traversed more than once, in grid units.
-const STRAND_GAP: f64 = 0.2;
+pub(crate) const STRAND_GAP: f64 = 0.2;
 /// The widest the strands of one edge may spread, in grid units.
-const STRAND_SPREAD: f64 = 0.5;
+pub(crate) const STRAND_SPREAD: f64 = 0.5;
 /// Half the length of the slanted jog where a straight walk changes strand, in grid units.
-const JOG: f64 = 0.12;
+pub(crate) const JOG: f64 = 0.12;
 
 /// One closed walk, ready to draw, in grid units.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -499,16 +499,16 @@ fn walk_shapes(cover: &CycleCover, detailed: bool) -> Result<Vec<WalkShape>> {
 // Layout and rendering, in output pixels (y down).
 // ---------------------------------------------------------------------------------------------
 
-const MARGIN_PX: f64 = 16.0;
-const TITLE_PX: f64 = 22.0;
-const CAPTION_PX: f64 = 17.0;
+pub(crate) const MARGIN_PX: f64 = 16.0;
+pub(crate) const TITLE_PX: f64 = 22.0;
+pub(crate) const CAPTION_PX: f64 = 17.0;
 
-const REGION_FILL: RGBColor = RGBColor(0xe9, 0xe9, 0xe9);
+pub(crate) const REGION_FILL: RGBColor = RGBColor(0xe9, 0xe9, 0xe9);
 const PLAIN_REGION_FILL: RGBColor = RGBColor(0xd6, 0xd6, 0xd6);
-const GRID_LINE: RGBColor = RGBColor(0xc8, 0xc8, 0xc8);
-const OUTLINE: RGBColor = RGBColor(0x33, 0x33, 0x33);
-const TITLE_COLOUR: RGBColor = RGBColor(0x1a, 0x1a, 0x1a);
-const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
+pub(crate) const GRID_LINE: RGBColor = RGBColor(0xc8, 0xc8, 0xc8);
+pub(crate) const OUTLINE: RGBColor = RGBColor(0x33, 0x33, 0x33);
+pub(crate) const TITLE_COLOUR: RGBColor = RGBColor(0x1a, 0x1a, 0x1a);
+pub(crate) const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
 
 /// Walk colours: the Okabe–Ito colour-blind-safe palette without its yellow and black (too
 /// faint and too close to the outline), then two more; cycled when there are more walks. The
@@ -837,7 +837,7 @@ fn write_png(scene: &Scene, out: &Path) -> Result<()> {
 }
 
 /// Averages each `k` × `k` block of an RGB image of `w * k` × `h * k` pixels.
-fn downsample(big: &[u8], w: usize, h: usize, k: usize) -> Vec<u8> {
+pub(crate) fn downsample(big: &[u8], w: usize, h: usize, k: usize) -> Vec<u8> {
     let mut small = vec![0u8; w * h * 3];
     let mut sums = vec![0u32; w * 3];
     for y in 0..h {

@@ -21,7 +21,11 @@
 
 use crate::discrete::check;
 use crate::discrete::{Discrete, VertexWalk};
-use crate::draw::{AUTO_SIDE_PX, DETAIL_LIMIT, DrawOptions, FONT_FAMILY, PALETTE, ensure_fonts};
+use crate::draw::{
+    AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DETAIL_LIMIT, DrawOptions, FONT_FAMILY, GRID_LINE,
+    JOG, MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, REGION_FILL, STRAND_GAP, STRAND_SPREAD,
+    TITLE_COLOUR, TITLE_PX, ensure_fonts,
+};
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -390,12 +394,6 @@ fn cell_shapes(inst: &Discrete, g: &Geometry, borders: bool) -> Vec<PanelCells> 
     panels
 }
 
-/// Sideways distance between two strands of an edge walked more than once, in edge lengths.
-const STRAND_GAP: f64 = 0.2;
-/// The widest the strands of one edge may spread, in edge lengths.
-const STRAND_SPREAD: f64 = 0.5;
-/// Half the length of the slanted jog where a straight walk changes strand, in edge lengths.
-const JOG: f64 = 0.12;
 /// How far from the centre of its cell a move between layers starts, along each axis, in edge
 /// lengths (up to the upper right, down to the lower left).
 const VERTICAL_SHIFT: f64 = 0.18;
@@ -648,12 +646,7 @@ fn walk_shapes(
 // Layout and rendering, in output pixels (y down).
 // ---------------------------------------------------------------------------------------------
 
-const MARGIN_PX: f64 = 16.0;
-const TITLE_PX: f64 = 22.0;
-const CAPTION_PX: f64 = 17.0;
 const LABEL_PX: f64 = 15.0;
-/// The largest automatic scale, in output pixels per edge length.
-const MAX_AUTO_PIXEL_SIZE: f64 = 120.0;
 /// The largest picture, in output pixels.
 const MAX_IMAGE_PX: f64 = 64_000_000.0;
 /// Gap between panels, in edge lengths.
@@ -661,14 +654,9 @@ const PANEL_GAP: f64 = 1.0;
 /// At most this many panels in a row when there are few layers.
 const SIDE_BY_SIDE: usize = 4;
 
-const REGION_FILL: RGBColor = RGBColor(0xe9, 0xe9, 0xe9);
-const GRID_LINE: RGBColor = RGBColor(0xc8, 0xc8, 0xc8);
 const EDGE_LINE: RGBColor = RGBColor(0xb4, 0xb4, 0xb4);
 const PANEL_FRAME: RGBColor = RGBColor(0xe0, 0xe0, 0xe0);
 const VERTEX_DOT: RGBColor = RGBColor(0x80, 0x80, 0x80);
-const OUTLINE: RGBColor = RGBColor(0x33, 0x33, 0x33);
-const TITLE_COLOUR: RGBColor = RGBColor(0x1a, 0x1a, 0x1a);
-const CAPTION_COLOUR: RGBColor = RGBColor(0x4d, 0x4d, 0x4d);
 
 /// Where the panels go on the canvas.
 #[derive(Clone, Debug)]
@@ -1049,22 +1037,7 @@ fn write_png(scene: &Scene, out: &Path) -> Result<()> {
         render(&area, scene, k as f64, Strokes::Segments)
             .map_err(|e| Error::invalid(format!("drawing failed: {e}")))?;
     }
-    let mut small = vec![0u8; w * h * 3];
-    let area = (k * k) as u32;
-    for y in 0..h {
-        for x in 0..w {
-            for c in 0..3 {
-                let mut sum = 0u32;
-                for dy in 0..k {
-                    let row = (y * k + dy) * bw * 3;
-                    for dx in 0..k {
-                        sum += u32::from(big[row + (x * k + dx) * 3 + c]);
-                    }
-                }
-                small[(y * w + x) * 3 + c] = ((sum + area / 2) / area) as u8;
-            }
-        }
-    }
+    let small = crate::draw::downsample(&big, w, h, k);
     let mut backend = BitMapBackend::new(out, (w as u32, h as u32));
     backend
         .blit_bitmap((0, 0), (w as u32, h as u32), &small)
