@@ -208,22 +208,18 @@ fn run(cli: Cli) -> Result<ExitCode> {
             let inst = Instance::read(&file)?;
             let cover = CycleCover::read(&tour)?;
             let report = checker::check(&inst.region, &cover, mode);
-            if json {
-                println!("{}", serde_json::to_string_pretty(&report)?);
-                return Ok(if report.valid {
-                    ExitCode::SUCCESS
-                } else {
-                    ExitCode::from(1)
-                });
-            }
-            Ok(cli::print_validation(&cli::Checked {
-                valid: report.valid,
-                length: report.length,
-                turns: report.turns,
-                cycles: report.cycles,
-                max_coverage: report.max_coverage,
-                error: report.error.as_deref(),
-            }))
+            cli::print_validation(
+                &report,
+                &cli::Checked {
+                    valid: report.valid,
+                    length: report.length,
+                    turns: report.turns,
+                    cycles: report.cycles,
+                    max_coverage: report.max_coverage,
+                    error: report.error.as_deref(),
+                },
+                json,
+            )
         }
         Command::Export(args) => export_command(args),
         Command::Solve(args) => solve_command(args),

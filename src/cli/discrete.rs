@@ -89,22 +89,18 @@ pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
     let inst = read(path)?;
     let cover = DiscreteCover::read(tour)?;
     let report = check::check(&inst, &cover.cycles);
-    if as_json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
-        return Ok(if report.valid {
-            ExitCode::SUCCESS
-        } else {
-            ExitCode::from(1)
-        });
-    }
-    Ok(super::print_validation(&super::Checked {
-        valid: report.valid,
-        length: report.length,
-        turns: report.turns,
-        cycles: report.cycles,
-        max_coverage: report.max_coverage,
-        error: report.error.as_deref(),
-    }))
+    super::print_validation(
+        &report,
+        &super::Checked {
+            valid: report.valid,
+            length: report.length,
+            turns: report.turns,
+            cycles: report.cycles,
+            max_coverage: report.max_coverage,
+            error: report.error.as_deref(),
+        },
+        as_json,
+    )
 }
 
 /// `exact` on a discrete instance (the passage model of [`dexact`]).

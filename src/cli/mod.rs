@@ -23,18 +23,28 @@ pub struct Checked<'a> {
     pub error: Option<&'a str>,
 }
 
-/// Prints `validate`'s line and gives its exit code (1 when invalid).
-pub fn print_validation(c: &Checked) -> ExitCode {
-    if c.valid {
+/// Prints `validate`'s answer, the whole report as JSON or one line, and gives its exit code
+/// (1 when invalid).
+pub fn print_validation(
+    report: &impl serde::Serialize,
+    c: &Checked,
+    json: bool,
+) -> anyhow::Result<ExitCode> {
+    if json {
+        println!("{}", serde_json::to_string_pretty(report)?);
+    } else if c.valid {
         println!(
             "valid: length {}, turns {}, {} cycle(s), max coverage {}",
             c.length, c.turns, c.cycles, c.max_coverage
         );
-        ExitCode::SUCCESS
     } else {
         println!("invalid: {}", c.error.unwrap_or("?"));
-        ExitCode::from(1)
     }
+    Ok(if c.valid {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 /// The one line `exact` prints for a solve of either model.

@@ -79,7 +79,7 @@ use crate::exact::cuts::violated_cuts;
 use crate::exact::driver::{self, CutModel, Solved, Stop};
 use crate::exact::lp::{Deadline, Formulation, Outcome, Row, Settings, solve_mip};
 use crate::exact::walks::{euler_walk, splice_walks};
-use crate::exact::{Objective, Status};
+use crate::exact::{Objective, Status, certify};
 use crate::topology::graph_components;
 use serde::Serialize;
 
@@ -288,16 +288,7 @@ fn assemble(inst: &Discrete, objective: Objective, a: Answer, seconds: f64) -> D
             r.walks = Some(walks);
         }
     }
-    r.status = match (&a.stop, r.value) {
-        _ if message.is_some() && !matches!(a.stop, Stop::Infeasible) => Status::Error,
-        (Stop::Infeasible, _) => Status::Infeasible,
-        (_, Some(v)) if v == r.lower_bound => Status::Optimal,
-        (Stop::Error(_), _) => Status::Error,
-        _ => Status::TimeLimit,
-    };
-    if r.status == Status::TimeLimit && r.value.is_none() {
-        message.get_or_insert_with(|| "time limit before any feasible cover".into());
-    }
+    r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
     r.message = message;
     r
 }

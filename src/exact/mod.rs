@@ -338,6 +338,29 @@ impl Answer {
     }
 }
 
+/// The status of a solve, the one rule for both models' certificates: `optimal` only when the
+/// checker's recount of the walk (`value`) equals the proven lower bound and nothing went
+/// wrong (`message` holds the first problem found, e.g. a walk the checker rejects); a time
+/// limit without any walk says so in `message`.
+pub(crate) fn certify(
+    stop: &Stop,
+    value: Option<u64>,
+    lower_bound: u64,
+    message: &mut Option<String>,
+) -> Status {
+    let status = match (stop, value) {
+        _ if message.is_some() && !matches!(stop, Stop::Infeasible) => Status::Error,
+        (Stop::Infeasible, _) => Status::Infeasible,
+        (_, Some(v)) if v == lower_bound => Status::Optimal,
+        (Stop::Error(_), _) => Status::Error,
+        _ => Status::TimeLimit,
+    };
+    if status == Status::TimeLimit && value.is_none() {
+        message.get_or_insert_with(|| "time limit before any feasible cover".into());
+    }
+    status
+}
+
 /// Solves `objective` on `region` exactly, within `opts.time_limit`.
 ///
 /// # Arguments
@@ -491,16 +514,7 @@ fn assemble(
             r.cover = Some(cover);
         }
     }
-    r.status = match (&a.stop, r.value) {
-        _ if message.is_some() && !matches!(a.stop, Stop::Infeasible) => Status::Error,
-        (Stop::Infeasible, _) => Status::Infeasible,
-        (_, Some(v)) if v == r.lower_bound => Status::Optimal,
-        (Stop::Error(_), _) => Status::Error,
-        _ => Status::TimeLimit,
-    };
-    if r.status == Status::TimeLimit && r.value.is_none() {
-        message.get_or_insert_with(|| "time limit before any feasible cover".into());
-    }
+    r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
     r.message = message;
     r
 }
