@@ -14,7 +14,11 @@
 //! 4. decide every applicable guarantee: against OPT when it is known, against the lower bound
 //!    when that suffices (value ≤ f·LB ≤ f·OPT), else undecided.
 
-use crate::algorithms::{self, Algorithm, Cutter, Guarantee, Measured, Merge, Objective, Options};
+use crate::algorithms::{
+    self, Algorithm, Cutter, Guarantee, Measured, Merge, Model, Objective, Options,
+};
+use crate::discrete::Discrete;
+use crate::discrete::format::DiscreteCover;
 use crate::bounds;
 use crate::checker::{self, Report};
 use crate::error::{Error, Result};
@@ -90,11 +94,23 @@ impl Subject<'_> {
         objective: Objective,
         region: &Region,
         options: &Options,
-    ) -> Vec<&Guarantee> {
+    ) -> Vec<Guarantee> {
+        self.applicable_to(objective, Model::Grid(region), options)
+    }
+
+    /// [`Subject::applicable`] on an instance of either model, each guarantee with the
+    /// instance's parameters put in ([`Guarantee::on`]).
+    pub fn applicable_to(
+        &self,
+        objective: Objective,
+        model: Model<'_>,
+        options: &Options,
+    ) -> Vec<Guarantee> {
         self.guarantees()
             .iter()
-            .filter(|g| g.objective == objective && g.when.applies(region))
+            .filter(|g| g.objective == objective)
             .filter(|_| objective != Objective::LawnLength || options.cutter == Cutter::Square)
+            .filter_map(|g| g.on(model))
             .collect()
     }
 
@@ -204,11 +220,12 @@ pub struct Verdict {
     pub holds: Option<bool>,
 }
 
-/// One checked output of an evaluation.
+/// One checked output of an evaluation (its walks are pixels, or vertices of a discrete
+/// instance).
 #[derive(Clone, Debug)]
-pub struct Checked {
+pub struct Checked<C = CycleCover> {
     pub objective: Objective,
-    pub cover: CycleCover,
+    pub cover: C,
     /// The checker accepted it, and it is one closed walk where the objective is a tour.
     pub valid: bool,
     /// Why it is invalid.
@@ -233,23 +250,23 @@ pub struct Checked {
 
 /// Everything one run of one algorithm on one region gave.
 #[derive(Clone, Debug)]
-pub struct Evaluation {
+pub struct Evaluation<C = CycleCover> {
     pub algorithm: String,
     pub options: Options,
     pub seconds: f64,
     /// Named integers the algorithm reports (strip cover size, matching weight, ...).
     pub certificates: BTreeMap<String, i64>,
     /// One entry per requested objective the algorithm produced.
-    pub outputs: Vec<Checked>,
+    pub outputs: Vec<Checked<C>>,
     /// Requested objectives the algorithm did not produce, with why.
     pub missing: Vec<(Objective, String)>,
     /// The run failed: every requested objective is missing for this reason.
     pub error: Option<String>,
 }
 
-impl Evaluation {
+impl<C> Evaluation<C> {
     /// The checked output for `objective`.
-    pub fn output(&self, objective: Objective) -> Option<&Checked> {
+    pub fn output(&self, objective: Objective) -> Option<&Checked<C>> {
         self.outputs.iter().find(|c| c.objective == objective)
     }
 }
@@ -368,23 +385,7 @@ pub fn judge(
     };
     let n = region.len() as u64;
     let applicable = subject.applicable(objective, region, options);
-    let verdicts: Vec<Verdict> = applicable
-        .iter()
-        .map(|g| Verdict {
-            bound: g.to_string(),
-            factor: g.factor(),
-            holds: g.decide(&measured, n, opt, lower_bound),
-        })
-        .collect();
-    let within_guarantee = if verdicts.is_empty() {
-        None
-    } else if verdicts.iter().any(|v| v.holds == Some(false)) {
-        Some(false)
-    } else if verdicts.iter().all(|v| v.holds == Some(true)) {
-        Some(true)
-    } else {
-        None
-    };
+    let (verdicts, within_guarantee) = verdicts(&applicable, &measured, n, opt, lower_bound);
     Checked {
         objective,
         cover,
@@ -401,6 +402,169 @@ pub fn judge(
         lb_source,
         verdicts,
         within_guarantee,
+    }
+}
+
+/// The verdict of every applicable guarantee on one measured output, and their conjunction:
+/// `Some(true)` when all hold, `Some(false)` when one is violated, else `None`.
+fn verdicts(
+    applicable: &[Guarantee],
+    measured: &Measured,
+    n: u64,
+    opt: Option<u64>,
+    lower_bound: Option<u64>,
+) -> (Vec<Verdict>, Option<bool>) {
+    let verdicts: Vec<Verdict> = applicable
+        .iter()
+        .map(|g| Verdict {
+            bound: g.to_string(),
+            factor: g.factor(),
+            holds: g.decide(measured, n, opt, lower_bound),
+        })
+        .collect();
+    let within_guarantee = if verdicts.is_empty() {
+        None
+    } else if verdicts.iter().any(|v| v.holds == Some(false)) {
+        Some(false)
+    } else if verdicts.iter().all(|v| v.holds == Some(true)) {
+        Some(true)
+    } else {
+        None
+    };
+    (verdicts, within_guarantee)
+}
+
+/// [`evaluate`] on a discrete instance: runs a registered algorithm's discrete run, recounts
+/// every output with the discrete model's checker ([`crate::discrete::check`]), takes the best
+/// lower bound (the star cover's rooks, Lemma 4.3 as restated in
+/// [`crate::discrete::star_cover`]; n for length; and the exact solves in `reference`) and
+/// decides the guarantees with the instance's parameters put in.
+pub fn evaluate_discrete(
+    algorithm: &'static Algorithm,
+    inst: &Discrete,
+    options: &Options,
+    objectives: &[Objective],
+    reference: &Reference,
+) -> Evaluation<DiscreteCover> {
+    let wanted: Vec<Objective> = if objectives.is_empty() {
+        algorithm.objectives.to_vec()
+    } else {
+        objectives.to_vec()
+    };
+    let start = Instant::now();
+    let outcome = guarded(|| match algorithm.discrete {
+        Some(run) => run(inst, options),
+        None => Err(Error::invalid(format!(
+            "{} runs on grid regions only",
+            algorithm.name
+        ))),
+    });
+    let mut eval = Evaluation {
+        algorithm: algorithm.name.to_string(),
+        options: options.clone(),
+        seconds: start.elapsed().as_secs_f64(),
+        certificates: BTreeMap::new(),
+        outputs: Vec::new(),
+        missing: Vec::new(),
+        error: None,
+    };
+    let solution = match outcome {
+        Ok(s) => s,
+        Err(msg) => {
+            eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
+            eval.error = Some(msg);
+            return eval;
+        }
+    };
+    eval.certificates = solution.certificates;
+    let subject = Subject::Registered(algorithm);
+    for objective in wanted {
+        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
+            let why = format!("{} returned no {objective} output", algorithm.name);
+            eval.missing.push((objective, why));
+            continue;
+        };
+        let report = crate::discrete::check::check(inst, &output.cover.cycles);
+        let one_walk = !objective.is_tour() || output.cover.cycles.len() == 1;
+        let error = if !report.valid {
+            Some(report.error.clone().unwrap_or_default())
+        } else if !one_walk {
+            Some(format!(
+                "a tour objective got {} cycles",
+                output.cover.cycles.len()
+            ))
+        } else {
+            None
+        };
+        let value = match objective {
+            Objective::Length | Objective::LawnLength => report.length,
+            Objective::Turns | Objective::CcTurns => report.turns,
+            Objective::Weighted(c) | Objective::WeightedCc(c) => {
+                report.length + u64::from(c) * report.turns
+            }
+        };
+        let opt = reference.opt(objective);
+        let opt_status = reference
+            .get(objective)
+            .map(|k| k.status.clone())
+            .unwrap_or_default();
+        let mut best = discrete_cheap_bound(inst, objective);
+        for (b, source) in reference.exact_bounds(objective) {
+            if b > best.0 {
+                best = (b, source);
+            }
+        }
+        let measured = Measured {
+            value,
+            length: report.length,
+            max_coverage: u64::from(report.max_coverage),
+        };
+        let applicable = subject.applicable_to(objective, Model::Discrete(inst), options);
+        let (verdicts, within_guarantee) =
+            verdicts(&applicable, &measured, inst.len() as u64, opt, Some(best.0));
+        eval.outputs.push(Checked {
+            objective,
+            cover: output.cover.clone(),
+            valid: report.valid && one_walk,
+            error,
+            value,
+            length: report.length,
+            turns: report.turns,
+            cycles: report.cycles,
+            max_coverage: u64::from(report.max_coverage),
+            opt,
+            opt_status,
+            lower_bound: Some(best.0),
+            lb_source: best.1,
+            verdicts,
+            within_guarantee,
+        });
+    }
+    eval
+}
+
+/// The cheap lower bound on the optimum of `objective` on a discrete instance: the star
+/// cover's greedy rooks for turns (every cycle cover, hence every tour, turns at least once
+/// per rook), n for length (n ≥ 2: every vertex is left by an edge), the sum of both bounds for
+/// the weighted objectives.
+pub fn discrete_cheap_bound(inst: &Discrete, objective: Objective) -> (u64, String) {
+    use crate::discrete::star_cover;
+    let rooks = || {
+        let ch = star_cover::channels(inst);
+        star_cover::greedy_rooks(inst, &ch).0.len() as u64
+    };
+    let length = if inst.len() >= 2 { inst.len() as u64 } else { 0 };
+    match objective {
+        Objective::Length => (length, "n: every vertex is visited".to_string()),
+        Objective::Turns | Objective::CcTurns => (
+            rooks(),
+            "rooks: the greedy star cover's rooks (Lemma 4.3)".to_string(),
+        ),
+        Objective::Weighted(c) | Objective::WeightedCc(c) => (
+            length + u64::from(c) * rooks(),
+            "n + C rooks".to_string(),
+        ),
+        Objective::LawnLength => (0, "none".to_string()),
     }
 }
 

@@ -159,6 +159,7 @@ impl OutsideAlgorithm {
                     den,
                     add: 0,
                     against,
+                    scale: crate::algorithms::Scale::One,
                 }),
                 when: When::Always,
                 realized: Realized::ByAlgorithms,
@@ -173,6 +174,7 @@ impl OutsideAlgorithm {
                 add: 0,
                 against,
                 when: When::Always,
+                scale: crate::algorithms::Scale::One,
                 source,
             });
         }

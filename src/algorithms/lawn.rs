@@ -652,6 +652,7 @@ const fn rectilinear(
         add,
         against: Against::Opt,
         when: super::When::Always,
+        scale: super::Scale::One,
         source,
         theorem,
     }
@@ -711,6 +712,7 @@ pub(crate) const LAWN_MST: Algorithm = Algorithm {
     requires: "some grass",
     precondition,
     run: lawn_mst,
+    discrete: None,
 };
 
 /// The registry entry of `lawn-christofides`: Christofides on the cell centres
@@ -766,6 +768,7 @@ pub(crate) const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     requires: "some grass",
     precondition,
     run: lawn_christofides,
+    discrete: None,
 };
 
 /// The registry entry of `lawn-2opt`: 2-opt and Or-opt started from the better of the MST and
@@ -823,6 +826,7 @@ pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
     requires: "some grass",
     precondition,
     run: lawn_two_opt,
+    discrete: None,
 };
 
 /// The registry entry of `lawn-box`: the shorter of the bounding-box rings of Fig. 9 and the
@@ -881,6 +885,7 @@ pub(crate) const LAWN_BOX: Algorithm = Algorithm {
     requires: "some grass",
     precondition,
     run: lawn_box,
+    discrete: None,
 };
 
 #[cfg(test)]

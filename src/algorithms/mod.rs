@@ -22,6 +22,8 @@
 //! guarantee.
 
 use crate::checker::Mode;
+use crate::discrete::format::DiscreteCover;
+use crate::discrete::{Discrete, Params};
 use crate::error::Result;
 use crate::region::Region;
 use crate::tour::CycleCover;
@@ -247,23 +249,185 @@ pub enum When {
     /// Regions without cut vertices and with at least 3 pixels (Theorem 5 of the milling
     /// paper: a 2-pixel region needs a tour of length 2 > (6·2 − 4)/5).
     Biconnected,
+    /// Instances of a lattice with d allowed directions (restricted-direction milling,
+    /// Theorem 5.2 of the turn-cost paper): voxel regions, hexagonal cells, honeycombs, and
+    /// grid regions (d = 2).
+    Lattice,
+    /// Instances without closed channels ("rings"): every grid region and lattice region.
+    /// The star cover's ring cycles are merged at up to 4 turns each, which no rook pays for.
+    NoRings,
 }
 
 impl When {
     pub fn applies(self, region: &Region) -> bool {
-        match self {
-            When::Always => true,
-            When::Biconnected => {
+        self.applies_to(Model::Grid(region))
+    }
+
+    /// Whether the condition holds on an instance of either model.
+    pub fn applies_to(self, model: Model<'_>) -> bool {
+        match (self, model) {
+            (When::Always, _) => true,
+            (When::Biconnected, Model::Grid(region)) => {
                 region.len() >= 3 && !crate::topology::cut_vertices(region).into_iter().any(|c| c)
+            }
+            // Theorem 5 of the milling paper is about grid graphs.
+            (When::Biconnected, Model::Discrete(_)) => false,
+            (When::Lattice, Model::Grid(_)) => true,
+            (When::Lattice, Model::Discrete(inst)) => inst.directions().is_some(),
+            (When::NoRings, Model::Grid(_)) => true,
+            (When::NoRings, Model::Discrete(inst)) => {
+                !crate::discrete::star_cover::channels(inst)
+                    .list
+                    .iter()
+                    .any(|c| c.closed)
             }
         }
     }
 }
 
+/// An instance of either model: a grid region, or a discrete milling instance (a graph with
+/// collinear pairs; [`crate::discrete`]). A grid region is the special case
+/// [`Discrete::from_region`](crate::discrete::Discrete::from_region).
+#[derive(Clone, Copy, Debug)]
+pub enum Model<'a> {
+    Grid(&'a Region),
+    Discrete(&'a Discrete),
+}
+
+impl Model<'_> {
+    /// The `model` column of results: `grid` or `discrete`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Model::Grid(_) => "grid",
+            Model::Discrete(_) => "discrete",
+        }
+    }
+
+    /// The number of pixels (vertices) to cover.
+    pub fn len(self) -> usize {
+        match self {
+            Model::Grid(r) => r.len(),
+            Model::Discrete(d) => d.len(),
+        }
+    }
+
+    /// Whether there is nothing to cover.
+    pub fn is_empty(self) -> bool {
+        self.len() == 0
+    }
+
+    /// Table 1's parameters (δ, μ, ρ, d and the exact counts behind them); a grid region's are
+    /// those of its grid graph.
+    pub fn params(self) -> Params {
+        match self {
+            Model::Grid(r) => Discrete::from_region(r).params(),
+            Model::Discrete(d) => d.params(),
+        }
+    }
+}
+
+/// An instance parameter that a factor of Table 1 is written in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Param {
+    /// ρ + 2δ with ρ, δ the averages (Theorem 5.1 as the paper states it).
+    RhoPlus2Delta,
+    /// δ, the average degree.
+    Delta,
+    /// μ, the maximum degree.
+    Mu,
+    /// d, the allowed directions of a lattice instance (none: the bound does not apply).
+    D,
+    /// max_v β(v) = dir(v) + 2·deg(v) (+1 at a leaf, +4 when isolated): the star cover's
+    /// proven per-rook turns ([`crate::discrete::star_cover::beta`]).
+    StarRatio,
+}
+
+impl Param {
+    /// Its value on an instance as a fraction (numerator, denominator > 0); `None` when the
+    /// instance has no such parameter (d of a non-lattice instance).
+    pub fn value(self, p: &Params) -> Option<(i64, i64)> {
+        let n = p.n.max(1) as i64;
+        Some(match self {
+            Param::RhoPlus2Delta => (p.direction_sum as i64 + 4 * p.edges as i64, n),
+            Param::Delta => (2 * p.edges as i64, n),
+            Param::Mu => (i64::from(p.mu), 1),
+            Param::D => (i64::from(p.d?), 1),
+            Param::StarRatio => (p.beta_max as i64, 1),
+        })
+    }
+
+    /// Its name in bounds' texts.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Param::RhoPlus2Delta => "rho + 2 delta",
+            Param::Delta => "delta",
+            Param::Mu => "mu",
+            Param::D => "d",
+            Param::StarRatio => "beta_max",
+        }
+    }
+}
+
+/// What a bound's `num` multiplies: 1, or an instance parameter P (the factor is then
+/// `num · P + plus`, e.g. 5d + 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Scale {
+    One,
+    Of { param: Param, plus: i64 },
+}
+
+impl Scale {
+    /// `(num, den, add)` of `q ≤ (num·X + add)/den` with the parameter's value put in; `None`
+    /// when the instance lacks the parameter.
+    pub fn resolve(self, num: i64, den: i64, add: i64, p: &Params) -> Option<(i64, i64, i64)> {
+        match self {
+            Scale::One => Some((num, den, add)),
+            Scale::Of { param, plus } => {
+                let (pn, pd) = param.value(p)?;
+                let (num, den, add) = (num * pn + plus * pd, den * pd, add * pd);
+                let g = gcd(gcd(num.abs(), den.abs()), add.abs()).max(1);
+                Some((num / g, den / g, add / g))
+            }
+        }
+    }
+
+    /// The factor's text for `num` (`5 d + 2`, `(rho + 2 delta)`), or `None` for a constant.
+    pub fn text(self, num: i64) -> Option<String> {
+        let Scale::Of { param, plus } = self else {
+            return None;
+        };
+        let times = if num == 1 {
+            String::new()
+        } else {
+            format!("{num} ")
+        };
+        let plus = match plus {
+            0 => String::new(),
+            a if a > 0 => format!(" + {a}"),
+            a => format!(" - {}", -a),
+        };
+        let sym = param.symbol();
+        let text = format!("{times}{sym}{plus}");
+        // Parenthesized where it is a sum, so that "X" multiplies all of it.
+        Some(if sym.contains(' ') || !plus.is_empty() {
+            format!("({text})")
+        } else {
+            text
+        })
+    }
+}
+
+fn gcd(a: i64, b: i64) -> i64 {
+    if b == 0 { a } else { gcd(b, a % b) }
+}
+
 /// A proven upper bound `q ≤ (num · X + add) / den` on the quantity `q` of an output of
 /// `objective`, X being OPT (of that objective), N or 1, on the instances `when` names.
 /// Quantities other than the value are bounded against N or 1 only (no optimum of theirs is
-/// computed per row).
+/// computed per row). With a [`Scale`] other than one, `num` multiplies an instance parameter
+/// (Table 1's discrete rows): [`Guarantee::on`] puts the instance's value in before deciding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Guarantee {
     pub objective: Objective,
@@ -273,6 +437,7 @@ pub struct Guarantee {
     pub add: i64,
     pub against: Against,
     pub when: When,
+    pub scale: Scale,
     /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling" (the text of the
     /// results' `guarantee` column; it may add the detail of our proof on pixels).
     pub source: &'static str,
@@ -302,6 +467,35 @@ impl Guarantee {
             add: 0,
             against: Against::Opt,
             when: When::Always,
+            scale: Scale::One,
+            source,
+            theorem,
+        }
+    }
+
+    /// `q ≤ (num · P + plus) · X`, P a parameter of the instance and X OPT, N or 1, on the
+    /// instances `when` names.
+    #[allow(clippy::too_many_arguments)]
+    pub const fn scaled(
+        objective: Objective,
+        quantity: Quantity,
+        against: Against,
+        num: i64,
+        param: Param,
+        plus: i64,
+        when: When,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
+        Guarantee {
+            objective,
+            quantity,
+            num,
+            den: 1,
+            add: 0,
+            against,
+            when,
+            scale: Scale::Of { param, plus },
             source,
             theorem,
         }
@@ -322,6 +516,7 @@ impl Guarantee {
             add: 0,
             against: Against::One,
             when: When::Always,
+            scale: Scale::One,
             source,
             theorem,
         }
@@ -343,12 +538,41 @@ impl Guarantee {
             add: 0,
             against: Against::N,
             when: When::Always,
+            scale: Scale::One,
             source,
             theorem,
         }
     }
 
-    /// The factor as a float, for tables and plots.
+    /// The guarantee on one instance: its condition holds there and the instance's parameters
+    /// are put into its factor (a [`Scale::One`] copy); `None` when it does not apply.
+    pub fn on(&self, model: Model<'_>) -> Option<Guarantee> {
+        if !self.when.applies_to(model) {
+            return None;
+        }
+        match self.scale {
+            Scale::One => Some(*self),
+            scale => self.with_params(scale, &model.params()),
+        }
+    }
+
+    /// [`Guarantee::on`] for a region.
+    pub fn on_region(&self, region: &Region) -> Option<Guarantee> {
+        self.on(Model::Grid(region))
+    }
+
+    fn with_params(&self, scale: Scale, p: &Params) -> Option<Guarantee> {
+        let (num, den, add) = scale.resolve(self.num, self.den, self.add, p)?;
+        Some(Guarantee {
+            num,
+            den,
+            add,
+            scale: Scale::One,
+            ..*self
+        })
+    }
+
+    /// The factor as a float, for tables and plots (of the unresolved guarantee: its `num`).
     pub fn factor(&self) -> f64 {
         self.num as f64 / self.den as f64
     }
@@ -362,7 +586,12 @@ impl Guarantee {
     /// The verdict on one checked output: `Some(true)` when shown to hold, `Some(false)` when
     /// violated, `None` when undecided (a bound against OPT, OPT unknown, and the lower bound
     /// `lb` on OPT too weak to show it: value ≤ f·LB ≤ f·OPT).
+    /// A guarantee whose factor is still an instance parameter is undecided: resolve it with
+    /// [`Guarantee::on`] first.
     pub fn decide(&self, m: &Measured, n: u64, opt: Option<u64>, lb: Option<u64>) -> Option<bool> {
+        if self.scale != Scale::One {
+            return None;
+        }
         let q = match self.quantity {
             Quantity::Value => m.value,
             Quantity::Length => m.length,
@@ -402,10 +631,10 @@ impl fmt::Display for Guarantee {
             Against::N => "N",
             Against::One => "1",
         };
-        let num = if self.num == 1 {
-            String::new()
-        } else {
-            format!("{} ", self.num)
+        let num = match self.scale.text(self.num) {
+            Some(t) => format!("{t} "),
+            None if self.num == 1 => String::new(),
+            None => format!("{} ", self.num),
         };
         let add = match self.add {
             0 => String::new(),
@@ -415,10 +644,14 @@ impl fmt::Display for Guarantee {
         let source = match self.when {
             When::Always => self.source.to_string(),
             When::Biconnected => format!("without cut vertices, N >= 3; {}", self.source),
+            When::Lattice => format!("lattice instances; {}", self.source),
+            When::NoRings => format!("no closed channels; {}", self.source),
         };
         let source = source.as_str();
         let q = self.quantity.label(self.objective);
-        if self.against == Against::One && self.den == 1 {
+        if let (Against::One, Some(t)) = (self.against, self.scale.text(self.num)) {
+            write!(f, "{q} <= {t} ({source})")
+        } else if self.against == Against::One && self.den == 1 {
             write!(f, "{q} <= {} ({source})", self.num + self.add)
         } else if self.den == 1 {
             write!(f, "{q} <= {num}{x}{add} ({source})")
@@ -476,21 +709,34 @@ pub struct Options {
     pub coverage4: bool,
 }
 
-/// One result of an algorithm: closed walks for one objective.
+/// One result of an algorithm: closed walks for one objective (of pixels, or of the vertices
+/// of a discrete instance).
 #[derive(Clone, Debug)]
-pub struct Output {
+pub struct Output<C = CycleCover> {
     pub objective: Objective,
-    pub cover: CycleCover,
+    pub cover: C,
 }
 
 /// What an algorithm returns: one output per objective it reports (a cycle-cover algorithm
 /// reports the cycle cover and the merged tour), and its certificates (named integers such as
 /// a strip cover size or a matching weight; never its own cost).
-#[derive(Clone, Debug, Default)]
-pub struct Solution {
-    pub outputs: Vec<Output>,
+#[derive(Clone, Debug)]
+pub struct Solution<C = CycleCover> {
+    pub outputs: Vec<Output<C>>,
     pub certificates: BTreeMap<String, i64>,
 }
+
+impl<C> Default for Solution<C> {
+    fn default() -> Self {
+        Solution {
+            outputs: Vec::new(),
+            certificates: BTreeMap::new(),
+        }
+    }
+}
+
+/// How an algorithm runs on discrete instances (its `run` takes grid regions).
+pub type DiscreteRun = fn(&Discrete, &Options) -> Result<Solution<DiscreteCover>>;
 
 /// A registered algorithm.
 pub struct Algorithm {
@@ -510,6 +756,9 @@ pub struct Algorithm {
     /// Checks the theorem's preconditions; the error says which one fails.
     pub precondition: fn(&Region) -> Result<()>,
     pub run: fn(&Region, &Options) -> Result<Solution>,
+    /// Its run on discrete instances, for the algorithms of discrete milling (they run on grid
+    /// regions through [`Discrete::from_region`]); `None` for the grid-only ones.
+    pub discrete: Option<DiscreteRun>,
 }
 
 impl Algorithm {
@@ -560,6 +809,8 @@ pub static REGISTRY: &[Algorithm] = &[
     thin::ALGORITHM_CC,
     thin::ALGORITHM_MERGE,
     thin_euler::ALGORITHM,
+    // Discrete milling, Table 1's rows Discrete and Restricted-direction (issue 17).
+    crate::discrete::star_cover::ALGORITHM,
 ];
 
 /// The registered algorithm called `name`.

@@ -11,7 +11,8 @@
 //! An entry is one claim of a theorem: a theorem with several bounds (a cycle cover and a tour,
 //! turns and length) has one entry per bound, e.g. "Theorem 5.5" and "Theorem 5.5 (tour)".
 
-use super::{Against, Objective, Quantity, When};
+use super::{Against, Objective, Param, Quantity, Scale, When};
+use crate::discrete::Params;
 use serde::Serialize;
 
 /// The two papers.
@@ -59,13 +60,29 @@ pub struct Bound {
     pub den: i64,
     pub add: i64,
     pub against: Against,
+    /// What `num` multiplies: 1, or an instance parameter (Table 1's discrete rows).
+    pub scale: Scale,
 }
 
 impl Bound {
-    /// Whether `q ≤ (num · x + add) / den`, in exact integer arithmetic.
+    /// Whether `q ≤ (num · x + add) / den`, in exact integer arithmetic (of a bound whose
+    /// factor is a constant: see [`Bound::on`]).
     pub fn holds(&self, q: u64, x: u64) -> bool {
         i128::from(self.den) * i128::from(q)
             <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+    }
+
+    /// The bound on an instance with parameters `p` (a constant factor); `None` when the
+    /// instance lacks the parameter (d off lattices).
+    pub fn on(&self, p: &Params) -> Option<Bound> {
+        let (num, den, add) = self.scale.resolve(self.num, self.den, self.add, p)?;
+        Some(Bound {
+            num,
+            den,
+            add,
+            scale: Scale::One,
+            ..*self
+        })
     }
 }
 
@@ -76,6 +93,19 @@ const fn bound(quantity: Quantity, num: i64, den: i64, add: i64, against: Agains
         den,
         add,
         against,
+        scale: Scale::One,
+    }
+}
+
+/// `q ≤ (num · P + plus) · X`, P an instance parameter.
+const fn scaled(quantity: Quantity, num: i64, param: Param, plus: i64, against: Against) -> Bound {
+    Bound {
+        quantity,
+        num,
+        den: 1,
+        add: 0,
+        against,
+        scale: Scale::Of { param, plus },
     }
 }
 
@@ -527,25 +557,91 @@ pub static TURNS_THM_5_9: Theorem = Theorem {
     }),
 };
 
-pub static TURNS_THM_5_2: Theorem = Theorem {
+pub static TURNS_THM_5_1_DISCRETE: Theorem = Theorem {
     paper: TurnCost,
-    id: "Theorem 5.2",
-    statement: "restricted-direction milling (d directions, e.g. 3-D): 5d cycle cover, 5d + 2 tour, coverage 2d",
-    factor: "5d OPT_cc, (5d + 2) OPT",
-    measure: Measure::Nothing,
+    id: "Theorem 5.1 (discrete)",
+    statement: "discrete milling (Table 1, row Discrete): the star cover is a (rho + 2 delta) cycle cover, rho and delta the averages over the instance",
+    factor: "(rho + 2 delta) OPT_cc",
+    measure: Measure::Bound(scaled(Value, 1, Param::RhoPlus2Delta, 0, Opt)),
     when: When::Always,
-    realized: Realized::Not("mowmill has no instances beyond the square grid (issue 17)"),
+    realized: Realized::ByAlgorithms,
     tight: None,
 };
 
 pub static TURNS_COR_5_1: Theorem = Theorem {
     paper: TurnCost,
     id: "Corollary 5.1",
-    statement: "discrete milling: (rho + 2 delta + 2) tour, coverage mu",
+    statement: "discrete milling (Table 1, row Discrete): the merged star cover is a (rho + 2 delta + 2) tour",
     factor: "(rho + 2 delta + 2) OPT",
-    measure: Measure::Nothing,
+    measure: Measure::Bound(scaled(Value, 1, Param::RhoPlus2Delta, 2, Opt)),
     when: When::Always,
-    realized: Realized::Not("mowmill has no discrete (graph) instances (issue 17)"),
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_1_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.1 (length)",
+    statement: "discrete milling (Table 1, row Discrete): simultaneously a delta-approximation on length",
+    factor: "length <= delta OPT_length",
+    measure: Measure::Bound(scaled(Length, 1, Param::Delta, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_COR_5_1_COVERAGE: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Corollary 5.1 (coverage)",
+    statement: "discrete milling (Table 1, row Discrete): every vertex visited at most mu times",
+    factor: "coverage <= mu",
+    measure: Measure::Bound(scaled(MaxCoverage, 1, Param::Mu, 0, One)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_2: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.2",
+    statement: "restricted-direction milling (Table 1, row Restricted-direction; d directions: voxels d = 3, hexagonal cells d = 3, grids d = 2): a 5d cycle cover",
+    factor: "5d OPT_cc",
+    measure: Measure::Bound(scaled(Value, 5, Param::D, 0, Opt)),
+    when: When::Lattice,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_2_TOUR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.2 (tour)",
+    statement: "restricted-direction milling: a (5d + 2) tour",
+    factor: "(5d + 2) OPT",
+    measure: Measure::Bound(scaled(Value, 5, Param::D, 2, Opt)),
+    when: When::Lattice,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_2_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.2 (length)",
+    statement: "restricted-direction milling: simultaneously a 2d-approximation on length",
+    factor: "length <= 2d OPT_length",
+    measure: Measure::Bound(scaled(Length, 2, Param::D, 0, Opt)),
+    when: When::Lattice,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_2_COVERAGE: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.2 (coverage)",
+    statement: "restricted-direction milling: every vertex visited at most 2d times",
+    factor: "coverage <= 2d",
+    measure: Measure::Bound(scaled(MaxCoverage, 2, Param::D, 0, One)),
+    when: When::Lattice,
+    realized: Realized::ByAlgorithms,
     tight: None,
 };
 
@@ -612,8 +708,14 @@ pub static THEOREMS: &[&Theorem] = &[
     &TURNS_COR_5_3_TOUR,
     &TURNS_THM_5_8,
     &TURNS_THM_5_9,
-    &TURNS_THM_5_2,
+    &TURNS_THM_5_1_DISCRETE,
     &TURNS_COR_5_1,
+    &TURNS_COR_5_1_LENGTH,
+    &TURNS_COR_5_1_COVERAGE,
+    &TURNS_THM_5_2,
+    &TURNS_THM_5_2_TOUR,
+    &TURNS_THM_5_2_LENGTH,
+    &TURNS_THM_5_2_COVERAGE,
     &TURNS_THM_5_3,
     &TURNS_THM_5_7,
     &TURNS_THM_5_10,

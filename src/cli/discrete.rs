@@ -9,47 +9,19 @@ use mowmill::discrete::check::{self, Report};
 use mowmill::discrete::exact::{self as dexact, DiscreteOptions};
 use mowmill::discrete::format::{self, DiscreteCover};
 use mowmill::discrete::generate::{self as dgen, PlaneParams};
-use mowmill::discrete::lattice::{HexRegion, VoxelRegion};
 use mowmill::discrete::merge::{self, proven_bound, theorem_4_2_bound};
 use mowmill::discrete::star_cover::{self, star_cover};
-use mowmill::discrete::{Discrete, VertexWalk};
+use mowmill::discrete::VertexWalk;
 use mowmill::error::Error;
 use serde_json::json;
 use std::path::Path;
 use std::process::ExitCode;
 
-/// The extensions of discrete instance files.
-pub const EXTENSIONS: &[&str] = &["dm", "json", "vox", "hex"];
-
-/// The `gen` families of the discrete model.
-pub const FAMILIES: &[&str] = &["voxel", "hex", "honeycomb", "plane"];
+pub use mowmill::discrete::generate::{FAMILIES, is_discrete, read};
 
 /// The algorithms `solve` runs on a discrete instance: the star cover of Theorem 5.1 (merged
 /// into a tour by Corollary 5.1), under the registered name of its grid case (Corollary 5.2).
 pub const ALGORITHMS: &[&str] = &["star-cover"];
-
-/// Whether `path` names a discrete instance (by its extension).
-pub fn is_discrete(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
-}
-
-/// Reads a discrete instance: `.vox` voxel regions, `.hex` hexagonal cells, `.dm` / `.json`.
-pub fn read(path: &Path) -> mowmill::Result<Discrete> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext.as_deref() {
-        Some("vox") => Ok(VoxelRegion::read(path)?.to_discrete()),
-        Some("hex") => {
-            let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-            Ok(HexRegion::parse(&text, &path.display().to_string())?.to_discrete())
-        }
-        _ => format::read_discrete(path),
-    }
-}
 
 /// The instance's size and Table 1's parameters, with a rook placement (Lemma 4.3).
 pub fn info(path: &Path, as_json: bool) -> Result<ExitCode> {

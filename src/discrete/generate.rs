@@ -20,6 +20,105 @@ use std::collections::VecDeque;
 
 use crate::generate::rng::{Rng, below, rng_for, unit};
 
+/// The discrete families of `mowmill gen` and of configs' `[[family]]` tables: random voxel
+/// regions (`n`, `holes` enclosed cavities), hexagonal cells, honeycomb vertices, plane graphs.
+pub const FAMILIES: &[&str] = &["voxel", "hex", "honeycomb", "plane"];
+
+/// A generated discrete instance with the text of its file: `.vox` for voxel regions, `.hex`
+/// for hexagonal cells, else the `.dm` text form.
+#[derive(Clone, Debug)]
+pub struct Generated {
+    pub instance: Discrete,
+    pub text: String,
+    pub ext: &'static str,
+}
+
+/// Refuses what [`generate`] refuses, without generating: an unknown family, a missing `n`,
+/// `holes` off the voxel family, n outside 1..=[`MAX_VERTICES`].
+///
+/// # Errors
+/// [`Error::Invalid`] naming the parameter.
+pub fn check(family: &str, n: Option<usize>, holes: Option<usize>) -> Result<()> {
+    if !FAMILIES.contains(&family) {
+        return Err(Error::invalid(format!(
+            "unknown discrete family {family}: expected one of {}",
+            FAMILIES.join(", ")
+        )));
+    }
+    let n = n.ok_or_else(|| Error::invalid(format!("family {family} needs n")))?;
+    if holes.is_some() && family != "voxel" {
+        return Err(Error::invalid(format!(
+            "parameter `holes` does not apply to family {family} (it takes: n)"
+        )));
+    }
+    if n == 0 || n > MAX_VERTICES {
+        return Err(Error::invalid(format!(
+            "n = {n}; expected from 1 to {MAX_VERTICES}"
+        )));
+    }
+    Ok(())
+}
+
+/// Generates one instance of a discrete family (deterministic in `seed`).
+///
+/// # Errors
+/// As [`check`], and the generators' own refusals (too many cavities for n voxels).
+pub fn generate(family: &str, n: usize, holes: Option<usize>, seed: u64) -> Result<Generated> {
+    check(family, Some(n), holes)?;
+    let with_text = |instance: Discrete| Generated {
+        text: super::format::to_text(&instance),
+        instance,
+        ext: "dm",
+    };
+    Ok(match family {
+        "voxel" => {
+            let region = random_voxels(n, seed, holes.unwrap_or(0))?;
+            Generated {
+                text: region.to_text()?,
+                instance: region.to_discrete(),
+                ext: "vox",
+            }
+        }
+        "hex" => {
+            let region = random_hex(n, seed)?;
+            Generated {
+                text: region.to_text()?,
+                instance: region.to_discrete(),
+                ext: "hex",
+            }
+        }
+        "honeycomb" => with_text(random_honeycomb(n, seed)?.to_discrete()),
+        _ => with_text(random_plane_graph(n, seed, &PlaneParams::default())?),
+    })
+}
+
+/// Reads a discrete instance file: `.vox` voxel regions, `.hex` hexagonal cells, `.dm` / `.json`
+/// instances.
+///
+/// # Errors
+/// [`Error::Io`] when it cannot be read, [`Error::Parse`] (file:line:col) when it is invalid.
+pub fn read(path: &std::path::Path) -> Result<Discrete> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("vox") => Ok(VoxelRegion::read(path)?.to_discrete()),
+        Some("hex") => Ok(super::lattice::HexRegion::read(path)?.to_discrete()),
+        _ => super::format::read_discrete(path),
+    }
+}
+
+/// The extensions of discrete instance files.
+pub const EXTENSIONS: &[&str] = &["dm", "json", "vox", "hex"];
+
+/// Whether `path` names a discrete instance (by its extension).
+pub fn is_discrete(path: &std::path::Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+}
+
 /// Stream tags: one independent stream per family.
 const TAG_VOXELS: u64 = 0xD17_0001;
 const TAG_HEX: u64 = 0xD17_0002;

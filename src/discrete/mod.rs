@@ -63,6 +63,13 @@ pub struct Params {
     pub rho: f64,
     /// d: the allowed directions of a lattice instance.
     pub d: Option<u32>,
+    /// The exact counts behind the averages: n vertices, |E| edges (δ = 2|E|/n) and the sum of
+    /// the directions at the vertices (ρ = direction_sum/n).
+    pub n: u64,
+    pub edges: u64,
+    pub direction_sum: u64,
+    /// max_v β(v), the star cover's proven ratio ([`star_cover::star_ratio`]).
+    pub beta_max: u64,
 }
 
 impl Discrete {
@@ -306,15 +313,18 @@ impl Discrete {
             .map(|v| self.degree(v))
             .max()
             .unwrap_or(0) as u32;
-        let rho = (0..self.len() as u32)
+        let direction_sum = (0..self.len() as u32)
             .map(|v| self.directions_at(v))
-            .sum::<usize>() as f64
-            / n;
+            .sum::<usize>();
         Params {
             delta: self.nbr.len() as f64 / n,
             mu,
-            rho,
+            rho: direction_sum as f64 / n,
             d: self.directions,
+            n: self.len() as u64,
+            edges: self.edge_count() as u64,
+            direction_sum: direction_sum as u64,
+            beta_max: star_cover::star_ratio(self),
         }
     }
 }

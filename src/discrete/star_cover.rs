@@ -82,7 +82,16 @@
 //! O(n + |E| log μ) time (the log for finding the reverse of each edge end), O(n + |E|) space
 //! and output.
 
+use super::format::DiscreteCover;
 use super::{Discrete, NONE, Params, VertexWalk};
+use crate::algorithms::theorems::{self, Claim};
+use crate::algorithms::{
+    Against, Algorithm, Guarantee, Objective, Options, Output, Param, Quantity, Solution, When,
+};
+use crate::error::{Error, Result};
+use crate::region::Region;
+use crate::tour::CycleCover;
+use std::collections::BTreeMap;
 
 /// One channel: its vertex sequence end to end (open and loop channels, `verts[0]` and the
 /// last vertex are the ends, equal for a loop), or once around (closed, the first vertex not
@@ -448,6 +457,208 @@ pub fn coverage_bound(params: Params) -> u32 {
 /// δ·OPT_length since OPT_length ≥ n for n ≥ 2.
 pub fn length_bound(inst: &Discrete) -> u64 {
     2 * inst.edge_count() as u64
+}
+
+/// The star cover as a registered algorithm (`discrete-star-cover`): on discrete instances,
+/// and on grid regions through [`Discrete::from_region`] (vertex i = pixel i), so that the grid
+/// special case gives rows through both models.
+pub const ALGORITHM: Algorithm = Algorithm {
+    name: "discrete-star-cover",
+    summary: "greedy star cover of discrete milling (Theorem 5.1) merged into a tour (Corollary 5.1); Theorem 5.2 on lattices",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[
+        Guarantee::scaled(
+            Objective::CcTurns,
+            Quantity::Value,
+            Against::Opt,
+            1,
+            Param::StarRatio,
+            0,
+            When::Always,
+            &theorems::TURNS_THM_5_1_DISCRETE,
+            "Theorem 5.1 of Optimal covering tours with turn costs, proven per rook: beta(v) = directions + 2 deg (discrete::star_cover)",
+        ),
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Value,
+            Against::Opt,
+            1,
+            Param::StarRatio,
+            4,
+            When::NoRings,
+            &theorems::TURNS_COR_5_1,
+            "Corollary 5.1 of Optimal covering tours with turn costs, with +4 per merge (discrete::merge)",
+        ),
+        Guarantee::scaled(
+            Objective::CcTurns,
+            Quantity::MaxCoverage,
+            Against::One,
+            1,
+            Param::Mu,
+            0,
+            When::Always,
+            &theorems::TURNS_COR_5_1_COVERAGE,
+            "Theorem 5.1 of Optimal covering tours with turn costs",
+        ),
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::MaxCoverage,
+            Against::One,
+            1,
+            Param::Mu,
+            0,
+            When::Always,
+            &theorems::TURNS_COR_5_1_COVERAGE,
+            "Corollary 5.1 of Optimal covering tours with turn costs (detours between settled vertices, discrete::merge)",
+        ),
+        // Length <= 2|E| = delta N <= delta OPT_length (OPT_length >= N for N >= 2).
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Length,
+            Against::N,
+            1,
+            Param::Delta,
+            0,
+            When::Always,
+            &theorems::TURNS_COR_5_1_LENGTH,
+            "Corollary 5.1 of Optimal covering tours with turn costs: length <= 2|E|",
+        ),
+        Guarantee::scaled(
+            Objective::CcTurns,
+            Quantity::Value,
+            Against::Opt,
+            5,
+            Param::D,
+            0,
+            When::Lattice,
+            &theorems::TURNS_THM_5_2,
+            "Theorem 5.2 of Optimal covering tours with turn costs (beta <= 5d on a lattice)",
+        ),
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Value,
+            Against::Opt,
+            5,
+            Param::D,
+            4,
+            When::Lattice,
+            &theorems::TURNS_THM_5_2_TOUR,
+            "Theorem 5.2 of Optimal covering tours with turn costs, with +4 per merge (the paper: 5d + 2)",
+        ),
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::MaxCoverage,
+            Against::One,
+            2,
+            Param::D,
+            0,
+            When::Lattice,
+            &theorems::TURNS_THM_5_2_COVERAGE,
+            "Theorem 5.2 of Optimal covering tours with turn costs (mu <= 2d)",
+        ),
+        Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Length,
+            Against::N,
+            2,
+            Param::D,
+            0,
+            When::Lattice,
+            &theorems::TURNS_THM_5_2_LENGTH,
+            "Theorem 5.2 of Optimal covering tours with turn costs: length <= 2|E| <= 2d N",
+        ),
+    ],
+    claims: &[
+        Claim::paper(&theorems::TURNS_THM_5_1_DISCRETE, &[Objective::CcTurns]),
+        Claim::reading(
+            &theorems::TURNS_COR_5_1,
+            &[Objective::Turns],
+            "our merge proves +4 per merge across an edge, not Theorem 4.2's +2 (discrete::merge)",
+        ),
+        Claim::paper(
+            &theorems::TURNS_COR_5_1_COVERAGE,
+            &[Objective::CcTurns, Objective::Turns],
+        ),
+        Claim::paper(&theorems::TURNS_COR_5_1_LENGTH, &[Objective::Turns]),
+        Claim::paper(&theorems::TURNS_THM_5_2, &[Objective::CcTurns]),
+        Claim::reading(
+            &theorems::TURNS_THM_5_2_TOUR,
+            &[Objective::Turns],
+            "our merge proves +4 per merge across an edge, not Theorem 4.2's +2 (discrete::merge)",
+        ),
+        Claim::paper(&theorems::TURNS_THM_5_2_COVERAGE, &[Objective::Turns]),
+        Claim::paper(&theorems::TURNS_THM_5_2_LENGTH, &[Objective::Turns]),
+        Claim::reading(
+            &theorems::TURNS_THM_4_2,
+            &[Objective::Turns],
+            "Theorem 4.2's merge on general discrete instances (discrete::merge): no +2 merge exists on some (the bridge instance)",
+        ),
+    ],
+    requires: "a connected instance",
+    precondition: crate::algorithms::precondition::connected,
+    run: run_grid,
+    discrete: Some(run_discrete),
+};
+
+/// The star cover and its merged tour on a discrete instance, with the rook and merge counts
+/// as certificates (`sum_beta` is the proven bound on the cycle cover's turns).
+fn run_discrete(inst: &Discrete, _: &Options) -> Result<Solution<DiscreteCover>> {
+    if inst.components() != 1 {
+        return Err(Error::invalid(format!(
+            "the instance has {} components: no covering tour exists",
+            inst.components()
+        )));
+    }
+    let star = star_cover(inst);
+    let (tour, stats) = super::merge::merge(inst, &star.cycles);
+    let mut certificates = BTreeMap::new();
+    certificates.insert("rooks".to_string(), star.rooks.len() as i64);
+    certificates.insert("rings".to_string(), star.rings as i64);
+    certificates.insert(
+        "sum_beta".to_string(),
+        star_turn_bound(inst, &star.rooks) as i64,
+    );
+    certificates.insert("merges".to_string(), stats.merges as i64);
+    certificates.insert("free_merges".to_string(), stats.free_merges as i64);
+    Ok(Solution {
+        outputs: vec![
+            Output {
+                objective: Objective::CcTurns,
+                cover: DiscreteCover::new(star.cycles),
+            },
+            Output {
+                objective: Objective::Turns,
+                cover: DiscreteCover::new(tour),
+            },
+        ],
+        certificates,
+    })
+}
+
+/// [`run_discrete`] on the grid graph of a region, walks mapped back to pixels.
+fn run_grid(region: &Region, options: &Options) -> Result<Solution> {
+    let inst = Discrete::from_region(region);
+    let sol = run_discrete(&inst, options)?;
+    let pixels = region.pixels();
+    let to_pixels = |c: DiscreteCover| {
+        CycleCover::new(
+            c.cycles
+                .into_iter()
+                .map(|w| w.into_iter().map(|v| pixels[v as usize]).collect())
+                .collect(),
+        )
+    };
+    Ok(Solution {
+        outputs: sol
+            .outputs
+            .into_iter()
+            .map(|o| Output {
+                objective: o.objective,
+                cover: to_pixels(o.cover),
+            })
+            .collect(),
+        certificates: sol.certificates,
+    })
 }
 
 #[cfg(test)]

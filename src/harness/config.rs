@@ -345,6 +345,13 @@ pub struct InstanceSpec {
 #[derive(Clone, Debug)]
 pub enum Source {
     Generate(GenParams),
+    /// A family of the discrete model ([`crate::discrete::generate::FAMILIES`]); the seed is the
+    /// spec's.
+    Discrete {
+        family: String,
+        n: usize,
+        holes: Option<usize>,
+    },
     File(PathBuf),
 }
 
@@ -433,10 +440,20 @@ impl Config {
         let mut combinations: BTreeMap<(String, String), usize> = BTreeMap::new();
         for (i, f) in self.family.iter().enumerate() {
             let at = format!("family[{i}]");
-            let family: Family = f
-                .family
-                .parse()
-                .map_err(|e| Problem::value(format!("{at}.family"), e))?;
+            if is_discrete_family(&f.family) {
+                total = self.validate_discrete_family(f, &at, total, &mut combinations)?;
+                check_algorithms(&f.algorithms, &outside, &at)?;
+                continue;
+            }
+            let family: Family = f.family.parse().map_err(|e| {
+                Problem::value(
+                    format!("{at}.family"),
+                    format!(
+                        "{e}; or a family of the discrete model: {}",
+                        crate::discrete::generate::FAMILIES.join(", ")
+                    ),
+                )
+            })?;
             let info = family.info();
             for (&param, values) in &f.params {
                 let key = format!("{at}.{}", param.name());
@@ -626,15 +643,25 @@ impl Config {
     pub fn instances(&self) -> Result<Vec<InstanceSpec>> {
         let mut out = Vec::new();
         for f in &self.family {
-            let family: Family = f.family.parse()?;
+            let discrete = is_discrete_family(&f.family);
             for combo in expand(f) {
                 let params = params_string(&combo);
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
-                    let mut g = GenParams::new(family, seed);
-                    for &(k, v) in &combo {
-                        g.set(k, v)?;
-                    }
+                    let source = if discrete {
+                        let (n, holes) = discrete_params(&combo);
+                        Source::Discrete {
+                            family: f.family.clone(),
+                            n: n.unwrap_or(0),
+                            holes,
+                        }
+                    } else {
+                        let mut g = GenParams::new(f.family.parse::<Family>()?, seed);
+                        for &(k, v) in &combo {
+                            g.set(k, v)?;
+                        }
+                        Source::Generate(g)
+                    };
                     let slug: String = params
                         .chars()
                         .filter(|&c| c != '=')
@@ -656,7 +683,7 @@ impl Config {
                         family: f.family.clone(),
                         params: params.clone(),
                         seed,
-                        source: Source::Generate(g),
+                        source,
                         algorithms: f.algorithms.clone(),
                     });
                 }
@@ -694,6 +721,99 @@ impl Config {
             )));
         }
         Ok(out)
+    }
+}
+
+/// Whether `family` is a family of the discrete model (`voxel`, `hex`, `honeycomb`, `plane`).
+fn is_discrete_family(family: &str) -> bool {
+    crate::discrete::generate::FAMILIES.contains(&family)
+}
+
+/// The `n` and `holes` of a discrete family's parameter combination.
+fn discrete_params(combo: &[(Param, ParamValue)]) -> (Option<usize>, Option<usize>) {
+    let get = |p: Param| {
+        combo.iter().find_map(|&(k, v)| match (k == p, v) {
+            (true, ParamValue::Count(c)) => Some(c),
+            _ => None,
+        })
+    };
+    (get(Param::N), get(Param::Holes))
+}
+
+impl Config {
+    /// The checks of a `[[family]]` table of a discrete family: it takes `n` (required) and,
+    /// for `voxel`, `holes`; counts and combinations as for the grid families. Returns the
+    /// new instance total.
+    fn validate_discrete_family(
+        &self,
+        f: &FamilySpec,
+        at: &str,
+        total: usize,
+        combinations: &mut BTreeMap<(String, String), usize>,
+    ) -> std::result::Result<usize, Problem> {
+        for (&param, values) in &f.params {
+            let key = format!("{at}.{}", param.name());
+            let takes = param == Param::N || (param == Param::Holes && f.family == "voxel");
+            if !takes && !values.is_empty() {
+                return Err(Problem::key(
+                    &key,
+                    Error::invalid(format!(
+                        "parameter `{}` does not apply to family {} (it takes: n{})",
+                        param.name(),
+                        f.family,
+                        if f.family == "voxel" { ", holes" } else { "" }
+                    )),
+                ));
+            }
+        }
+        if !(1..=MAX_INSTANCES).contains(&f.count) {
+            return Err(Problem::value(
+                format!("{at}.count"),
+                format!(
+                    "expected from 1 to {MAX_INSTANCES} instances per parameter combination, got {}",
+                    f.count
+                ),
+            ));
+        }
+        let table = f
+            .params
+            .values()
+            .filter(|v| !v.is_empty())
+            .try_fold(f.count, |acc, v| acc.checked_mul(v.len()));
+        let total = match table.and_then(|t| total.checked_add(t)) {
+            Some(t) if t <= MAX_INSTANCES => t,
+            _ => {
+                return Err(Problem::value(
+                    at,
+                    format!(
+                        "the suite would have more than {MAX_INSTANCES} instances (combinations of the \
+                         parameter lists × count)"
+                    ),
+                ));
+            }
+        };
+        let index = at
+            .trim_start_matches("family[")
+            .trim_end_matches(']')
+            .parse()
+            .unwrap_or(0);
+        for combo in expand(f) {
+            let params = params_string(&combo);
+            let (n, holes) = discrete_params(&combo);
+            crate::discrete::generate::check(&f.family, n, holes)
+                .map_err(|e| Problem::value(at, format!("{params}: {e}")))?;
+            if let Some(first) = combinations.insert((f.family.clone(), params.clone()), index) {
+                return Err(Problem::value(
+                    at,
+                    format!(
+                        "{} {params} is also in family[{first}]: the same family and parameters give \
+                         the same instances (seeds and names) twice",
+                        f.family
+                    ),
+                ));
+            }
+        }
+        Ok(total)
     }
 }
 
@@ -753,7 +873,14 @@ fn instance_files(dir: &Path) -> std::result::Result<Vec<PathBuf>, String> {
     })?;
     let mut files: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| crate::instance::Format::from_extension(p).is_some())
+        .filter(|p| {
+            // Discrete instances by `.dm`, `.vox`, `.hex`; not `.json`, which folders of
+            // instances also hold as tour files.
+            crate::instance::Format::from_extension(p).is_some()
+                || p.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+                    ["dm", "vox", "hex"].contains(&e.to_ascii_lowercase().as_str())
+                })
+        })
         .collect();
     if files.is_empty() {
         return Err(format!(

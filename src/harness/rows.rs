@@ -53,6 +53,25 @@ pub struct Row {
     /// not apply).
     #[serde(default)]
     pub coverage4: Option<bool>,
+    /// The instance's model: `grid` or `discrete` (empty in rows of older runs).
+    #[serde(default)]
+    pub model: String,
+    /// Table 1's parameters of the instance (of its grid graph for a grid region): d the
+    /// allowed directions (empty off lattices), δ the average degree, μ the maximum degree, ρ
+    /// the average number of directions; and the exact counts behind δ and ρ (δ = 2·edges/n,
+    /// ρ = direction_sum/n), from which claims are decided in integers.
+    #[serde(default)]
+    pub d: Option<u32>,
+    #[serde(default)]
+    pub delta: Option<Ratio>,
+    #[serde(default)]
+    pub mu: Option<u32>,
+    #[serde(default)]
+    pub rho: Option<Ratio>,
+    #[serde(default)]
+    pub edges: Option<u64>,
+    #[serde(default)]
+    pub direction_sum: Option<u64>,
 }
 
 impl Row {
@@ -63,6 +82,34 @@ impl Row {
             self.algorithm.clone(),
             self.objective.clone(),
         )
+    }
+
+    /// Fills the model's parameter columns.
+    pub fn set_params(&mut self, model: &str, p: &crate::discrete::Params) {
+        self.model = model.to_string();
+        self.d = p.d;
+        self.mu = Some(p.mu);
+        self.edges = Some(p.edges);
+        self.direction_sum = Some(p.direction_sum);
+        self.delta = Some(Ratio::of(2 * p.edges, p.n.max(1)));
+        self.rho = Some(Ratio::of(p.direction_sum, p.n.max(1)));
+    }
+
+    /// The instance's parameters from the row's columns (`None` for rows without them). The
+    /// star cover's β_max is not a column: it is 0 here.
+    pub fn params(&self) -> Option<crate::discrete::Params> {
+        let (edges, direction_sum, mu) = (self.edges?, self.direction_sum?, self.mu?);
+        let n = self.n.max(1) as f64;
+        Some(crate::discrete::Params {
+            delta: 2.0 * edges as f64 / n,
+            mu,
+            rho: direction_sum as f64 / n,
+            d: self.d,
+            n: self.n,
+            edges,
+            direction_sum,
+            beta_max: 0,
+        })
     }
 
     /// Fills the three ratios from the integer columns.

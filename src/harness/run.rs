@@ -10,7 +10,8 @@
 use super::config::{Config, ExactSpec, InstanceSpec, Source};
 use super::manifest::{ConfigRecord, Finished, Recorded};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
-use crate::algorithms::{self, Objective};
+use crate::algorithms::{self, Model, Objective};
+use crate::discrete::Discrete;
 use crate::checker;
 use crate::error::{Error, Result};
 use crate::evaluate::{self, Evaluation, Known, Reference, Subject};
@@ -271,13 +272,21 @@ fn run_instance(
         seed: spec.seed,
         ..Row::default()
     };
-    let region = match materialize(spec, &opts.out) {
-        Ok((region, sha)) => {
+    let error = match materialize(spec, &opts.out) {
+        Ok((Loaded::Grid(region), sha)) => {
             let mut b = base.clone();
             b.sha256 = sha;
             b.n = region.len() as u64;
             b.holes = topology::holes(&region).count as u64;
+            b.set_params("grid", &Model::Grid(&region).params());
             return run_on_region(&region, b, spec, config, done);
+        }
+        Ok((Loaded::Discrete(inst), sha)) => {
+            let mut b = base.clone();
+            b.sha256 = sha;
+            b.n = inst.len() as u64;
+            b.set_params("discrete", &inst.params());
+            return run_on_discrete(&inst, b, spec, config, done);
         }
         Err(e) => e,
     };
@@ -288,19 +297,40 @@ fn run_instance(
     vec![Row {
         algorithm: "instance".into(),
         objective: "-".into(),
-        error: region.to_string(),
+        error: error.to_string(),
         ..base
     }]
 }
 
+/// An instance of either model, as read or generated.
+enum Loaded {
+    Grid(Region),
+    Discrete(Discrete),
+}
+
 /// Generates or reads the instance, saves it under `out/instances/` and returns it with the
 /// sha256 of the saved bytes.
-fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Region, String)> {
-    let (bytes, ext, region) = match &spec.source {
+fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Loaded, String)> {
+    let (bytes, ext, loaded) = match &spec.source {
         Source::Generate(params) => {
             let file = crate::generate::generate(params)?;
             let text = file.to_text()?;
-            (text.into_bytes(), "grid", file.region)
+            (text.into_bytes(), "grid", Loaded::Grid(file.region))
+        }
+        Source::Discrete { family, n, holes } => {
+            let g = crate::discrete::generate::generate(family, *n, *holes, spec.seed)?;
+            (g.text.into_bytes(), g.ext, Loaded::Discrete(g.instance))
+        }
+        Source::File(path) if crate::discrete::generate::is_discrete(path) => {
+            let inst = crate::discrete::generate::read(path)?;
+            let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+            let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("dm");
+            let ext = crate::discrete::generate::EXTENSIONS
+                .iter()
+                .find(|x| x.eq_ignore_ascii_case(ext))
+                .copied()
+                .unwrap_or("dm");
+            (bytes, ext, Loaded::Discrete(inst))
         }
         Source::File(path) => {
             let inst = Instance::read(path)?;
@@ -310,12 +340,12 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Region, String)> {
             } else {
                 "grid"
             };
-            (bytes, ext, inst.region)
+            (bytes, ext, Loaded::Grid(inst.region))
         }
     };
     let path = out.join("instances").join(format!("{}.{ext}", spec.name));
     std::fs::write(&path, &bytes).map_err(|e| Error::io(&path, e))?;
-    Ok((region, sha256_hex(&bytes)))
+    Ok((loaded, sha256_hex(&bytes)))
 }
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
@@ -411,7 +441,13 @@ fn run_on_region(
                 continue;
             }
             let eval = evaluate::evaluate(subject, region, &options, &pending, &reference);
-            rows.extend(algorithm_rows(region, &base, subject, &name, &eval));
+            rows.extend(algorithm_rows(
+                Model::Grid(region),
+                &base,
+                subject,
+                &name,
+                &eval,
+            ));
         }
     }
     rows
@@ -478,21 +514,146 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
     row
 }
 
+/// [`run_on_region`] for a discrete instance: the config's exact objectives by the discrete
+/// exact solver ([`crate::discrete::exact`]), then every registered algorithm with a discrete
+/// run (or those the family names). Outside algorithms take grid regions only: a family naming
+/// one gets an error row for it.
+fn run_on_discrete(
+    inst: &Discrete,
+    base: Row,
+    spec: &InstanceSpec,
+    config: &Config,
+    done: &HashMap<(String, String, String), Row>,
+) -> Vec<Row> {
+    let mut rows = Vec::new();
+    let mut reference = Reference::default();
+    for e in &config.exact {
+        if inst.len() > e.max_n {
+            continue;
+        }
+        let name = exact_objective_name(e);
+        let key = (spec.name.clone(), EXACT.to_string(), name.clone());
+        let row = match done.get(&key) {
+            Some(r) => r.clone(),
+            None => {
+                let row = discrete_exact_row(inst, &base, e, &name);
+                rows.push(row.clone());
+                row
+            }
+        };
+        if let Ok(objective) = name.parse::<Objective>() {
+            reference.insert(objective, known_from(&row, &name));
+        }
+    }
+    let names: Vec<String> = match &spec.algorithms {
+        Some(names) => names.clone(),
+        None => algorithms::REGISTRY
+            .iter()
+            .filter(|a| a.discrete.is_some())
+            .map(|a| a.name.to_string())
+            .collect(),
+    };
+    for algo_name in names {
+        let Some(algorithm) = algorithms::find(&algo_name).filter(|a| a.discrete.is_some()) else {
+            let key = (spec.name.clone(), algo_name.clone(), "-".to_string());
+            if !done.contains_key(&key) {
+                rows.push(Row {
+                    algorithm: algo_name.clone(),
+                    objective: "-".into(),
+                    error: format!("{algo_name} does not run on discrete instances"),
+                    ..base.clone()
+                });
+            }
+            continue;
+        };
+        let subject = Subject::Registered(algorithm);
+        let mut seen = std::collections::HashSet::new();
+        for options in config.option_sets() {
+            let name = evaluate::variant_name(algorithm.name, algorithm.objectives, &options);
+            if !seen.insert(name.clone()) {
+                continue;
+            }
+            let pending: Vec<Objective> = algorithm
+                .objectives
+                .iter()
+                .copied()
+                .filter(|o| !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string())))
+                .collect();
+            if pending.is_empty() {
+                continue;
+            }
+            let eval = evaluate::evaluate_discrete(algorithm, inst, &options, &pending, &reference);
+            rows.extend(algorithm_rows(
+                Model::Discrete(inst),
+                &base,
+                subject,
+                &name,
+                &eval,
+            ));
+        }
+    }
+    rows
+}
+
+/// The exact row of one `[[exact]]` objective on a discrete instance.
+fn discrete_exact_row(inst: &Discrete, base: &Row, e: &ExactSpec, name: &str) -> Row {
+    use crate::discrete::exact as dexact;
+    let mut row = Row {
+        algorithm: EXACT.into(),
+        objective: name.to_string(),
+        ..base.clone()
+    };
+    let start = Instant::now();
+    let outcome = evaluate::guarded(|| {
+        let objective =
+            exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
+        let options = dexact::DiscreteOptions {
+            time_limit: Some(e.time_limit),
+            threads: 1,
+            verbose: false,
+        };
+        Ok(dexact::solve(inst, objective, &options))
+    });
+    row.seconds = start.elapsed().as_secs_f64();
+    match outcome {
+        Err(msg) => row.error = msg,
+        Ok(res) => {
+            row.value = res.value;
+            row.length = res.length;
+            row.turns = res.turns;
+            row.cycles = res.cycles.map(|c| c as u64);
+            row.opt_status = res.status.to_string();
+            row.lower_bound = Some(res.lower_bound);
+            row.lb_source = "exact".into();
+            row.valid = res.walks.as_ref().map(|_| res.valid);
+            if res.status == exact::Status::Optimal {
+                row.opt = res.value;
+            }
+            row.max_coverage = res.max_coverage.map(u64::from);
+            if let Some(m) = res.message.filter(|_| res.status == exact::Status::Error) {
+                row.error = m;
+            }
+        }
+    }
+    row.compute_ratios();
+    row
+}
+
 /// One row per objective of an evaluation (an error row for each objective it did not
 /// produce).
-fn algorithm_rows(
-    region: &Region,
+fn algorithm_rows<C>(
+    model: Model<'_>,
     base: &Row,
     subject: Subject<'_>,
     name: &str,
-    eval: &Evaluation,
+    eval: &Evaluation<C>,
 ) -> Vec<Row> {
     let (merge, cutter, coverage4) = evaluate::relevant_options(subject.objectives());
     let row_for = |objective: Objective| Row {
         algorithm: name.to_string(),
         objective: objective.to_string(),
         guarantee: subject
-            .applicable(objective, region, &eval.options)
+            .applicable_to(objective, model, &eval.options)
             .iter()
             .map(|g| g.to_string())
             .collect::<Vec<_>>()

@@ -1022,6 +1022,7 @@ mod tests {
                 den: 1,
                 add: 0,
                 against: Against::Opt,
+                scale: crate::algorithms::Scale::One,
             }),
             when: When::Always,
             realized: Realized::ByAlgorithms,

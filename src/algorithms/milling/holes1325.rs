@@ -218,6 +218,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
         add: 0,
         against: Against::N,
         when: crate::algorithms::When::Always,
+        scale: crate::algorithms::Scale::One,
         source: "Theorem 7 of Lawn mowing and milling",
         theorem: &crate::algorithms::theorems::MILLING_THM_7,
     }],
@@ -228,4 +229,5 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     requires: "a connected region without local cut vertices",
     precondition,
     run: |region, _| holes1325(region),
+    discrete: None,
 };

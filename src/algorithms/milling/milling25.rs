@@ -492,6 +492,7 @@ pub(crate) const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Al
         add: -17,
         against: crate::algorithms::Against::N,
         when: crate::algorithms::When::Always,
+        scale: crate::algorithms::Scale::One,
         source: "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
         theorem: &crate::algorithms::theorems::MILLING_THM_4,
     }],
@@ -503,4 +504,5 @@ pub(crate) const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Al
     requires: "a connected region",
     precondition,
     run: |region, _| milling25(region),
+    discrete: None,
 };

@@ -779,6 +779,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
             add: -4,
             against: Against::N,
             when: crate::algorithms::When::Biconnected,
+            scale: crate::algorithms::Scale::One,
             source: "Theorem 5 of Lawn mowing and milling",
             theorem: &crate::algorithms::theorems::MILLING_THM_5,
         },
@@ -796,6 +797,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     requires: "a connected region without holes",
     precondition,
     run: |region, _| tsp65(region),
+    discrete: None,
 };
 
 #[cfg(test)]

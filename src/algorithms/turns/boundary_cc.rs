@@ -307,6 +307,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     requires: "every pixel a boundary pixel (several components allowed)",
     precondition,
     run,
+    discrete: None,
 };
 
 #[cfg(test)]

@@ -177,6 +177,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     requires: "a connected region",
     precondition: crate::algorithms::precondition::connected,
     run,
+    discrete: None,
 };
 
 #[cfg(test)]

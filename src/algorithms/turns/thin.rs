@@ -224,6 +224,7 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
     requires: "a connected thin region (no 2x2 block)",
     precondition,
     run: run_cc,
+    discrete: None,
 };
 
 /// The registry entry of `thin-merge`: the optimal cycle cover of a thin pocket, merged free
@@ -288,6 +289,7 @@ pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
     requires: "a connected thin region (no 2x2 block)",
     precondition,
     run: run_merge,
+    discrete: None,
 };
 
 #[cfg(test)]

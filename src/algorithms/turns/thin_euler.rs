@@ -178,6 +178,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     requires: "a connected thin region whose pixels all have even degree",
     precondition,
     run,
+    discrete: None,
 };
 
 #[cfg(test)]
