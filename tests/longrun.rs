@@ -275,32 +275,49 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let (full, old) = (dir.join("full"), dir.join("old"));
     assert_ok(&bench(&cfg, &full, &[]));
     assert_ok(&bench(&cfg, &old, &[]));
-    // Drop the last three columns (none of them holds a comma in a quoted field here: they
-    // are the last ones) and keep only the header and 6 rows.
+    // Two older layouts: before the option columns (ending at `error`) and before the model
+    // columns (ending at `coverage4`). Drop the last columns (none of them holds a comma in a
+    // quoted field: they are the last ones) and keep only the header and 6 rows.
     let path = old.join("results.csv");
     let text = std::fs::read_to_string(&path).unwrap();
-    let old_text: String = text
-        .lines()
-        .take(7)
-        .map(|l| {
-            let mut cut = l;
-            for _ in 0..3 {
-                cut = &cut[..cut.rfind(',').unwrap()];
-            }
-            format!("{cut}\n")
-        })
-        .collect();
+    let cut_columns = |text: &str, k: usize| -> String {
+        text.lines()
+            .take(7)
+            .map(|l| {
+                let mut cut = l;
+                for _ in 0..k {
+                    cut = &cut[..cut.rfind(',').unwrap()];
+                }
+                format!("{cut}\n")
+            })
+            .collect()
+    };
+    let old_text = cut_columns(&text, 10);
     assert!(old_text.lines().next().unwrap().ends_with(",error"));
+    let between = cut_columns(&text, 7);
+    assert!(between.lines().next().unwrap().ends_with(",coverage4"));
+    let old2 = dir.join("old2");
+    std::fs::create_dir_all(&old2).unwrap();
+    for f in std::fs::read_dir(&old).unwrap() {
+        let f = f.unwrap().path();
+        if f.is_file() {
+            std::fs::copy(&f, old2.join(f.file_name().unwrap())).unwrap();
+        }
+    }
+    std::fs::create_dir_all(old2.join("instances")).unwrap();
+    std::fs::write(old2.join("results.csv"), &between).unwrap();
     std::fs::write(&path, &old_text).unwrap();
 
-    assert_ok(&mowmill_env(
-        &["bench", "--resume", s(&old), "--config", s(&cfg)],
-        &[],
-    ));
+    for run in [&old, &old2] {
+        assert_ok(&mowmill_env(
+            &["bench", "--resume", s(run), "--config", s(&cfg)],
+            &[],
+        ));
+    }
     let header = std::fs::read_to_string(&path).unwrap();
     let header = header.lines().next().unwrap().to_string();
     assert!(
-        header.ends_with(",error,merge,cutter,coverage4"),
+        header.ends_with(",error,merge,cutter,coverage4,model,d,delta,mu,rho,edges,direction_sum"),
         "{header}"
     );
     let rows = read_rows(&path).expect("every line has every column");
@@ -310,10 +327,18 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
                 merge: String::new(),
                 cutter: String::new(),
                 coverage4: None,
+                model: String::new(),
+                d: None,
+                delta: None,
+                mu: None,
+                rho: None,
+                edges: None,
+                direction_sum: None,
                 ..r
             })
             .collect()
     };
+    assert_eq!(no_options(comparable(&old2)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old)), no_options(comparable(&full)));
     // The rows run after the resume record their options.
     assert!(rows.iter().any(|r| r.merge == "smart"));

@@ -334,7 +334,8 @@ pub enum Param {
     RhoPlus2Delta,
     /// δ, the average degree.
     Delta,
-    /// μ, the maximum degree.
+    /// μ, the maximum degree; at least 1 (a one-vertex instance has μ = 0 and its one-vertex
+    /// walk visits the vertex once: we read Table 1's "coverage μ" as max(μ, 1)).
     Mu,
     /// d, the allowed directions of a lattice instance (none: the bound does not apply).
     D,
@@ -351,7 +352,7 @@ impl Param {
         Some(match self {
             Param::RhoPlus2Delta => (p.direction_sum as i64 + 4 * p.edges as i64, n),
             Param::Delta => (2 * p.edges as i64, n),
-            Param::Mu => (i64::from(p.mu), 1),
+            Param::Mu => (i64::from(p.mu.max(1)), 1),
             Param::D => (i64::from(p.d?), 1),
             Param::StarRatio => (p.beta_max as i64, 1),
         })
@@ -837,6 +838,7 @@ mod tests {
             add: -4,
             against: Against::N,
             when: When::Always,
+            scale: Scale::One,
             source: "Theorem 5",
             theorem: &theorems::MILLING_THM_5,
         };
@@ -854,6 +856,66 @@ mod tests {
         };
         assert!(h.holds(25, 10) && !h.holds(26, 10));
         assert_eq!(h.to_string(), "length <= 5/2 OPT (Theorem 5)");
+    }
+
+    #[test]
+    fn factors_in_instance_parameters_are_put_in_exactly() {
+        // A 3x3 square: n = 9, |E| = 12 (delta = 24/9), mu = 4, rho = 2, d = 2.
+        let r = Region::rectangle(3, 3);
+        let g = Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Value,
+            Against::Opt,
+            1,
+            Param::RhoPlus2Delta,
+            2,
+            When::Always,
+            &theorems::TURNS_COR_5_1,
+            "Corollary 5.1",
+        );
+        assert_eq!(g.to_string(), "turns <= (rho + 2 delta + 2) OPT (Corollary 5.1)");
+        // Unresolved, nothing is decided.
+        let m = Measured {
+            value: 1,
+            length: 1,
+            max_coverage: 1,
+        };
+        assert_eq!(g.decide(&m, 9, Some(1), None), None);
+        // rho + 2 delta + 2 = 2 + 48/9 + 2 = 84/9 = 28/3.
+        let on = g.on_region(&r).unwrap();
+        assert_eq!((on.num, on.den, on.add, on.scale), (28, 3, 0, Scale::One));
+        assert!(on.holds(28, 3) && !on.holds(29, 3));
+        assert_eq!(on.to_string(), "turns <= 28/3 OPT (Corollary 5.1)");
+        // 5d + 2 on a grid (d = 2) is 12; a discrete instance without d is not a lattice.
+        let t = Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Value,
+            Against::Opt,
+            5,
+            Param::D,
+            2,
+            When::Lattice,
+            &theorems::TURNS_THM_5_2_TOUR,
+            "Theorem 5.2",
+        );
+        assert_eq!(t.on_region(&r).unwrap().num, 12);
+        let path = Discrete::new(3, &[(0, 1), (1, 2)], &[(1, 0, 2)], None).unwrap();
+        assert!(t.on(Model::Discrete(&path)).is_none());
+        // Coverage <= mu against the constant 1.
+        let c = Guarantee::scaled(
+            Objective::Turns,
+            Quantity::MaxCoverage,
+            Against::One,
+            1,
+            Param::Mu,
+            0,
+            When::Always,
+            &theorems::TURNS_COR_5_1_COVERAGE,
+            "Corollary 5.1",
+        );
+        assert_eq!(c.to_string(), "max-coverage <= mu (Corollary 5.1)");
+        let c = c.on(Model::Discrete(&path)).unwrap();
+        assert_eq!(c.to_string(), "max-coverage <= 2 (Corollary 5.1)");
     }
 
     #[test]

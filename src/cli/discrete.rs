@@ -5,23 +5,20 @@
 //! `Discrete::from_region` of this model.
 
 use anyhow::Result;
-use mowmill::discrete::check::{self, Report};
+use mowmill::discrete::check;
 use mowmill::discrete::exact::{self as dexact, DiscreteOptions};
 use mowmill::discrete::format::{self, DiscreteCover};
 use mowmill::discrete::generate::{self as dgen, PlaneParams};
-use mowmill::discrete::merge::{self, proven_bound, theorem_4_2_bound};
-use mowmill::discrete::star_cover::{self, star_cover};
-use mowmill::discrete::VertexWalk;
+use mowmill::discrete::merge::{proven_bound, theorem_4_2_bound};
+use mowmill::discrete::star_cover;
+use mowmill::algorithms::{self, Objective, Options};
 use mowmill::error::Error;
+use mowmill::evaluate::{self, Known, Reference};
 use serde_json::json;
 use std::path::Path;
 use std::process::ExitCode;
 
 pub use mowmill::discrete::generate::{FAMILIES, is_discrete, read};
-
-/// The algorithms `solve` runs on a discrete instance: the star cover of Theorem 5.1 (merged
-/// into a tour by Corollary 5.1), under the registered name of its grid case (Corollary 5.2).
-pub const ALGORITHMS: &[&str] = &["star-cover"];
 
 /// The instance's size and Table 1's parameters, with a rook placement (Lemma 4.3).
 pub fn info(path: &Path, as_json: bool) -> Result<ExitCode> {
@@ -120,16 +117,14 @@ pub fn exact(
 }
 
 /// One verdict of `solve`: a proven bound on a recounted value.
-fn verdict(name: &str, value: u64, bound: u64, source: &str) -> serde_json::Value {
-    json!({ "bound": name, "value": value, "limit": bound, "holds": value <= bound, "source": source })
-}
-
-/// `solve --algo star-cover` on a discrete instance: the greedy star cover's cycle cover
-/// (Theorem 5.1) and its merge into a tour (Corollary 5.1), both recounted by the checker,
-/// with the bounds that are proven for this implementation (see `discrete::star_cover`'s
-/// module documentation: the paper's averaged ρ + 2δ and Theorem 4.2's +2 per merge are not,
-/// and are reported as figures) and a rook placement as the lower bound (Lemma 4.3, off
-/// closed channels).
+/// `solve --algo A` on a discrete instance, for a registered algorithm with a discrete run
+/// (`discrete-star-cover`; `star-cover` names it too, the grid case of the same construction):
+/// its outputs recounted by the discrete checker and every registered guarantee decided with
+/// the instance's parameters (the one pipeline, [`evaluate::evaluate_discrete`]), against a
+/// lower bound from the greedy rooks or a maximum rook placement (Lemma 4.3, off closed
+/// channels). The paper's averaged forms (ρ + 2δ, Theorem 4.2's t + 2c − 2), which are not
+/// proven for this implementation, are reported as figures. Exit 1 when a guarantee fails or an
+/// output is invalid.
 pub fn solve(
     path: &Path,
     algo: &str,
@@ -137,77 +132,95 @@ pub fn solve(
     tour_out: Option<&Path>,
     as_json: bool,
 ) -> Result<ExitCode> {
-    if !ALGORITHMS.contains(&algo) {
+    let name = if algo == "star-cover" {
+        "discrete-star-cover"
+    } else {
+        algo
+    };
+    let Some(algorithm) = algorithms::find(name).filter(|a| a.discrete.is_some()) else {
+        let runs: Vec<&str> = algorithms::REGISTRY
+            .iter()
+            .filter(|a| a.discrete.is_some())
+            .map(|a| a.name)
+            .collect();
         return Err(Error::invalid(format!(
             "{}: algorithm {algo} runs on grid regions only; on discrete instances: {}",
             path.display(),
-            ALGORITHMS.join(", ")
+            runs.join(", ")
         ))
         .into());
-    }
+    };
     let inst = read(path)?;
     let params = inst.params();
-    let star = star_cover(&inst);
-    let cc = check::check(&inst, &star.cycles);
-    let (tour, stats) = merge::merge(&inst, &star.cycles);
-    let tr = check::check(&inst, &tour);
-    let rooks = star.rooks.len();
-    // The lower bound: the larger of the star cover's greedy rooks and a maximum rook
-    // placement (exact by a small MILP where it finishes in a few seconds).
+    // A maximum rook placement (exact by a small MILP where it finishes in a few seconds) is a
+    // lower bound on both turn objectives; the evaluation takes it where it beats the rooks.
     let placement = dexact::rook_placement(&inst, Some(5.0));
-    let lower_bound = rooks.max(placement.size as usize);
-    let mut verdicts = vec![
-        verdict(
-            "cc-turns <= sum of beta over the rooks",
-            cc.turns,
-            star_cover::star_turn_bound(&inst, &star.rooks),
-            "Theorem 5.1, proven with beta(v) = directions + 2 deg (discrete::star_cover)",
-        ),
-        verdict(
-            "max-coverage <= mu",
-            cc.max_coverage.max(tr.max_coverage).into(),
-            star_cover::coverage_bound(params).into(),
-            "Theorem 5.1 and Corollary 5.1",
-        ),
-        verdict(
-            "length <= 2|E| = delta n",
-            tr.length.max(cc.length),
-            star_cover::length_bound(&inst),
-            "Theorem 5.1 (delta-approximation on length)",
-        ),
-        verdict(
-            "turns <= cc-turns + 4 (c - 1)",
-            tr.turns,
-            proven_bound(cc.turns, star.cycles.len()),
-            "Corollary 5.1 with +4 per merge (discrete::merge)",
-        ),
-    ];
-    if let Some(d) = params.d {
-        verdicts.push(verdict(
-            "cc-turns <= 5d rooks",
-            cc.turns,
-            star_cover::theorem_5_2_cc_bound(d, lower_bound),
-            "Theorem 5.2",
-        ));
+    let source = if placement.exact {
+        "maximum rook placement (MILP)"
+    } else {
+        "rook placement (not proven maximum)"
+    };
+    let mut reference = Reference::default();
+    for o in [Objective::CcTurns, Objective::Turns] {
+        reference.insert(
+            o,
+            Known {
+                opt: None,
+                lower_bound: Some(u64::from(placement.size)),
+                status: String::new(),
+                source: source.to_string(),
+            },
+        );
     }
+    let eval = evaluate::evaluate_discrete(
+        algorithm,
+        &inst,
+        &Options::default(),
+        &[Objective::CcTurns, Objective::Turns],
+        &reference,
+    );
+    if let Some(e) = &eval.error {
+        return Err(Error::invalid(format!("{}: {e}", path.display())).into());
+    }
+    let (Some(cc), Some(tr)) = (
+        eval.output(Objective::CcTurns),
+        eval.output(Objective::Turns),
+    ) else {
+        return Err(Error::invalid(format!("{}: {name} returned no cycle cover and tour", path.display())).into());
+    };
+    let cert = |k: &str| eval.certificates.get(k).copied().unwrap_or(0);
+    let rooks = cert("rooks") as usize;
     let figures = json!({
         "theorem_5_1_averaged_bound": star_cover::theorem_5_1_bound(params, rooks),
         "corollary_5_1_averaged_bound": star_cover::corollary_5_1_bound(params, rooks),
-        "theorem_4_2_bound": theorem_4_2_bound(cc.turns, star.cycles.len()),
+        "theorem_4_2_bound": theorem_4_2_bound(cc.turns, cc.cycles),
+        "proven_merge_bound": proven_bound(cc.turns, cc.cycles),
         "theorem_5_2_tour_bound": params.d.map(|d| star_cover::theorem_5_2_tour_bound(d, rooks)),
     });
-    let (shown, shown_report): (&Vec<VertexWalk>, &Report) = if cycle_cover {
-        (&star.cycles, &cc)
-    } else {
-        (&tour, &tr)
-    };
+    let shown = if cycle_cover { cc } else { tr };
     if let Some(out) = tour_out {
-        DiscreteCover::new(shown.clone()).write(out)?;
+        shown.cover.write(out)?;
     }
-    let valid = cc.valid && tr.valid && tr.cycles == inst.components();
-    let all_hold = verdicts.iter().all(|v| v["holds"] == json!(true));
+    let valid = cc.valid && tr.valid;
+    let verdicts: Vec<serde_json::Value> = [cc, tr]
+        .iter()
+        .flat_map(|c| {
+            c.verdicts.iter().map(move |v| {
+                json!({"objective": c.objective.to_string(), "bound": v.bound, "holds": v.holds})
+            })
+        })
+        .collect();
+    let all_hold = [cc, tr].iter().all(|c| c.within_guarantee != Some(false));
+    let report = |c: &evaluate::Checked<_>| {
+        json!({
+            "valid": c.valid, "length": c.length, "turns": c.turns, "cycles": c.cycles,
+            "max_coverage": c.max_coverage, "error": c.error,
+            "lower_bound": c.lower_bound, "lb_source": c.lb_source,
+            "within_guarantee": c.within_guarantee,
+        })
+    };
     let v = json!({
-        "algorithm": algo,
+        "algorithm": algorithm.name,
         "model": "discrete",
         "n": inst.len(),
         "edges": inst.edge_count(),
@@ -215,18 +228,18 @@ pub fn solve(
         "mu": params.mu,
         "rho": params.rho,
         "d": params.d,
+        "beta_max": params.beta_max,
         "rooks": rooks,
-        "lower_bound": lower_bound,
-        "lower_bound_source": if placement.size as usize > rooks {
-            if placement.exact { "maximum rook placement (MILP)" } else { "rook placement (MILP, not proven maximum)" }
-        } else {
-            "the star cover's rooks (Lemma 4.3)"
-        },
-        "rings": star.rings,
-        "cc": cc,
-        "tour": tr,
-        "merges": stats.merges,
-        "free_merges": stats.free_merges,
+        "lower_bound": cc.lower_bound,
+        "lower_bound_source": cc.lb_source,
+        "rings": cert("rings"),
+        "rook_placement": placement.size,
+        "rook_placement_exact": placement.exact,
+        "cc": report(cc),
+        "tour": report(tr),
+        "merges": cert("merges"),
+        "free_merges": cert("free_merges"),
+        "certificates": eval.certificates,
         "verdicts": verdicts,
         "paper_figures": figures,
         "valid": valid,
@@ -235,44 +248,42 @@ pub fn solve(
         println!("{}", serde_json::to_string_pretty(&v)?);
     } else {
         println!(
-            "{algo} (discrete): {} turns {} | length {}, {} cycle(s), max coverage {} | {}",
+            "{} (discrete): {} turns {} | length {}, {} cycle(s), max coverage {} | {}",
+            algorithm.name,
             if cycle_cover { "cycle cover" } else { "tour" },
-            shown_report.turns,
-            shown_report.length,
-            shown_report.cycles,
-            shown_report.max_coverage,
+            shown.turns,
+            shown.length,
+            shown.cycles,
+            shown.max_coverage,
             if valid { "valid" } else { "INVALID" }
         );
         println!(
-            "  n {}, edges {}, delta {:.3}, mu {}, rho {:.3}, d {}",
+            "  n {}, edges {}, delta {:.3}, mu {}, rho {:.3}, d {}, beta_max {}",
             inst.len(),
             inst.edge_count(),
             params.delta,
             params.mu,
             params.rho,
-            params.d.map_or("-".to_string(), |d| d.to_string())
+            params.d.map_or("-".to_string(), |d| d.to_string()),
+            params.beta_max
         );
         println!(
-            "  lower bound {lower_bound} (rook placement, Lemma 4.3; the star cover has {rooks} rooks); cycle cover {} turns in {} cycles",
-            cc.turns,
-            star.cycles.len()
+            "  rooks {rooks} (lower bound {} from {}), rings {}, merges {} ({} free)",
+            shown.lower_bound.unwrap_or(0),
+            shown.lb_source,
+            cert("rings"),
+            cert("merges"),
+            cert("free_merges")
         );
-        for x in &verdicts {
-            println!(
-                "  {}: {} <= {}: {} ({})",
-                x["bound"].as_str().unwrap_or(""),
-                x["value"],
-                x["limit"],
-                if x["holds"] == json!(true) {
-                    "holds"
-                } else {
-                    "VIOLATED"
-                },
-                x["source"].as_str().unwrap_or("")
-            );
-        }
-        if let Some(e) = tr.error.as_ref().or(cc.error.as_ref()) {
-            println!("  checker: {e}");
+        for c in [cc, tr] {
+            for v in &c.verdicts {
+                let mark = match v.holds {
+                    Some(true) => "holds",
+                    Some(false) => "VIOLATED",
+                    None => "undecided",
+                };
+                println!("  {}: {} {mark}", c.objective, v.bound);
+            }
         }
     }
     Ok(if valid && all_hold {

@@ -222,9 +222,11 @@ fn check_same_run(
 }
 
 /// A `results.csv` written by an older mowmill (without the option columns `merge`, `cutter`,
-/// `coverage4` appended after `error`) is rewritten in the current header before rows are
-/// appended to it, so that no row lands under the wrong column; the old rows get empty option
-/// columns (an old run did not record them). Any other header is refused.
+/// `coverage4` appended after `error`, or without the model columns `model`, `d`, `delta`,
+/// `mu`, `rho`, `edges`, `direction_sum` appended after `coverage4`) is rewritten in the
+/// current header before rows are appended to it, so that no row lands under the wrong column;
+/// the old rows get empty columns (an old run did not record them). Any other header is
+/// refused.
 fn upgrade_header(results: &Path) -> Result<()> {
     let text = std::fs::read_to_string(results).map_err(|e| Error::io(results, e))?;
     let header = text.lines().next().unwrap_or_default();
@@ -234,10 +236,11 @@ fn upgrade_header(results: &Path) -> Result<()> {
     }
     let columns: Vec<&str> = current.split(',').collect();
     let given: Vec<&str> = header.split(',').collect();
-    // Only a prefix of today's columns ending at `error` is a known older layout.
+    // Only a prefix of today's columns ending at `error` (before the option columns) or at
+    // `coverage4` (before the model columns) is a known older layout.
     let known_old = given.len() < columns.len()
         && given[..] == columns[..given.len()]
-        && given.last() == Some(&"error");
+        && matches!(given.last(), Some(&"error") | Some(&"coverage4"));
     if !known_old {
         return Err(Error::parse(
             &results.display().to_string(),

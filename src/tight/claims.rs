@@ -204,6 +204,8 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
     let mut m = Measured::default();
     let applies = |r: &Row| {
         theorem.when == When::Always
+            // A lattice instance: the row carries its number of directions d.
+            || (theorem.when == When::Lattice && r.d.is_some())
             || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
                 a.guarantees
                     .iter()
@@ -257,6 +259,14 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                     m.violate(r);
                     continue;
                 }
+                // A factor in the instance's parameters (Table 1's discrete rows) is put in from
+                // the row's columns; a row without them, or off the bound's instances (d off
+                // lattices), does not decide it.
+                let Some(b) = r.params().and_then(|p| b.on(&p)).or_else(|| {
+                    (b.scale == crate::algorithms::Scale::One).then_some(b)
+                }) else {
+                    continue;
+                };
                 let q = match b.quantity {
                     Quantity::Value => r.value,
                     Quantity::Length => r.length,

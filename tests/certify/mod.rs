@@ -242,9 +242,11 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                 max_coverage: u64::from(rep.max_coverage),
             };
             for g in a.guarantees.iter().filter(|g| g.objective == out.objective) {
-                if !g.when.applies(region) {
+                // Keyed by the registered text; decided with the region's parameters put in
+                // (the discrete rows' factors in delta, mu, rho, d, beta_max).
+                let Some(on) = g.on_region(region) else {
                     continue;
-                }
+                };
                 let exact_claim = is_exact_claim(g);
                 let kind = if exact_claim { "exact" } else { "guarantee" };
                 let k = format!("{kind} {} {}", a.name, g);
@@ -259,7 +261,7 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                     (Quantity::MaxCoverage, Against::Opt) => (None, 0),
                     _ => (o, lb),
                 };
-                let verdict = g.decide(&m, n, o, Some(lb));
+                let verdict = on.decide(&m, n, o, Some(lb));
                 let q = match g.quantity {
                     Quantity::Value => value,
                     Quantity::Length => rep.length,
@@ -281,7 +283,7 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                         s.worst = s.worst.max(excess as f64);
                         score.excess = score.excess.max(excess);
                     } else {
-                        let bound = g.bound(x).max(1) as f64;
+                        let bound = on.bound(x).max(1) as f64;
                         if g.against == Against::Opt {
                             s.worst = s.worst.max(q as f64 / x.max(1) as f64);
                             score.ratio = score.ratio.max(q as f64 / bound);
