@@ -256,6 +256,10 @@ pub enum When {
     /// Instances without closed channels ("rings"): every grid region and lattice region.
     /// The star cover's ring cycles are merged at up to 4 turns each, which no rook pays for.
     NoRings,
+    /// At least two pixels (vertices). Table 1's factors in δ and ρ are 0 on a one-vertex
+    /// instance, whose one-vertex walk the checker counts as 4 turns (turning in place): the
+    /// paper's bounds are read for instances with an edge.
+    NonTrivial,
 }
 
 impl When {
@@ -274,6 +278,7 @@ impl When {
             (When::Biconnected, Model::Discrete(_)) => false,
             (When::Lattice, Model::Grid(_)) => true,
             (When::Lattice, Model::Discrete(inst)) => inst.directions().is_some(),
+            (When::NonTrivial, m) => m.len() >= 2,
             (When::NoRings, Model::Grid(_)) => true,
             (When::NoRings, Model::Discrete(inst)) => {
                 !crate::discrete::star_cover::channels(inst)
@@ -647,6 +652,7 @@ impl fmt::Display for Guarantee {
             When::Biconnected => format!("without cut vertices, N >= 3; {}", self.source),
             When::Lattice => format!("lattice instances; {}", self.source),
             When::NoRings => format!("no closed channels; {}", self.source),
+            When::NonTrivial => format!("N >= 2; {}", self.source),
         };
         let source = source.as_str();
         let q = self.quantity.label(self.objective);

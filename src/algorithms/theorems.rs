@@ -563,7 +563,7 @@ pub static TURNS_THM_5_1_DISCRETE: Theorem = Theorem {
     statement: "discrete milling (Table 1, row Discrete): the star cover is a (rho + 2 delta) cycle cover, rho and delta the averages over the instance",
     factor: "(rho + 2 delta) OPT_cc",
     measure: Measure::Bound(scaled(Value, 1, Param::RhoPlus2Delta, 0, Opt)),
-    when: When::Always,
+    when: When::NonTrivial,
     realized: Realized::ByAlgorithms,
     tight: None,
 };
@@ -574,7 +574,7 @@ pub static TURNS_COR_5_1: Theorem = Theorem {
     statement: "discrete milling (Table 1, row Discrete): the merged star cover is a (rho + 2 delta + 2) tour",
     factor: "(rho + 2 delta + 2) OPT",
     measure: Measure::Bound(scaled(Value, 1, Param::RhoPlus2Delta, 2, Opt)),
-    when: When::Always,
+    when: When::NonTrivial,
     realized: Realized::ByAlgorithms,
     tight: None,
 };

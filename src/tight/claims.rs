@@ -206,6 +206,7 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
         theorem.when == When::Always
             // A lattice instance: the row carries its number of directions d.
             || (theorem.when == When::Lattice && r.d.is_some())
+            || (theorem.when == When::NonTrivial && r.n >= 2)
             || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
                 a.guarantees
                     .iter()
