@@ -122,9 +122,11 @@ enum Command {
     /// The claims table: one row per theorem, over a results directory (exit 1 if a claim is
     /// contradicted).
     Claims {
-        /// Results directory holding results.csv (a `mowmill bench` run).
+        /// Results directory holding results.csv (a `mowmill bench` run). Repeat it to take
+        /// the rows of several runs (e.g. the validate suite and its discrete part); their
+        /// instances are then named `RUN/INSTANCE`, RUN the directory's name.
         #[arg(long, default_value = "results/default")]
-        from: PathBuf,
+        from: Vec<PathBuf>,
         /// tight.csv of a `mowmill tight` run, for the tight-family column.
         #[arg(long, default_value = "results/tight/tight.csv")]
         tight: PathBuf,

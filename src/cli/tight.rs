@@ -135,14 +135,17 @@ pub fn write_claims(
 /// Exits 1 when any claim is violated (the table says whether by the paper's algorithm or by
 /// our reading of it).
 pub fn claims_command(
-    from: &Path,
+    from: &[PathBuf],
     tight: &Path,
     hunt: &Path,
     out: Option<&Path>,
     findings: Option<&Path>,
 ) -> Result<ExitCode> {
     use mowmill::tight::claims;
-    let rows = harness::rows::read_rows(&from.join("results.csv"))?;
+    let sources = claims::Sources::new(from)?;
+    let rows = sources.read_rows()?;
+    let from_text = sources.describe();
+    let from = &from_text;
     let tight_rows = if tight.exists() {
         claims::read_tight(tight)?
     } else {
@@ -155,14 +158,14 @@ pub fn claims_command(
     let mut table = claims::table(&rows, &tight_rows);
     add_hunts(&mut table, hunt)?;
     let bad = match out {
-        Some(out) => write_claims(&table, from, out)?,
+        Some(out) => write_claims(&table, Path::new(from), out)?,
         None => {
-            println!("{}", claims::markdown(&table, &from.display().to_string()));
+            println!("{}", claims::markdown(&table, from));
             table.iter().filter(|c| c.verdict == "violated").count()
         }
     };
     if let Some(dir) = findings {
-        let files = claims::save_findings(&table, from, dir)?;
+        let files = claims::save_findings(&table, &sources, dir)?;
         if !files.is_empty() {
             eprintln!("saved {} finding file(s) in {}", files.len(), dir.display());
         }

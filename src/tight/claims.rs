@@ -843,9 +843,155 @@ pub fn markdown(table: &[ClaimRow], source: &str) -> String {
 /// algorithm's output re-run on it (algorithms are deterministic) as tour JSON, its figure
 /// (PNG) and a note naming the claim, the values and whether the violating algorithm is the
 /// paper's or our reading. Returns the files written.
+/// The results directories a claims table is computed from. With more than one, each row's
+/// instance is named `RUN/INSTANCE` (RUN the directory's name), so that equal instance names of
+/// different runs (the same family, parameters and index under another master seed) never meet.
+pub struct Sources {
+    dirs: Vec<(String, std::path::PathBuf)>,
+}
+
+impl Sources {
+    /// # Errors
+    /// [`Error::Invalid`] when no directory is given or two have the same name.
+    pub fn new(dirs: &[std::path::PathBuf]) -> Result<Sources> {
+        if dirs.is_empty() {
+            return Err(Error::invalid("claims: no results directory (--from DIR)"));
+        }
+        let named: Vec<(String, std::path::PathBuf)> = dirs
+            .iter()
+            .map(|d| {
+                let name = d
+                    .file_name()
+                    .map(|n| n.to_string_lossy().into_owned())
+                    .unwrap_or_else(|| d.display().to_string());
+                (name, d.clone())
+            })
+            .collect();
+        let mut names: Vec<&str> = named.iter().map(|(n, _)| n.as_str()).collect();
+        names.sort_unstable();
+        if let Some(w) = names.windows(2).find(|w| w[0] == w[1]) {
+            return Err(Error::invalid(format!(
+                "claims: two results directories are both named {}: their instances could not be told apart",
+                w[0]
+            )));
+        }
+        Ok(Sources { dirs: named })
+    }
+
+    /// Every row of every directory's `results.csv`, instances prefixed with `RUN/` when there
+    /// are several.
+    pub fn read_rows(&self) -> Result<Vec<Row>> {
+        let mut rows = Vec::new();
+        for (name, dir) in &self.dirs {
+            let mut read = crate::harness::rows::read_rows(&dir.join("results.csv"))?;
+            if self.dirs.len() > 1 {
+                for r in &mut read {
+                    r.instance = format!("{name}/{}", r.instance);
+                }
+            }
+            rows.extend(read);
+        }
+        Ok(rows)
+    }
+
+    /// The directories as the table's source line names them.
+    pub fn describe(&self) -> String {
+        self.dirs
+            .iter()
+            .map(|(_, d)| d.display().to_string())
+            .collect::<Vec<_>>()
+            .join(" + ")
+    }
+
+    /// The directory holding an instance of [`Sources::read_rows`], and its name there.
+    fn locate<'a>(&'a self, instance: &'a str) -> Option<(&'a Path, &'a str)> {
+        if self.dirs.len() == 1 {
+            return Some((&self.dirs[0].1, instance));
+        }
+        let (run, name) = instance.split_once('/')?;
+        self.dirs
+            .iter()
+            .find(|(n, _)| n == run)
+            .map(|(_, d)| (d.as_path(), name))
+    }
+}
+
+/// [`save_findings`] for a discrete instance: the instance file, the algorithm's walk of the
+/// objective (run again on the instance, recounted by the discrete checker), a note and, where
+/// the instance has coordinates, an SVG.
+fn save_discrete_finding(
+    c: &ClaimRow,
+    algo: &str,
+    objective: &str,
+    instance: &str,
+    src: &Path,
+    dir: &Path,
+) -> Result<Vec<std::path::PathBuf>> {
+    use crate::discrete::{check, draw};
+    let mut written = Vec::new();
+    let slug: String = c
+        .claim
+        .chars()
+        .map(|ch| if ch.is_ascii_alphanumeric() { ch.to_ascii_lowercase() } else { '-' })
+        .collect();
+    let stem = format!("{slug}-{algo}-{instance}");
+    let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("dm");
+    let copy = dir.join(format!("{stem}.{ext}"));
+    std::fs::copy(src, &copy).map_err(|e| Error::io(&copy, e))?;
+    written.push(copy);
+    let inst = crate::discrete::generate::read(src)?;
+    let mut note = format!(
+        "# {} ({}) violated\n\nalgorithm: {algo}, objective: {objective}, instance: {instance}, n = {}\n\
+         claim: {} ({})\nimplementation: {}\n",
+        c.claim,
+        c.paper,
+        inst.len(),
+        c.factor,
+        c.statement,
+        c.implementation
+    );
+    let run = crate::algorithms::find(algo).and_then(|a| a.discrete);
+    if let Some(run) = run {
+        match run(&inst, &crate::algorithms::Options::default()) {
+            Ok(sol) => {
+                if let Some(out) = sol.outputs.iter().find(|o| o.objective.name() == objective) {
+                    let rep = check::check(&inst, &out.cover.cycles);
+                    let walk = dir.join(format!("{stem}.tour.json"));
+                    out.cover.write(&walk)?;
+                    written.push(walk);
+                    let _ = writeln!(
+                        note,
+                        "checked output: valid {}, length {}, turns {}, cycles {}, max coverage {}",
+                        rep.valid, rep.length, rep.turns, rep.cycles, rep.max_coverage
+                    );
+                    let svg = dir.join(format!("{stem}.svg"));
+                    let opts = crate::draw::DrawOptions {
+                        title: Some(format!("{}: {algo} on {instance}", c.claim)),
+                        caption: Some(draw::caption(&inst, Some(&out.cover.cycles))),
+                        ..crate::draw::DrawOptions::default()
+                    };
+                    match draw::draw(&inst, Some(&out.cover.cycles), &svg, &opts) {
+                        Ok(()) => written.push(svg),
+                        Err(e) => {
+                            let _ = writeln!(note, "not drawn: {e}");
+                        }
+                    }
+                }
+            }
+            Err(e) => {
+                let _ = writeln!(note, "the algorithm failed on it: {e}");
+            }
+        }
+    }
+    let md = dir.join(format!("{stem}.md"));
+    std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
+    written.push(md);
+    Ok(written)
+}
+
 pub fn save_findings(
     table: &[ClaimRow],
-    from: &Path,
+    sources: &Sources,
     dir: &Path,
 ) -> Result<Vec<std::path::PathBuf>> {
     use crate::algorithms::{self, Objective, Options};
@@ -858,6 +1004,17 @@ pub fn save_findings(
                 continue;
             }
             std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+            let Some((from, instance)) = sources.locate(instance) else {
+                continue;
+            };
+            if let Some(src) = ["dm", "vox", "hex"]
+                .iter()
+                .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
+                .find(|p| p.exists())
+            {
+                written.extend(save_discrete_finding(c, algo, objective, instance, &src, dir)?);
+                continue;
+            }
             let Some(src) = ["grid", "wkt"]
                 .iter()
                 .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
