@@ -148,3 +148,82 @@ fn bad_discrete_input_is_refused_with_its_line_and_exit_2() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("grid regions only"));
 }
+
+/// The bench harness on both models: a grid region and its `.dm` export give the same exact
+/// optima and the same `discrete-star-cover` rows (the grid special case through both models);
+/// every row carries the model columns; the discrete families generate inside a suite; and the
+/// claims table over two runs keeps their instances apart.
+#[test]
+fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
+    use mowmill::harness::rows::{Row, read_rows};
+    let dir = temp_dir("discrete-bench");
+    let files = dir.join("files");
+    std::fs::create_dir_all(&files).unwrap();
+    let grid = files.join("r.grid");
+    std::fs::write(&grid, "####.\n#..##\n#####\n##.#.\n").unwrap();
+    ok(&["export", s(&grid), "--format", "dm", "--out", s(&files.join("r-export.dm"))]);
+    let config = dir.join("suite.toml");
+    std::fs::write(
+        &config,
+        format!(
+            "name = \"both\"\nseed = 3\n\n[[family]]\nfamily = \"voxel\"\nn = 12\ncount = 2\n\n\
+             [[family]]\nfamily = \"hex\"\nn = 10\n\n[[files]]\ndir = {:?}\nfamily = \"files\"\n\
+             algorithms = [\"discrete-star-cover\"]\n\n\
+             [[exact]]\nobjective = \"cc-turns\"\nmax_n = 30\ntime_limit = 60\n\n\
+             [[exact]]\nobjective = \"turns\"\nmax_n = 30\ntime_limit = 60\n\n\
+             [[exact]]\nobjective = \"length\"\nmax_n = 30\ntime_limit = 60\n",
+            files.display().to_string()
+        ),
+    )
+    .unwrap();
+    let run = dir.join("run");
+    ok(&["bench", "--config", s(&config), "--out", s(&run), "--jobs", "2"]);
+    let rows = read_rows(&run.join("results.csv")).unwrap();
+    assert!(rows.iter().all(|r| r.error.is_empty()), "error rows");
+    assert!(rows.iter().all(|r| !r.model.is_empty() && r.mu.is_some()));
+    let of = |instance: &str| -> Vec<&Row> {
+        rows.iter().filter(|r| r.instance == instance).collect()
+    };
+    let (g, d) = (of("files_r"), of("files_r-export"));
+    assert!(g.iter().all(|r| r.model == "grid") && d.iter().all(|r| r.model == "discrete"));
+    assert_eq!(g.len(), 5, "3 exact rows and the star cover's 2");
+    assert_eq!(g.len(), d.len());
+    for (a, b) in g.iter().zip(&d) {
+        let key = |r: &Row| {
+            (
+                (r.algorithm.clone(), r.objective.clone()),
+                (r.value, r.opt, r.length, r.turns, r.max_coverage),
+                (r.within_guarantee, r.valid),
+                (r.d, r.mu, r.edges, r.direction_sum),
+            )
+        };
+        assert_eq!(key(a), key(b));
+        assert!(a.opt.is_some() || a.algorithm != "exact", "{a:?}");
+    }
+    // The generated families: lattice rows carry d = 3 and are decided against the optimum.
+    let voxel: Vec<&Row> = rows.iter().filter(|r| r.family == "voxel").collect();
+    assert!(!voxel.is_empty() && voxel.iter().all(|r| r.d == Some(3)));
+    assert!(
+        voxel
+            .iter()
+            .filter(|r| r.algorithm == "discrete-star-cover")
+            .all(|r| r.within_guarantee == Some(true) && r.opt.is_some())
+    );
+    // Claims over two runs: instances are named RUN/INSTANCE and the Table 1 rows are decided.
+    let copy = dir.join("again");
+    ok(&["bench", "--config", s(&config), "--out", s(&copy), "--jobs", "2"]);
+    let out = dir.join("claims");
+    ok(&[
+        "claims", "--from", s(&run), "--from", s(&copy), "--out", s(&out), "--hunt",
+        s(&dir.join("no-hunt")), "--tight", s(&dir.join("no-tight.csv")),
+    ]);
+    let md = std::fs::read_to_string(out.join("claims.md")).unwrap();
+    let row = md
+        .lines()
+        .find(|l| l.contains("| Theorem 5.2 |"))
+        .expect("a Theorem 5.2 row");
+    assert!(row.contains("**holds**"), "{row}");
+    // 2 voxel + 1 hex + 1 grid + 1 export per run, decided in both runs: 10 instances.
+    let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+    assert_eq!(cells[6], "10", "{row}");
+}
