@@ -17,13 +17,20 @@
 //! algorithms = ["tsp65"]   # optional; default: every registered algorithm whose
 //!                          # preconditions hold on the instance
 //!
-//! [[files]]            # existing instances: every .grid/.wkt/.poly/.gg/.csv file of a folder
+//! [[family]]
+//! family = "voxel"     # the discrete families voxel (n, holes), hex, honeycomb, plane (n):
+//! n = [20, 40]         # discrete instances, run by the algorithms with a discrete run
+//! count = 3
+//!
+//! [[files]]            # existing instances: every .grid/.wkt/.poly/.gg/.csv file of a folder, and
+//!                      # the discrete .dm/.vox/.hex (not .json: folders hold tours as .json)
 //! dir = "../instances/fixtures"   # relative to the config file's folder
 //! family = "fixtures"  # the family column of their rows
 //!
 //! [[exact]]
 //! objective = "length" # length, cc-turns, turns, weighted, weighted-cc, lawn-tsp
-//! max_n = 64           # only instances with at most this many pixels
+//! max_n = 64           # only instances with at most this many pixels (vertices); lawn-tsp
+//!                      # only on grid regions (discrete instances have no lawn model)
 //! time_limit = 20      # seconds per solve
 //! turn_cost = 2        # weighted(-cc) only: length + turn_cost · turns; the milling
 //!                      # algorithms then report weighted(-cc)-c2 too

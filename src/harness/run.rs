@@ -531,7 +531,11 @@ fn run_on_discrete(
     let mut rows = Vec::new();
     let mut reference = Reference::default();
     for e in &config.exact {
-        if inst.len() > e.max_n {
+        // Lawn mowing (`lawn-tsp`) has no discrete counterpart: it does not apply here, as
+        // `max_n` does not apply above its size.
+        let lawn = exact::Objective::parse(&e.objective, e.turn_cost)
+            .is_ok_and(|o| o == exact::Objective::LawnTsp);
+        if inst.len() > e.max_n || lawn {
             continue;
         }
         let name = exact_objective_name(e);
