@@ -17,10 +17,10 @@
 use crate::algorithms::{
     self, Algorithm, Cutter, Guarantee, Measured, Merge, Model, Objective, Options,
 };
-use crate::discrete::Discrete;
-use crate::discrete::format::DiscreteCover;
 use crate::bounds;
 use crate::checker::{self, Report};
+use crate::discrete::Discrete;
+use crate::discrete::format::DiscreteCover;
 use crate::error::{Error, Result};
 use crate::lawn_check;
 use crate::outside::OutsideAlgorithm;
@@ -553,17 +553,20 @@ pub fn discrete_cheap_bound(inst: &Discrete, objective: Objective) -> (u64, Stri
         let ch = star_cover::channels(inst);
         star_cover::greedy_rooks(inst, &ch).0.len() as u64
     };
-    let length = if inst.len() >= 2 { inst.len() as u64 } else { 0 };
+    let length = if inst.len() >= 2 {
+        inst.len() as u64
+    } else {
+        0
+    };
     match objective {
         Objective::Length => (length, "n: every vertex is visited".to_string()),
         Objective::Turns | Objective::CcTurns => (
             rooks(),
             "rooks: the greedy star cover's rooks (Lemma 4.3)".to_string(),
         ),
-        Objective::Weighted(c) | Objective::WeightedCc(c) => (
-            length + u64::from(c) * rooks(),
-            "n + C rooks".to_string(),
-        ),
+        Objective::Weighted(c) | Objective::WeightedCc(c) => {
+            (length + u64::from(c) * rooks(), "n + C rooks".to_string())
+        }
         Objective::LawnLength => (0, "none".to_string()),
     }
 }

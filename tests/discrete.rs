@@ -161,7 +161,14 @@ fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
     std::fs::create_dir_all(&files).unwrap();
     let grid = files.join("r.grid");
     std::fs::write(&grid, "####.\n#..##\n#####\n##.#.\n").unwrap();
-    ok(&["export", s(&grid), "--format", "dm", "--out", s(&files.join("r-export.dm"))]);
+    ok(&[
+        "export",
+        s(&grid),
+        "--format",
+        "dm",
+        "--out",
+        s(&files.join("r-export.dm")),
+    ]);
     let config = dir.join("suite.toml");
     std::fs::write(
         &config,
@@ -177,13 +184,20 @@ fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
     )
     .unwrap();
     let run = dir.join("run");
-    ok(&["bench", "--config", s(&config), "--out", s(&run), "--jobs", "2"]);
+    ok(&[
+        "bench",
+        "--config",
+        s(&config),
+        "--out",
+        s(&run),
+        "--jobs",
+        "2",
+    ]);
     let rows = read_rows(&run.join("results.csv")).unwrap();
     assert!(rows.iter().all(|r| r.error.is_empty()), "error rows");
     assert!(rows.iter().all(|r| !r.model.is_empty() && r.mu.is_some()));
-    let of = |instance: &str| -> Vec<&Row> {
-        rows.iter().filter(|r| r.instance == instance).collect()
-    };
+    let of =
+        |instance: &str| -> Vec<&Row> { rows.iter().filter(|r| r.instance == instance).collect() };
     let (g, d) = (of("files_r"), of("files_r-export"));
     assert!(g.iter().all(|r| r.model == "grid") && d.iter().all(|r| r.model == "discrete"));
     assert_eq!(g.len(), 5, "3 exact rows and the star cover's 2");
@@ -211,11 +225,28 @@ fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
     );
     // Claims over two runs: instances are named RUN/INSTANCE and the Table 1 rows are decided.
     let copy = dir.join("again");
-    ok(&["bench", "--config", s(&config), "--out", s(&copy), "--jobs", "2"]);
+    ok(&[
+        "bench",
+        "--config",
+        s(&config),
+        "--out",
+        s(&copy),
+        "--jobs",
+        "2",
+    ]);
     let out = dir.join("claims");
     ok(&[
-        "claims", "--from", s(&run), "--from", s(&copy), "--out", s(&out), "--hunt",
-        s(&dir.join("no-hunt")), "--tight", s(&dir.join("no-tight.csv")),
+        "claims",
+        "--from",
+        s(&run),
+        "--from",
+        s(&copy),
+        "--out",
+        s(&out),
+        "--hunt",
+        s(&dir.join("no-hunt")),
+        "--tight",
+        s(&dir.join("no-tight.csv")),
     ]);
     let md = std::fs::read_to_string(out.join("claims.md")).unwrap();
     let row = md

@@ -280,12 +280,10 @@ impl When {
             (When::Lattice, Model::Discrete(inst)) => inst.directions().is_some(),
             (When::NonTrivial, m) => m.len() >= 2,
             (When::NoRings, Model::Grid(_)) => true,
-            (When::NoRings, Model::Discrete(inst)) => {
-                !crate::discrete::star_cover::channels(inst)
-                    .list
-                    .iter()
-                    .any(|c| c.closed)
-            }
+            (When::NoRings, Model::Discrete(inst)) => !crate::discrete::star_cover::channels(inst)
+                .list
+                .iter()
+                .any(|c| c.closed),
         }
     }
 }
@@ -879,7 +877,10 @@ mod tests {
             &theorems::TURNS_COR_5_1,
             "Corollary 5.1",
         );
-        assert_eq!(g.to_string(), "turns <= (rho + 2 delta + 2) OPT (Corollary 5.1)");
+        assert_eq!(
+            g.to_string(),
+            "turns <= (rho + 2 delta + 2) OPT (Corollary 5.1)"
+        );
         // Unresolved, nothing is decided.
         let m = Measured {
             value: 1,

@@ -5,13 +5,13 @@
 //! `Discrete::from_region` of this model.
 
 use anyhow::Result;
+use mowmill::algorithms::{self, Objective, Options};
 use mowmill::discrete::check;
 use mowmill::discrete::exact::{self as dexact, DiscreteOptions};
 use mowmill::discrete::format::{self, DiscreteCover};
 use mowmill::discrete::generate::{self as dgen, PlaneParams};
 use mowmill::discrete::merge::{proven_bound, theorem_4_2_bound};
 use mowmill::discrete::star_cover;
-use mowmill::algorithms::{self, Objective, Options};
 use mowmill::error::Error;
 use mowmill::evaluate::{self, Known, Reference};
 use serde_json::json;
@@ -166,7 +166,7 @@ pub fn solve(
             o,
             Known {
                 opt: None,
-                lower_bound: Some(u64::from(placement.size)),
+                lower_bound: Some(placement.size),
                 status: String::new(),
                 source: source.to_string(),
             },
@@ -186,7 +186,11 @@ pub fn solve(
         eval.output(Objective::CcTurns),
         eval.output(Objective::Turns),
     ) else {
-        return Err(Error::invalid(format!("{}: {name} returned no cycle cover and tour", path.display())).into());
+        return Err(Error::invalid(format!(
+            "{}: {name} returned no cycle cover and tour",
+            path.display()
+        ))
+        .into());
     };
     let cert = |k: &str| eval.certificates.get(k).copied().unwrap_or(0);
     let rooks = cert("rooks") as usize;

@@ -263,9 +263,11 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                 // A factor in the instance's parameters (Table 1's discrete rows) is put in from
                 // the row's columns; a row without them, or off the bound's instances (d off
                 // lattices), does not decide it.
-                let Some(b) = r.params().and_then(|p| b.on(&p)).or_else(|| {
-                    (b.scale == crate::algorithms::Scale::One).then_some(b)
-                }) else {
+                let Some(b) = r
+                    .params()
+                    .and_then(|p| b.on(&p))
+                    .or_else(|| (b.scale == crate::algorithms::Scale::One).then_some(b))
+                else {
                     continue;
                 };
                 let q = match b.quantity {
@@ -932,7 +934,13 @@ fn save_discrete_finding(
     let slug: String = c
         .claim
         .chars()
-        .map(|ch| if ch.is_ascii_alphanumeric() { ch.to_ascii_lowercase() } else { '-' })
+        .map(|ch| {
+            if ch.is_ascii_alphanumeric() {
+                ch.to_ascii_lowercase()
+            } else {
+                '-'
+            }
+        })
         .collect();
     let stem = format!("{slug}-{algo}-{instance}");
     let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("dm");
@@ -1012,7 +1020,9 @@ pub fn save_findings(
                 .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
                 .find(|p| p.exists())
             {
-                written.extend(save_discrete_finding(c, algo, objective, instance, &src, dir)?);
+                written.extend(save_discrete_finding(
+                    c, algo, objective, instance, &src, dir,
+                )?);
                 continue;
             }
             let Some(src) = ["grid", "wkt"]
