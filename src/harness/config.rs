@@ -491,32 +491,7 @@ impl Config {
                     None => Problem::value(&at, e),
                 }
             })?;
-            if !(1..=MAX_INSTANCES).contains(&f.count) {
-                return Err(Problem::value(
-                    format!("{at}.count"),
-                    format!(
-                        "expected from 1 to {MAX_INSTANCES} instances per parameter combination, got {}",
-                        f.count
-                    ),
-                ));
-            }
-            let table_instances = f
-                .params
-                .values()
-                .filter(|v| !v.is_empty())
-                .try_fold(f.count, |acc, v| acc.checked_mul(v.len()));
-            total = match table_instances.and_then(|t| total.checked_add(t)) {
-                Some(t) if t <= MAX_INSTANCES => t,
-                _ => {
-                    return Err(Problem::value(
-                        &at,
-                        format!(
-                            "the suite would have more than {MAX_INSTANCES} instances (combinations of the \
-                             parameter lists × count)"
-                        ),
-                    ));
-                }
-            };
+            total = count_instances(f, &at, total)?;
             for combo in expand(f) {
                 let params = params_string(&combo);
                 // The seed does not decide refusals; the one of the first instance is at hand.
@@ -525,16 +500,7 @@ impl Config {
                     g.set(k, v).map_err(|e| Problem::value(&at, e))?;
                 }
                 generate::check(&g).map_err(|e| Problem::value(&at, format!("{params}: {e}")))?;
-                if let Some(first) = combinations.insert((f.family.clone(), params.clone()), i) {
-                    return Err(Problem::value(
-                        &at,
-                        format!(
-                            "{} {params} is also in family[{first}]: the same family and parameters give \
-                             the same instances (seeds and names) twice",
-                            f.family
-                        ),
-                    ));
-                }
+                record_combination(&mut combinations, &f.family, &params, i, &at)?;
             }
             check_algorithms(&f.algorithms, &outside, &at)?;
         }
@@ -731,6 +697,56 @@ impl Config {
     }
 }
 
+/// Checks a `[[family]]` table's `count` and returns the suite's instance total with its
+/// instances (combinations of the parameter lists × count) added.
+fn count_instances(f: &FamilySpec, at: &str, total: usize) -> std::result::Result<usize, Problem> {
+    if !(1..=MAX_INSTANCES).contains(&f.count) {
+        return Err(Problem::value(
+            format!("{at}.count"),
+            format!(
+                "expected from 1 to {MAX_INSTANCES} instances per parameter combination, got {}",
+                f.count
+            ),
+        ));
+    }
+    let table_instances = f
+        .params
+        .values()
+        .filter(|v| !v.is_empty())
+        .try_fold(f.count, |acc, v| acc.checked_mul(v.len()));
+    match table_instances.and_then(|t| total.checked_add(t)) {
+        Some(t) if t <= MAX_INSTANCES => Ok(t),
+        _ => Err(Problem::value(
+            at,
+            format!(
+                "the suite would have more than {MAX_INSTANCES} instances (combinations of the \
+                 parameter lists × count)"
+            ),
+        )),
+    }
+}
+
+/// Records that table `index` gives `family` with `params`; refuses a combination an earlier
+/// table gave (the same instances, seeds and names, twice).
+fn record_combination(
+    combinations: &mut BTreeMap<(String, String), usize>,
+    family: &str,
+    params: &str,
+    index: usize,
+    at: &str,
+) -> std::result::Result<(), Problem> {
+    match combinations.insert((family.to_string(), params.to_string()), index) {
+        Some(first) => Err(Problem::value(
+            at,
+            format!(
+                "{family} {params} is also in family[{first}]: the same family and parameters give \
+                 the same instances (seeds and names) twice"
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Whether `family` is a family of the discrete model (`voxel`, `hex`, `honeycomb`, `plane`).
 fn is_discrete_family(family: &str) -> bool {
     crate::discrete::generate::FAMILIES.contains(&family)
@@ -773,32 +789,7 @@ impl Config {
                 ));
             }
         }
-        if !(1..=MAX_INSTANCES).contains(&f.count) {
-            return Err(Problem::value(
-                format!("{at}.count"),
-                format!(
-                    "expected from 1 to {MAX_INSTANCES} instances per parameter combination, got {}",
-                    f.count
-                ),
-            ));
-        }
-        let table = f
-            .params
-            .values()
-            .filter(|v| !v.is_empty())
-            .try_fold(f.count, |acc, v| acc.checked_mul(v.len()));
-        let total = match table.and_then(|t| total.checked_add(t)) {
-            Some(t) if t <= MAX_INSTANCES => t,
-            _ => {
-                return Err(Problem::value(
-                    at,
-                    format!(
-                        "the suite would have more than {MAX_INSTANCES} instances (combinations of the \
-                         parameter lists × count)"
-                    ),
-                ));
-            }
-        };
+        let total = count_instances(f, at, total)?;
         let index = at
             .trim_start_matches("family[")
             .trim_end_matches(']')
@@ -809,16 +800,7 @@ impl Config {
             let (n, holes) = discrete_params(&combo);
             crate::discrete::generate::check(&f.family, n, holes)
                 .map_err(|e| Problem::value(at, format!("{params}: {e}")))?;
-            if let Some(first) = combinations.insert((f.family.clone(), params.clone()), index) {
-                return Err(Problem::value(
-                    at,
-                    format!(
-                        "{} {params} is also in family[{first}]: the same family and parameters give \
-                         the same instances (seeds and names) twice",
-                        f.family
-                    ),
-                ));
-            }
+            record_combination(combinations, &f.family, &params, index, at)?;
         }
         Ok(total)
     }

@@ -377,25 +377,9 @@ fn run_on_region(
 ) -> Vec<Row> {
     let mut rows = Vec::new();
     // Exact rows first (or their earlier results when resuming): the algorithms divide by them.
-    let mut reference = Reference::default();
-    for e in &config.exact {
-        if region.len() > e.max_n {
-            continue;
-        }
-        let name = exact_objective_name(e);
-        let key = (spec.name.clone(), EXACT.to_string(), name.clone());
-        let row = match done.get(&key) {
-            Some(r) => r.clone(),
-            None => {
-                let row = exact_row(region, &base, e, &name);
-                rows.push(row.clone());
-                row
-            }
-        };
-        if let Ok(objective) = name.parse::<Objective>() {
-            reference.insert(objective, known_from(&row, &name));
-        }
-    }
+    let reference = exact_rows(&mut rows, spec, config, done, |e| {
+        (region.len() <= e.max_n).then(|| exact_row(region, &base, e, &exact_objective_name(e)))
+    });
     let weighted: Vec<Objective> = config
         .exact
         .iter()
@@ -454,6 +438,37 @@ fn run_on_region(
         }
     }
     rows
+}
+
+/// The config's exact objectives on one instance: each row solved by `solve` (`None` where the
+/// objective does not apply), or taken from `done` when resuming; new rows are pushed to
+/// `rows`. Returns what they prove, for the algorithm rows to divide by.
+fn exact_rows(
+    rows: &mut Vec<Row>,
+    spec: &InstanceSpec,
+    config: &Config,
+    done: &HashMap<(String, String, String), Row>,
+    solve: impl Fn(&ExactSpec) -> Option<Row>,
+) -> Reference {
+    let mut reference = Reference::default();
+    for e in &config.exact {
+        let name = exact_objective_name(e);
+        let key = (spec.name.clone(), EXACT.to_string(), name.clone());
+        let row = match done.get(&key) {
+            Some(r) => r.clone(),
+            None => {
+                let Some(row) = solve(e) else {
+                    continue;
+                };
+                rows.push(row.clone());
+                row
+            }
+        };
+        if let Ok(objective) = name.parse::<Objective>() {
+            reference.insert(objective, known_from(&row, &name));
+        }
+    }
+    reference
 }
 
 /// What an exact row says about the optimum of its objective.
@@ -529,29 +544,14 @@ fn run_on_discrete(
     done: &HashMap<(String, String, String), Row>,
 ) -> Vec<Row> {
     let mut rows = Vec::new();
-    let mut reference = Reference::default();
-    for e in &config.exact {
+    let reference = exact_rows(&mut rows, spec, config, done, |e| {
         // Lawn mowing (`lawn-tsp`) has no discrete counterpart: it does not apply here, as
         // `max_n` does not apply above its size.
         let lawn = exact::Objective::parse(&e.objective, e.turn_cost)
             .is_ok_and(|o| o == exact::Objective::LawnTsp);
-        if inst.len() > e.max_n || lawn {
-            continue;
-        }
-        let name = exact_objective_name(e);
-        let key = (spec.name.clone(), EXACT.to_string(), name.clone());
-        let row = match done.get(&key) {
-            Some(r) => r.clone(),
-            None => {
-                let row = discrete_exact_row(inst, &base, e, &name);
-                rows.push(row.clone());
-                row
-            }
-        };
-        if let Ok(objective) = name.parse::<Objective>() {
-            reference.insert(objective, known_from(&row, &name));
-        }
-    }
+        (inst.len() <= e.max_n && !lawn)
+            .then(|| discrete_exact_row(inst, &base, e, &exact_objective_name(e)))
+    });
     let names: Vec<String> = match &spec.algorithms {
         Some(names) => names.clone(),
         None => algorithms::REGISTRY

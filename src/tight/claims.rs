@@ -918,6 +918,20 @@ impl Sources {
     }
 }
 
+/// A claim's name in file names: lower-case letters and digits, anything else `-`.
+fn claim_slug(claim: &str) -> String {
+    claim
+        .chars()
+        .map(|ch| {
+            if ch.is_ascii_alphanumeric() {
+                ch.to_ascii_lowercase()
+            } else {
+                '-'
+            }
+        })
+        .collect()
+}
+
 /// [`save_findings`] for a discrete instance: the instance file, the algorithm's walk of the
 /// objective (run again on the instance, recounted by the discrete checker), a note and, where
 /// the instance has coordinates, an SVG.
@@ -931,18 +945,7 @@ fn save_discrete_finding(
 ) -> Result<Vec<std::path::PathBuf>> {
     use crate::discrete::{check, draw};
     let mut written = Vec::new();
-    let slug: String = c
-        .claim
-        .chars()
-        .map(|ch| {
-            if ch.is_ascii_alphanumeric() {
-                ch.to_ascii_lowercase()
-            } else {
-                '-'
-            }
-        })
-        .collect();
-    let stem = format!("{slug}-{algo}-{instance}");
+    let stem = format!("{}-{algo}-{instance}", claim_slug(&c.claim));
     let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("dm");
     let copy = dir.join(format!("{stem}.{ext}"));
     std::fs::copy(src, &copy).map_err(|e| Error::io(&copy, e))?;
@@ -1038,18 +1041,7 @@ pub fn save_findings(
                 );
                 continue;
             };
-            let claim_slug: String = c
-                .claim
-                .chars()
-                .map(|ch| {
-                    if ch.is_ascii_alphanumeric() {
-                        ch.to_ascii_lowercase()
-                    } else {
-                        '-'
-                    }
-                })
-                .collect();
-            let stem = format!("{claim_slug}-{algo}-{instance}");
+            let stem = format!("{}-{algo}-{instance}", claim_slug(&c.claim));
             let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("grid");
             let copy = dir.join(format!("{stem}.{ext}"));
             std::fs::copy(&src, &copy).map_err(|e| Error::io(&copy, e))?;
