@@ -221,6 +221,8 @@ impl Tally {
 
 fn compare_region(region: &Region, rng: &mut ChaCha8Rng, tally: &mut Tally) {
     let polygon = Polygon::from_region(region).expect("a small region is a polygon");
+    // The integer pixels inside the polygon of a region are the region.
+    assert_eq!(&ortho::interior_pixels(&polygon).unwrap(), region);
     tally.regions += 1;
     for (name, cover) in algorithm_covers(region) {
         tally.add(agree(region, &polygon, &cover, &name));

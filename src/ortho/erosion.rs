@@ -235,13 +235,7 @@ fn representative(lines: &[Rational], f: usize) -> Rational {
 #[allow(clippy::result_large_err)]
 pub fn feasibility(polygon: &Polygon) -> Result<Erosion, Infeasible> {
     let edges = polygon.vertical_edges();
-    let (pxs, pys) = polygon.coordinates();
-    let (xs, ys) = (shifted_lines(&pxs), shifted_lines(&pys));
-    let rows = if xs.is_empty() || ys.is_empty() {
-        Vec::new()
-    } else {
-        face_runs(polygon, &pxs, &pys, &xs, &ys)
-    };
+    let Faces { xs, ys, rows } = faces(polygon);
     let run_box = |r: usize, (start, end): Run| {
         let (y0, y1) = (ys[r / 2], ys[r.div_ceil(2)]);
         let (x0, x1) = (xs[start as usize / 2], xs[end as usize / 2]);
@@ -313,6 +307,96 @@ pub fn feasibility(polygon: &Polygon) -> Result<Erosion, Infeasible> {
         to,
         point,
     })
+}
+
+/// The whole erosion (all pieces): the face lines and the runs of faces per doubled row.
+struct Faces {
+    xs: Vec<Rational>,
+    ys: Vec<Rational>,
+    rows: Vec<Vec<Run>>,
+}
+
+fn faces(polygon: &Polygon) -> Faces {
+    let (pxs, pys) = polygon.coordinates();
+    let (xs, ys) = (shifted_lines(&pxs), shifted_lines(&pys));
+    let rows = if xs.is_empty() || ys.is_empty() {
+        Vec::new()
+    } else {
+        face_runs(polygon, &pxs, &pys, &xs, &ys)
+    };
+    Faces { xs, ys, rows }
+}
+
+/// The integer pixels inside the polygon: pixel (x, y), the unit square [x, x+1] × [y, y+1],
+/// belongs when it lies in the polygon, that is when its centre lies in the erosion. This is
+/// R_N of Corollary 4's proof ("the union of all integer pixels"), the part milled by a tour
+/// of the pixel grid graph; for an integral polygon it is the region itself.
+///
+/// The pixels come from every piece of the erosion; a tour can only use those whose centre
+/// lies in the piece [`feasibility`] returns ([`Erosion::contains`]).
+///
+/// # Returns
+///
+/// The region (possibly empty), or [`Error::Invalid`](crate::Error) when it would have more
+/// than [`MAX_PIXELS`](crate::region::MAX_PIXELS) pixels (counted before any is made).
+///
+/// # Complexity
+///
+/// As [`feasibility`]'s erosion, plus O(N) for N pixels.
+///
+/// # Examples
+///
+/// ```
+/// use mowmill::ortho::{Polygon, interior_pixels};
+///
+/// // [0.5, 3] × [0.5, 3.25] holds the pixels with x and y in 1..=2.
+/// let p = Polygon::parse("POLYGON ((0.5 0.5, 3 0.5, 3 3.25, 0.5 3.25, 0.5 0.5))", "p.wkt")?;
+/// assert_eq!(interior_pixels(&p)?.to_ascii(), "##\n##\n");
+/// # Ok::<(), mowmill::Error>(())
+/// ```
+pub fn interior_pixels(polygon: &Polygon) -> crate::Result<crate::Region> {
+    use crate::region::{MAX_PIXELS, Pixel, Region};
+    let Faces { xs, ys, rows } = faces(polygon);
+    let (Some(&bottom), Some(&top)) = (ys.first(), ys.last()) else {
+        return Region::from_pixels([]);
+    };
+    let centre_range = |lo: Rational, hi: Rational| {
+        // Integers k with k + ½ in [lo, hi].
+        let shift = |v: Rational| {
+            v.checked_sub(Rational::HALF)
+                .expect("coordinates within the input limits fit")
+        };
+        (shift(lo).ceil(), shift(hi).floor())
+    };
+    let (y_first, y_last) = centre_range(bottom, top);
+    // Pixel rows and their runs of columns, counted before any pixel is made.
+    let mut spans: Vec<(i128, i128, i128)> = Vec::new();
+    let mut count: u128 = 0;
+    for y in y_first..=y_last {
+        let centre = Rational::new(2 * y + 1, 2).expect("a pixel centre is a rational");
+        let Some(r) = face(&ys, centre) else {
+            continue;
+        };
+        for &(start, end) in &rows[r] {
+            let (x0, x1) = centre_range(xs[start as usize / 2], xs[end as usize / 2]);
+            if x0 <= x1 {
+                spans.push((y, x0, x1));
+                count += (x1 - x0 + 1) as u128;
+            }
+        }
+    }
+    if count > MAX_PIXELS as u128 {
+        return Err(crate::Error::invalid(format!(
+            "the polygon holds {count} integer pixels; expected at most {MAX_PIXELS} (the pixel \
+             limit)"
+        )));
+    }
+    // Coordinates are at most 2^31 in magnitude, so every pixel inside has i32 coordinates.
+    Region::from_pixels(
+        spans
+            .into_iter()
+            .flat_map(|(y, x0, x1)| (x0..=x1).map(move |x| Pixel::new(x as i32, y as i32))),
+    )
 }
 
 /// The faces of the erosion, as runs per doubled row: a sweep upward over the doubled rows,
@@ -688,6 +772,38 @@ mod tests {
             ]
         );
         assert!(r.valid, "{:?}", r.error);
+    }
+
+    #[test]
+    fn interior_pixels_are_the_unit_squares_inside() {
+        let frame = polygon(
+            "POLYGON ((-0.5 0, 4.25 0, 4.25 3, -0.5 3, -0.5 0), (1 1, 1 2, 2.5 2, 2.5 1, 1 1))",
+        );
+        assert_eq!(
+            interior_pixels(&frame).unwrap(),
+            Region::from_pixels(
+                [
+                    (0, 0),
+                    (1, 0),
+                    (2, 0),
+                    (3, 0),
+                    (0, 1),
+                    (3, 1),
+                    (0, 2),
+                    (1, 2),
+                    (2, 2),
+                    (3, 2)
+                ]
+                .map(|(x, y)| Pixel::new(x, y))
+            )
+            .unwrap()
+        );
+        // Too thin for any pixel.
+        let thin = polygon("POLYGON ((0.5 0, 1.5 0, 1.5 3, 0.5 3, 0.5 0))");
+        assert!(interior_pixels(&thin).unwrap().is_empty());
+        let huge = polygon("POLYGON ((0 0, 100000 0, 100000 100000, 0 100000, 0 0))");
+        let e = interior_pixels(&huge).unwrap_err().to_string();
+        assert!(e.contains("10000000000 integer pixels"), "{e}");
     }
 
     #[test]

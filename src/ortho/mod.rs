@@ -11,7 +11,8 @@
 //!   exactly, with length and turns recounted; on integral inputs it agrees with the pixel
 //!   checker [`crate::checker::check`] (tests/ortho.rs).
 //! - [`feasibility`]: whether the polygon can be milled at all, the [`Erosion`] (the centre
-//!   positions, B in the paper) and its contour δB.
+//!   positions, B in the paper) and its contour δB; [`interior_pixels`], the integer pixels
+//!   inside (R_N in Corollary 4's proof).
 //!
 //! Conventions: the cutter is the axis-parallel unit square centred on the walk; pixel (x, y)
 //! of a [`Region`](crate::Region) is the unit square [x, x+1] × [y, y+1], its centre
@@ -26,7 +27,7 @@ mod rational;
 mod tour;
 
 pub use check::{Report, Violation, check, turn_cost};
-pub use erosion::{Erosion, Infeasible, feasibility};
+pub use erosion::{Erosion, Infeasible, feasibility, interior_pixels};
 pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
 pub use tour::{MAX_TOUR_POINTS, Tour};
