@@ -82,6 +82,7 @@ pub mod harness;
 pub mod hunt;
 pub mod instance;
 pub mod lawn_check;
+pub mod ortho;
 pub mod outside;
 pub mod pixel_list;
 pub mod region;

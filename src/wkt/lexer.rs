@@ -1,4 +1,5 @@
-//! Lexing WKT: tokens with their line and column, and exact integer values of numbers.
+//! Lexing WKT: tokens with their line and column, and exact values of numbers: integers for
+//! the pixel reader ([`number_value`]), reduced fractions for exact polygons ([`exact_value`]).
 
 use super::{MAX_COORD, MIN_COORD};
 
@@ -93,8 +94,9 @@ impl<'a> Lexer<'a> {
         let token = if c.is_ascii_alphabetic() {
             Token::Word(self.bump_while(|c| c.is_ascii_alphanumeric() || c == '_'))
         } else if c.is_ascii_digit() || matches!(c, '+' | '-' | '.') {
-            let number =
-                self.bump_while(|c| c.is_ascii_digit() || matches!(c, '+' | '-' | '.' | 'e' | 'E'));
+            let number = self.bump_while(|c| {
+                c.is_ascii_digit() || matches!(c, '+' | '-' | '.' | 'e' | 'E' | '/')
+            });
             Token::Number(number)
         } else {
             self.bump();
@@ -129,42 +131,30 @@ pub(crate) fn number_value(text: &str) -> NumberValue {
             NumberValue::OutOfRange
         };
     }
-    let (negative, unsigned) = match text.as_bytes().first() {
-        Some(b'-') => (true, &text[1..]),
-        Some(b'+') => (false, &text[1..]),
-        _ => (false, text),
-    };
-    let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
-        Some(k) => (&unsigned[..k], Some(&unsigned[k + 1..])),
-        None => (unsigned, None),
-    };
-    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-    if whole.len() + fraction.len() == 0 || !all_digits(whole) || !all_digits(fraction) {
-        return NumberValue::Malformed;
-    }
-    let mut exp: i64 = 0;
-    if let Some(e) = exponent {
-        let (sign, digits) = match e.as_bytes().first() {
-            Some(b'-') => (-1, &e[1..]),
-            Some(b'+') => (1, &e[1..]),
-            _ => (1, e),
+    if text.contains('/') {
+        return match exact_value(text) {
+            ExactValue::Fraction { num, den: 1 } => match i64::try_from(num) {
+                Ok(value) if (MIN_COORD..=MAX_COORD).contains(&value) => {
+                    NumberValue::Integer(value)
+                }
+                _ => NumberValue::OutOfRange,
+            },
+            ExactValue::Fraction { .. } => NumberValue::Fraction,
+            ExactValue::OutOfRange => NumberValue::OutOfRange,
+            ExactValue::Malformed => NumberValue::Malformed,
         };
-        if digits.is_empty() || !all_digits(digits) {
-            return NumberValue::Malformed;
-        }
-        for b in digits.bytes() {
-            exp = exp.saturating_mul(10).saturating_add(i64::from(b - b'0'));
-        }
-        exp *= sign;
     }
-    // value = digits × 10^shift, with the digits stripped of leading zeros.
-    let joined = format!("{whole}{fraction}");
-    let mut digits = joined.trim_start_matches('0').to_string();
+    let Some(Decimal {
+        negative,
+        mut digits,
+        shift,
+    }) = decimal_parts(text)
+    else {
+        return NumberValue::Malformed;
+    };
     if digits.is_empty() {
         return NumberValue::Integer(0);
     }
-    let shift = exp.saturating_sub(fraction.len() as i64);
     if shift < 0 {
         let drop = shift.unsigned_abs();
         let zeros = (digits.len() - digits.trim_end_matches('0').len()) as u64;
@@ -189,4 +179,145 @@ pub(crate) fn number_value(text: &str) -> NumberValue {
     } else {
         NumberValue::OutOfRange
     }
+}
+
+/// A decimal number token taken apart: its value is ±`digits` × 10^`shift`.
+struct Decimal {
+    negative: bool,
+    /// The significant digits, without leading zeros (empty for zero).
+    digits: String,
+    shift: i64,
+}
+
+/// Splits `[+-]digits[.digits][e[+-]digits]` into sign, digits and power of ten; `None` when
+/// the token is not of that form.
+fn decimal_parts(text: &str) -> Option<Decimal> {
+    let (negative, unsigned) = match text.as_bytes().first() {
+        Some(b'-') => (true, &text[1..]),
+        Some(b'+') => (false, &text[1..]),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match unsigned.find(['e', 'E']) {
+        Some(k) => (&unsigned[..k], Some(&unsigned[k + 1..])),
+        None => (unsigned, None),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if whole.len() + fraction.len() == 0 || !all_digits(whole) || !all_digits(fraction) {
+        return None;
+    }
+    let mut exp: i64 = 0;
+    if let Some(e) = exponent {
+        let (sign, digits) = match e.as_bytes().first() {
+            Some(b'-') => (-1, &e[1..]),
+            Some(b'+') => (1, &e[1..]),
+            _ => (1, e),
+        };
+        if digits.is_empty() || !all_digits(digits) {
+            return None;
+        }
+        for b in digits.bytes() {
+            exp = exp.saturating_mul(10).saturating_add(i64::from(b - b'0'));
+        }
+        exp *= sign;
+    }
+    let joined = format!("{whole}{fraction}");
+    Some(Decimal {
+        negative,
+        digits: joined.trim_start_matches('0').to_string(),
+        shift: exp.saturating_sub(fraction.len() as i64),
+    })
+}
+
+/// The exact value of a number token as a reduced fraction.
+#[derive(Debug, PartialEq)]
+pub(crate) enum ExactValue {
+    /// `num / den` in lowest terms, `den > 0`.
+    Fraction {
+        num: i128,
+        den: i128,
+    },
+    /// The numerator or the denominator needs more than 38 decimal digits.
+    OutOfRange,
+    Malformed,
+}
+
+/// Reads a number exactly: a decimal as [`number_value`] takes it (`0.35`, `-2`, `1e-3`) or a
+/// fraction `p/q` of two integers without spaces (`7/3`, `-1/2`; the sign, if any, before
+/// `p`, and `q > 0`). Nothing is rounded: a value whose numerator or denominator in lowest terms
+/// would not fit 38 decimal digits is [`ExactValue::OutOfRange`].
+pub(crate) fn exact_value(text: &str) -> ExactValue {
+    const MAX_DIGITS: usize = 38; // 10^38 < 2^127
+    let integer = |digits: &str| -> Option<i128> {
+        let digits = digits.trim_start_matches('0');
+        if digits.len() > MAX_DIGITS {
+            return None;
+        }
+        Some(digits.parse::<i128>().unwrap_or(0))
+    };
+    let all_digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let (num, den) = if let Some((p, q)) = text.split_once('/') {
+        let (negative, magnitude) = match p.as_bytes().first() {
+            Some(b'-') => (true, &p[1..]),
+            Some(b'+') => (false, &p[1..]),
+            _ => (false, p),
+        };
+        if !all_digits(magnitude) || !all_digits(q) {
+            return ExactValue::Malformed;
+        }
+        let (Some(p), Some(q)) = (integer(magnitude), integer(q)) else {
+            return ExactValue::OutOfRange;
+        };
+        if q == 0 {
+            return ExactValue::Malformed;
+        }
+        (if negative { -p } else { p }, q)
+    } else {
+        let Some(Decimal {
+            negative,
+            digits,
+            shift,
+        }) = decimal_parts(text)
+        else {
+            return ExactValue::Malformed;
+        };
+        // Trailing zeros of the digits only move the power of ten.
+        let significant = digits.trim_end_matches('0');
+        let shift = shift.saturating_add((digits.len() - significant.len()) as i64);
+        if significant.is_empty() {
+            return ExactValue::Fraction { num: 0, den: 1 };
+        }
+        let Some(mantissa) = integer(significant) else {
+            return ExactValue::OutOfRange;
+        };
+        let Some(power) = u32::try_from(shift.unsigned_abs())
+            .ok()
+            .and_then(|k| 10i128.checked_pow(k))
+        else {
+            return ExactValue::OutOfRange;
+        };
+        let signed = if negative { -mantissa } else { mantissa };
+        if shift >= 0 {
+            match signed.checked_mul(power) {
+                Some(num) => (num, 1),
+                None => return ExactValue::OutOfRange,
+            }
+        } else {
+            (signed, power)
+        }
+    };
+    let g = gcd(num.unsigned_abs(), den.unsigned_abs());
+    // g divides both, and den > 0, so the quotients fit and den stays positive.
+    ExactValue::Fraction {
+        num: num / g as i128,
+        den: den / g as i128,
+    }
+}
+
+/// The greatest common divisor (gcd(0, 0) = 1, so that dividing by it is always defined).
+pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a.max(1)
 }

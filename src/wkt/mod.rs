@@ -2,7 +2,8 @@
 //!
 //! [`parse_wkt`] reads one `POLYGON` or `MULTIPOLYGON` (keywords in any case, free whitespace)
 //! whose vertices are integers and whose edges are horizontal or vertical. Numbers may be
-//! written `3`, `-2`, `+3`, `3.0` or `1e1` as long as their value is an integer. The region is
+//! written `3`, `-2`, `+3`, `3.0`, `1e1` or `6/2` as long as their value is an integer (the
+//! polygons of [`crate::ortho`] take any such number, integral or not, by the same syntax). The region is
 //! the set of pixels whose centre lies inside the geometry: inside the outer ring of a polygon
 //! and inside none of its holes. Repeated and collinear consecutive vertices are merged, and ring
 //! orientation is ignored.
@@ -37,7 +38,6 @@
 
 use crate::error::Result;
 use crate::region::Region;
-use lexer::Lexer;
 use parser::Parser;
 use validate::Geometry;
 
@@ -51,6 +51,7 @@ mod writer;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use parser::Coordinate;
 pub use poly::parse_poly;
 pub use writer::to_wkt;
 
@@ -95,20 +96,46 @@ const MAX_COORD: i64 = i32::MAX as i64 + 1;
 ///     expected every edge to be horizontal or vertical");
 /// ```
 pub fn parse_wkt(text: &str, file: &str) -> Result<Region> {
-    let mut parser = Parser {
-        lexer: Lexer::new(text),
-        peeked: None,
-        file,
-    };
-    let (rings, keyword) = parser.geometry()?;
+    let (rings, keyword) = Parser::<i64>::new(text, file).geometry()?;
     rasterise(Geometry { rings, file }, keyword)
+}
+
+/// A ring of a valid geometry: its corners (repeated and collinear vertices merged, the first
+/// not repeated), the index of its polygon in the geometry, and whether it is a hole.
+pub(crate) struct ValidRing<C> {
+    pub(crate) corners: Vec<(C, C)>,
+    pub(crate) polygon: usize,
+    pub(crate) hole: bool,
+}
+
+/// Parses a WKT `POLYGON` or `MULTIPOLYGON` with coordinates of type `C` and checks it by the
+/// rules of [`parse_wkt`] (all but the pixel limit): the one reader of exact polygons
+/// ([`crate::ortho`]) and of pixel regions.
+pub(crate) fn parse_valid_rings<C: Coordinate>(
+    text: &str,
+    file: &str,
+) -> Result<Vec<ValidRing<C>>> {
+    let (rings, _) = Parser::<C>::new(text, file).geometry()?;
+    let geometry = Geometry { rings, file };
+    geometry.check_rings_meet_at_points()?;
+    let parents = geometry.enclosing_rings()?;
+    geometry.check_nesting(&parents)?;
+    Ok(geometry
+        .rings
+        .into_iter()
+        .map(|r| ValidRing {
+            corners: r.corners.iter().map(|c| (c.x, c.y)).collect(),
+            polygon: r.polygon,
+            hole: r.hole,
+        })
+        .collect())
 }
 
 /// Checks a geometry whose rings are each valid on their own (no crossings, rings meeting at
 /// points only, holes inside their outer ring, polygons apart, at most
 /// [`MAX_PIXELS`](crate::region::MAX_PIXELS) pixels, the last error placed at `keyword`) and
 /// fills its pixels: the one path of WKT and `.poly` input.
-fn rasterise(geometry: Geometry<'_>, keyword: lexer::Pos) -> Result<Region> {
+fn rasterise(geometry: Geometry<'_, i64>, keyword: lexer::Pos) -> Result<Region> {
     geometry.check_rings_meet_at_points()?;
     let parents = geometry.enclosing_rings()?;
     geometry.check_nesting(&parents)?;

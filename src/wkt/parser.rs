@@ -5,19 +5,56 @@ use super::{MAX_COORD, MIN_COORD};
 use crate::error::{Error, Result};
 use crate::region::Dir;
 use std::cmp::Ordering;
+use std::fmt;
+use std::marker::PhantomData;
+
+/// What the reader makes of a number: integers for pixel regions ([`parse_wkt`](super::parse_wkt)),
+/// exact rationals for the polygons of [`crate::ortho`]. The syntax and the validity rules are
+/// the same for both.
+pub(crate) trait Coordinate: Copy + Ord + fmt::Display {
+    /// The most vertices (as written, closing ones included) a geometry may have.
+    const MAX_VERTICES: usize = usize::MAX;
+    /// Whether a vertex equal to the one before is refused as a zero-length edge rather than
+    /// merged.
+    const REFUSE_REPEATS: bool = false;
+    /// The value of a number token, or what is wrong with it (`what` names the coordinate; the
+    /// reader adds where it is).
+    fn read(text: &str, what: &str) -> std::result::Result<Self, String>;
+}
+
+impl Coordinate for i64 {
+    fn read(text: &str, what: &str) -> std::result::Result<i64, String> {
+        match number_value(text) {
+            NumberValue::Integer(v) => Ok(v),
+            NumberValue::Fraction => Err(format!(
+                "coordinate {} is not an integer; expected integer vertices (pixel corners)",
+                shorten(text)
+            )),
+            NumberValue::OutOfRange => Err(format!(
+                "coordinate {} is out of range; expected an integer from {MIN_COORD} to \
+                 {MAX_COORD}",
+                shorten(text)
+            )),
+            NumberValue::Malformed => Err(format!(
+                "malformed number {}; expected the {what}",
+                shorten(text)
+            )),
+        }
+    }
+}
 
 /// A vertex as written, before collinear vertices are merged.
-pub(super) struct Vertex {
-    pub(super) x: i64,
-    pub(super) y: i64,
+pub(super) struct Vertex<C> {
+    pub(super) x: C,
+    pub(super) y: C,
     pub(super) pos: Pos,
 }
 
 /// A corner of a ring; edge k runs from corner k to corner k + 1 (cyclically).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Corner {
-    pub(super) x: i64,
-    pub(super) y: i64,
+pub(super) struct Corner<C> {
+    pub(super) x: C,
+    pub(super) y: C,
     /// Heading of the edge that leaves this corner.
     pub(super) dir: Dir,
     /// The vertex written at this corner.
@@ -27,19 +64,32 @@ pub(super) struct Corner {
 }
 
 /// A ring with at least 4 corners, all right-angled turns.
-pub(super) struct Ring {
-    pub(super) corners: Vec<Corner>,
+pub(super) struct Ring<C> {
+    pub(super) corners: Vec<Corner<C>>,
     pub(super) polygon: usize,
     pub(super) hole: bool,
 }
 
-pub(super) struct Parser<'a> {
+pub(super) struct Parser<'a, C> {
     pub(super) lexer: Lexer<'a>,
     pub(super) peeked: Option<(Token<'a>, Pos)>,
     pub(super) file: &'a str,
+    /// Vertices read so far, against [`Coordinate::MAX_VERTICES`].
+    vertices: usize,
+    coordinate: PhantomData<C>,
 }
 
-impl<'a> Parser<'a> {
+impl<'a, C: Coordinate> Parser<'a, C> {
+    pub(super) fn new(text: &'a str, file: &'a str) -> Self {
+        Parser {
+            lexer: Lexer::new(text),
+            peeked: None,
+            file,
+            vertices: 0,
+            coordinate: PhantomData,
+        }
+    }
+
     pub(super) fn error(&self, pos: Pos, message: impl Into<String>) -> Error {
         Error::parse(self.file, pos.line, pos.column, message)
     }
@@ -86,7 +136,7 @@ impl<'a> Parser<'a> {
     }
 
     /// The whole input: the rings of all polygons, and where the geometry keyword is.
-    pub(super) fn geometry(&mut self) -> Result<(Vec<Ring>, Pos)> {
+    pub(super) fn geometry(&mut self) -> Result<(Vec<Ring<C>>, Pos)> {
         let (token, keyword) = self.next()?;
         let Token::Word(word) = token else {
             return Err(self.error(
@@ -154,7 +204,7 @@ impl<'a> Parser<'a> {
     }
 
     /// `((x y, ...), (x y, ...), ...)`: an outer ring and its holes.
-    pub(super) fn polygon(&mut self, polygon: usize, rings: &mut Vec<Ring>) -> Result<()> {
+    pub(super) fn polygon(&mut self, polygon: usize, rings: &mut Vec<Ring<C>>) -> Result<()> {
         self.open("a polygon (or EMPTY)")?;
         let mut hole = false;
         loop {
@@ -182,12 +232,23 @@ impl<'a> Parser<'a> {
     }
 
     /// `(x y, x y, ...)`, checked on its own and reduced to its corners.
-    pub(super) fn ring(&mut self) -> Result<Vec<Corner>> {
+    pub(super) fn ring(&mut self) -> Result<Vec<Corner<C>>> {
         self.open("a ring")?;
         let mut vertices = Vec::new();
         loop {
             let (x, pos) = self.coordinate("x coordinate of a vertex")?;
             let (y, _) = self.coordinate("y coordinate of the vertex")?;
+            self.vertices += 1;
+            if self.vertices > C::MAX_VERTICES {
+                return Err(self.error(
+                    pos,
+                    format!(
+                        "more than {} vertices; expected at most {} (the vertex limit)",
+                        C::MAX_VERTICES,
+                        C::MAX_VERTICES
+                    ),
+                ));
+            }
             vertices.push(Vertex { x, y, pos });
             match self.next()? {
                 (Token::Comma, _) => {}
@@ -215,7 +276,7 @@ impl<'a> Parser<'a> {
         ring_corners(&vertices, self.file)
     }
 
-    pub(super) fn coordinate(&mut self, what: &str) -> Result<(i64, Pos)> {
+    pub(super) fn coordinate(&mut self, what: &str) -> Result<(C, Pos)> {
         let (token, pos) = self.next()?;
         let Token::Number(text) = &token else {
             return Err(self.error(
@@ -223,38 +284,22 @@ impl<'a> Parser<'a> {
                 format!("expected the {what}, found {}", token.describe()),
             ));
         };
-        match number_value(text) {
-            NumberValue::Integer(v) => Ok((v, pos)),
-            NumberValue::Fraction => Err(self.error(
-                pos,
-                format!(
-                    "coordinate {} is not an integer; expected integer vertices (pixel corners)",
-                    shorten(text)
-                ),
-            )),
-            NumberValue::OutOfRange => Err(self.error(
-                pos,
-                format!(
-                    "coordinate {} is out of range; expected an integer from {MIN_COORD} to \
-                     {MAX_COORD}",
-                    shorten(text)
-                ),
-            )),
-            NumberValue::Malformed => Err(self.error(
-                pos,
-                format!("malformed number {}; expected the {what}", shorten(text)),
-            )),
-        }
+        C::read(text, what)
+            .map(|value| (value, pos))
+            .map_err(|message| self.error(pos, message))
     }
 }
 
-pub(super) fn point(x: i64, y: i64) -> String {
+pub(super) fn point<C: fmt::Display>(x: C, y: C) -> String {
     format!("({x},{y})")
 }
 
 /// Checks one ring on its own (closed, axis-parallel, at least 4 corners, never turning back)
 /// and returns its corners, with repeated and collinear vertices merged.
-pub(super) fn ring_corners(vertices: &[Vertex], file: &str) -> Result<Vec<Corner>> {
+pub(super) fn ring_corners<C: Coordinate>(
+    vertices: &[Vertex<C>],
+    file: &str,
+) -> Result<Vec<Corner<C>>> {
     let error = |pos: Pos, message: String| Error::parse(file, pos.line, pos.column, message);
     let (Some(first), Some(last)) = (vertices.first(), vertices.last()) else {
         return Ok(Vec::new()); // the grammar reads at least one vertex per ring
@@ -275,6 +320,16 @@ pub(super) fn ring_corners(vertices: &[Vertex], file: &str) -> Result<Vec<Corner
     for (k, pair) in vertices.windows(2).enumerate() {
         let (a, b) = (&pair[0], &pair[1]);
         let dir = match (b.x.cmp(&a.x), b.y.cmp(&a.y)) {
+            (Ordering::Equal, Ordering::Equal) if C::REFUSE_REPEATS => {
+                return Err(error(
+                    b.pos,
+                    format!(
+                        "zero-length edge: vertex {} repeats the vertex before it; expected \
+                         consecutive vertices to differ",
+                        point(b.x, b.y)
+                    ),
+                ));
+            }
             (Ordering::Equal, Ordering::Equal) => continue,
             (Ordering::Greater, Ordering::Equal) => Dir::E,
             (Ordering::Less, Ordering::Equal) => Dir::W,
@@ -297,7 +352,7 @@ pub(super) fn ring_corners(vertices: &[Vertex], file: &str) -> Result<Vec<Corner
     // Start at a step whose heading differs from the previous one: a corner.
     let m = steps.len();
     let previous = |j: usize| steps[(j + m - 1) % m].0;
-    let mut corners: Vec<Corner> = Vec::new();
+    let mut corners: Vec<Corner<C>> = Vec::new();
     if let Some(start) = (0..m).find(|&j| steps[j].0 != previous(j)) {
         for k in 0..m {
             let j = (start + k) % m;

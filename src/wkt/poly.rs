@@ -80,7 +80,7 @@ pub fn parse_poly(text: &str, file: &str) -> Result<Region> {
                 ));
             }
         };
-        let mut vertices: Vec<Vertex> = Vec::new();
+        let mut vertices: Vec<Vertex<i64>> = Vec::new();
         let mut numbers = 0u64;
         let mut pending: Option<(i64, Pos)> = None;
         let mut end = Pos {

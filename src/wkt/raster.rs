@@ -9,12 +9,12 @@ use crate::error::Result;
 use crate::region::{MAX_PIXELS, Pixel};
 use std::collections::BTreeSet;
 
-impl Geometry<'_> {
+impl Geometry<'_, i64> {
     /// The number of pixels the geometry encloses: the area of the outer rings minus that of
     /// the holes. Rings no longer cross, holes lie inside their outer ring and polygons apart,
     /// and every corner is an integer point, so the area counts the enclosed pixels exactly.
     pub(super) fn pixel_count(&self) -> u128 {
-        let area = |r: &Ring| {
+        let area = |r: &Ring<i64>| {
             doubled_area(&r.corners.iter().map(|c| (c.x, c.y)).collect::<Vec<_>>()).unsigned_abs()
                 / 2
         };

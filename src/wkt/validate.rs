@@ -1,33 +1,43 @@
 //! Validity of the geometry as a whole: no crossing or overlapping edges, rings touching only
 //! at points, holes inside their outer ring and polygons apart (OGC rules, by sweeps).
 
-use super::doubled_area;
 use super::lexer::Pos;
-use super::parser::{Corner, Ring, point};
+use super::parser::{Coordinate, Corner, Ring, point};
 use crate::error::{Error, Result};
+use crate::region::Dir;
 use std::collections::BTreeMap;
+use std::ops::Bound::Excluded;
 
 /// An edge as a segment: `fixed` is its y (horizontal) or x (vertical), `lo < hi` its extent.
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Segment {
-    pub(super) fixed: i64,
-    pub(super) lo: i64,
-    pub(super) hi: i64,
+pub(super) struct Segment<C> {
+    pub(super) fixed: C,
+    pub(super) lo: C,
+    pub(super) hi: C,
     pub(super) ring: usize,
     pub(super) edge: usize,
 }
 
-pub(super) struct Geometry<'a> {
-    pub(super) rings: Vec<Ring>,
+pub(super) struct Geometry<'a, C> {
+    pub(super) rings: Vec<Ring<C>>,
     pub(super) file: &'a str,
 }
 
-impl Geometry<'_> {
+/// Whether a ring runs counter-clockwise: at its lowest, then leftmost, corner (a convex one,
+/// its edges heading east and north) the edge leaving it heads east.
+pub(super) fn counter_clockwise<C: Coordinate>(ring: &Ring<C>) -> bool {
+    ring.corners
+        .iter()
+        .min_by_key(|c| (c.y, c.x))
+        .is_some_and(|c| c.dir == Dir::E)
+}
+
+impl<C: Coordinate> Geometry<'_, C> {
     pub(super) fn error(&self, pos: Pos, message: impl Into<String>) -> Error {
         Error::parse(self.file, pos.line, pos.column, message)
     }
 
-    pub(super) fn edge_ends(&self, ring: usize, edge: usize) -> (Corner, Corner) {
+    pub(super) fn edge_ends(&self, ring: usize, edge: usize) -> (Corner<C>, Corner<C>) {
         let corners = &self.rings[ring].corners;
         (corners[edge], corners[(edge + 1) % corners.len()])
     }
@@ -39,7 +49,13 @@ impl Geometry<'_> {
 
     /// An error about two edges, placed where the later one is complete: "`later` `verb`
     /// `earlier` `place`".
-    pub(super) fn edges_error(&self, a: &Segment, b: &Segment, verb: &str, place: String) -> Error {
+    pub(super) fn edges_error(
+        &self,
+        a: &Segment<C>,
+        b: &Segment<C>,
+        verb: &str,
+        place: String,
+    ) -> Error {
         let pos_a = self.rings[a.ring].corners[a.edge].edge_end;
         let pos_b = self.rings[b.ring].corners[b.edge].edge_end;
         let (first, second) = if pos_a <= pos_b { (a, b) } else { (b, a) };
@@ -54,7 +70,7 @@ impl Geometry<'_> {
     }
 
     /// Horizontal and vertical edges of all rings.
-    pub(super) fn segments(&self) -> (Vec<Segment>, Vec<Segment>) {
+    pub(super) fn segments(&self) -> (Vec<Segment<C>>, Vec<Segment<C>>) {
         let (mut horizontal, mut vertical) = (Vec::new(), Vec::new());
         for (ring, r) in self.rings.iter().enumerate() {
             for edge in 0..r.corners.len() {
@@ -93,7 +109,7 @@ impl Geometry<'_> {
         self.check_overlaps(&mut horizontal, point)?;
         self.check_overlaps(&mut vertical, |along, fixed| point(fixed, along))?;
         self.check_crossings(&horizontal, &vertical)?;
-        let mut corners: Vec<(i64, i64, usize, Pos)> = Vec::new();
+        let mut corners: Vec<(C, C, usize, Pos)> = Vec::new();
         for (ring, r) in self.rings.iter().enumerate() {
             corners.extend(r.corners.iter().map(|c| (c.x, c.y, ring, c.pos)));
         }
@@ -117,12 +133,12 @@ impl Geometry<'_> {
     /// Refuses two parallel edges on one line whose extents share more than a point.
     pub(super) fn check_overlaps(
         &self,
-        segments: &mut [Segment],
-        point: impl Fn(i64, i64) -> String,
+        segments: &mut [Segment<C>],
+        point: impl Fn(C, C) -> String,
     ) -> Result<()> {
         segments.sort_unstable_by_key(|s| (s.fixed, s.lo, s.hi));
         // The segment reaching farthest among those already seen on the current line.
-        let mut reach: Option<Segment> = None;
+        let mut reach: Option<Segment<C>> = None;
         for s in segments.iter() {
             match reach {
                 Some(r) if r.fixed == s.fixed && s.lo < r.hi => {
@@ -144,13 +160,13 @@ impl Geometry<'_> {
     /// the horizontal edges open at each vertical edge.
     pub(super) fn check_crossings(
         &self,
-        horizontal: &[Segment],
-        vertical: &[Segment],
+        horizontal: &[Segment<C>],
+        vertical: &[Segment<C>],
     ) -> Result<()> {
         const CLOSE: u8 = 0;
         const QUERY: u8 = 1;
         const OPEN: u8 = 2;
-        let mut events: Vec<(i64, u8, usize)> =
+        let mut events: Vec<(C, u8, usize)> =
             Vec::with_capacity(2 * horizontal.len() + vertical.len());
         for (k, s) in horizontal.iter().enumerate() {
             events.push((s.lo, OPEN, k));
@@ -164,7 +180,7 @@ impl Geometry<'_> {
         );
         events.sort_unstable();
         // Open horizontal edges by y: no two overlap, so a line holds at most one at a time.
-        let mut open: BTreeMap<i64, usize> = BTreeMap::new();
+        let mut open: BTreeMap<C, usize> = BTreeMap::new();
         for (_, kind, k) in events {
             match kind {
                 CLOSE => {
@@ -175,7 +191,7 @@ impl Geometry<'_> {
                 }
                 _ => {
                     let v = &vertical[k];
-                    if let Some((&y, &h)) = open.range(v.lo + 1..v.hi).next() {
+                    if let Some((&y, &h)) = open.range((Excluded(v.lo), Excluded(v.hi))).next() {
                         let at = format!("at {}", point(v.fixed, y));
                         return Err(self.edges_error(v, &horizontal[h], "crosses", at));
                     }
@@ -190,14 +206,10 @@ impl Geometry<'_> {
     /// edge to its left belongs to its parent when the parent's interior lies to the right of
     /// that edge, and otherwise to a sibling, whose parent it shares.
     pub(super) fn enclosing_rings(&self) -> Result<Vec<Option<usize>>> {
-        let counter_clockwise: Vec<bool> = self
-            .rings
-            .iter()
-            .map(|r| doubled_area(&r.corners.iter().map(|c| (c.x, c.y)).collect::<Vec<_>>()) > 0)
-            .collect();
+        let counter_clockwise: Vec<bool> = self.rings.iter().map(counter_clockwise).collect();
         let (_, vertical) = self.segments();
         // The lowest row of each ring and its leftmost edge there.
-        let mut lowest: Vec<Option<(i64, i64)>> = vec![None; self.rings.len()];
+        let mut lowest: Vec<Option<(C, C)>> = vec![None; self.rings.len()];
         for v in &vertical {
             let slot = &mut lowest[v.ring];
             if slot.is_none_or(|low| (v.lo, v.fixed) < low) {
@@ -207,7 +219,7 @@ impl Geometry<'_> {
         const CLOSE: u8 = 0;
         const OPEN: u8 = 1;
         const QUERY: u8 = 2;
-        let mut events: Vec<(i64, u8, i64, usize)> = Vec::with_capacity(3 * vertical.len());
+        let mut events: Vec<(C, u8, C, usize)> = Vec::with_capacity(3 * vertical.len());
         for (k, v) in vertical.iter().enumerate() {
             events.push((v.lo, OPEN, v.fixed, k));
             events.push((v.hi, CLOSE, v.fixed, k));
@@ -219,7 +231,7 @@ impl Geometry<'_> {
         }
         events.sort_unstable();
         // Vertical edges crossing the current row by x: (ring, its interior lies to the right).
-        let mut open: BTreeMap<i64, (usize, bool)> = BTreeMap::new();
+        let mut open: BTreeMap<C, (usize, bool)> = BTreeMap::new();
         let mut parent: Vec<Option<Option<usize>>> = vec![None; self.rings.len()];
         for (_, kind, x, k) in events {
             match kind {
