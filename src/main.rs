@@ -184,6 +184,9 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Info { file, json } if cli::discrete::is_discrete(&file) => {
             cli::discrete::info(&file, json)
         }
+        Command::Info { file, json } if cli::ortho::is_ortho(&file) => {
+            cli::ortho::info(&file, json)
+        }
         Command::Info { file, json } => {
             let inst = Instance::read(&file)?;
             let mut v = serde_json::to_value(topology::summary(&inst.region))?;
@@ -201,6 +204,9 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Validate {
             file, tour, json, ..
         } if cli::discrete::is_discrete(&file) => cli::discrete::validate(&file, &tour, json),
+        Command::Validate {
+            file, tour, json, ..
+        } if cli::ortho::is_ortho(&file) => cli::ortho::validate(&file, &tour, json),
         Command::Validate {
             file,
             tour,

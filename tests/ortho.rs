@@ -340,3 +340,81 @@ fn one_pixel_and_two_pixel_walks() {
         assert_eq!(v, Verdict::Valid);
     }
 }
+
+/// The command line on non-integral polygons: `info` reports the erosion and refuses (exit 2,
+/// naming the point) a polygon with a feature narrower than the cutter; `validate` runs the
+/// exact checker (exit 0 for a tour that mills the polygon, 1 for one that misses a strip).
+#[test]
+fn cli_refuses_infeasible_polygons_and_checks_tours_exactly() {
+    use std::process::Command;
+    let bin = env!("CARGO_BIN_EXE_mowmill");
+    let dir = std::env::temp_dir().join(format!("mowmill-ortho-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let ok = dir.join("ok.wkt");
+    std::fs::write(&ok, "POLYGON ((0 0, 4.5 0, 4.5 1.5, 0 1.5, 0 0))\n").unwrap();
+    let spike = dir.join("spike.wkt");
+    std::fs::write(
+        &spike,
+        "POLYGON ((0 0, 5 0, 5 2, 2.7 2, 2.7 3, 2.2 3, 2.2 2, 0 2, 0 0))\n",
+    )
+    .unwrap();
+    let run = |args: &[&str]| Command::new(bin).args(args).output().unwrap();
+    let info = run(&["info", ok.to_str().unwrap(), "--json"]);
+    assert!(info.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&info.stdout).unwrap();
+    assert_eq!(v["model"], "ortho");
+    assert_eq!(v["erosion_pieces"], 1);
+    let refused = run(&["info", spike.to_str().unwrap()]);
+    assert_eq!(refused.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        err.contains("cannot be milled") && err.contains("(2.45, 2.5)"),
+        "{err}"
+    );
+    // A 4.5 x 1.5 bar: the centre line y = 0.75 from x = 0.5 to 4 and back... misses the rows
+    // 0..0.25 and 1.25..1.5; the two lines y = 0.5 and y = 1 mill it.
+    let good = dir.join("good.json");
+    std::fs::write(
+        &good,
+        r#"{"model":"ortho","tour":[["0.5","0.5"],["4","0.5"],["4","1"],["0.5","1"]]}"#,
+    )
+    .unwrap();
+    let bad = dir.join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"model":"ortho","tour":[["0.5","0.75"],["4","0.75"]]}"#,
+    )
+    .unwrap();
+    let checked = run(&[
+        "validate",
+        ok.to_str().unwrap(),
+        "--tour",
+        good.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        checked.status.success(),
+        "{}",
+        String::from_utf8_lossy(&checked.stdout)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&checked.stdout).unwrap();
+    assert_eq!(
+        (v["valid"].clone(), v["turns"].clone()),
+        (true.into(), 4.into())
+    );
+    assert_eq!(v["length"], "8");
+    let missed = run(&[
+        "validate",
+        ok.to_str().unwrap(),
+        "--tour",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(missed.status.code(), Some(1));
+    let refused = run(&[
+        "validate",
+        spike.to_str().unwrap(),
+        "--tour",
+        good.to_str().unwrap(),
+    ]);
+    assert_eq!(refused.status.code(), Some(2));
+}
