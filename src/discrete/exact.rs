@@ -39,14 +39,41 @@
 //! used edge joins its two ports. Two closed walks through one port both traverse that
 //! port's edge and are spliced there into one with the same passages
 //! (`crate::exact::walks::splice_walks`), so the walks of a solution whose used ports form
-//! one connected graph are one tour. A tour's port graph is connected and, as a closed walk,
-//! crosses every port set `S` an even number of times; if `S` holds every port of some vertex
-//! and none of another, the tour (visiting both) has ports on both sides and crosses `S`
-//! at least twice: `Σ_{edges across S} x_e + Σ_{passages across S} p >= 2`. These cuts are
-//! separated exactly for `S` a union of whole vertices (minimum cuts), and from the
-//! components of the used port graph otherwise. An integer solution whose port components
-//! include one that touches every vertex is repaired by dropping the others (their cost is
-//! not negative).
+//! one connected graph are one tour. Walks that meet at a vertex through different ports
+//! are not joined: on a general graph every vertex may be visited by two port components.
+//!
+//! For every port `g` a binary indicator `z_g` means "the tour uses `g`", linked by
+//! `z_g <= usage(g)` (the passage ends at `g`) and `Σ_{g ∈ P(v)} z_g >= 1` at every vertex
+//! `v`. For a port set `S` let `crossing(S) = Σ_{edges across S} x_e + Σ_{passages across
+//! S} p`. The connectivity cuts are the generalized subtour cuts
+//! `crossing(S) >= 2 (A + B − 1)`, where `A` is `z_p` for a port `p ∈ S` or
+//! `1 − Σ_{g ∈ P(u) ∖ S} z_g` for a vertex `u`, and `B` the same with the outside of `S`
+//! (a vertex with every port in `S` gives `A = 1`: with `B = 1` too, this is the plain
+//! `crossing(S) >= 2`). *Validity*: take any tour with `z_g = 1` exactly on its used ports;
+//! the links hold (usages are integers, every vertex is visited). `A <= 1`, and `A >= 1`
+//! only if the tour uses a port in `S`: for `z_p` by definition; for `u`, if the tour used
+//! no port of `S` then its used ports at `u` (there is one) all lie outside `S` and
+//! `A <= 0`. Likewise `B`. If the tour uses ports on both sides, its closed walk, which
+//! alternates passages and edge traversals, crosses `S` an even number of times, at least
+//! twice, and each crossing is counted once in `crossing(S)`: the cut holds. Otherwise
+//! `A + B − 1 <= 0 <= crossing(S)`. *Completeness*: let an integer solution with its
+//! indicators satisfy every row, the links included, and still have several port
+//! components. The ports with `z = 1` are used and meet every vertex. If they lie in two
+//! components, `S` = the ports of one of them has `crossing(S) = 0` with `A = B = 1`: a
+//! violated cut. Otherwise they lie in one component, which visits every vertex and is a
+//! tour by itself; with the same indicators it satisfies every row and bound the solution
+//! does, at no greater cost, so when the solution is a MIP optimum the repair (which keeps
+//! it, below) meets the MIP's bound. So every MIP round of the cut loop either ends or adds
+//! a new row (the links, the first time), and there are finitely many.
+//!
+//! Separation: cuts with `S` a union of whole vertices (`A = B = 1`) exactly by minimum cuts;
+//! then `S` from the port components of the support and of its heavier parts. The
+//! indicators' links are rows of the cut pool, added by the first integer solution that no
+//! cut of constant sides (`A = B = 1`) separates; until then the indicators are free and
+//! only those cuts are separated, which keeps the MIPs of grid-like instances as small as
+//! without indicators. An integer solution whose port components include one that touches
+//! every vertex is repaired by keeping the cheapest such component, otherwise by dropping
+//! components whose vertices others visit and merging the rest.
 //!
 //! **U-turn reduction** (`cc-turns` and `turns` only, where length is free). A U-turn at `v`
 //! back onto the edge from `u`, when `u, v` continue straight onto `w = straight_on(u, v)`,
@@ -82,6 +109,7 @@ use crate::exact::walks::{euler_walk, splice_walks};
 use crate::exact::{Objective, Status, certify};
 use crate::topology::graph_components;
 use serde::Serialize;
+use std::cell::Cell;
 
 const NONE: u32 = u32::MAX;
 
@@ -762,6 +790,10 @@ impl Goal {
 /// passage and the passages gained as (vertex, port, port).
 type Move = (i64, Vec<usize>, Vec<(u32, u32, u32)>);
 
+/// A side term of a generalized subtour cut ([`PassageModel::side_term`]): a constant and
+/// (column, coefficient) terms.
+type SideTerm = (f64, Vec<(usize, f64)>);
+
 /// One passage column: at vertex `v` between its local ports `a <= b`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Pass {
@@ -787,6 +819,14 @@ struct PassageModel<'a> {
     /// `weighted-cc`: the one-vertex walk column of every vertex with a neighbour (NONE
     /// elsewhere).
     stay: Vec<u32>,
+    /// Tours: the column of the port-use indicator `z_g` of global port `g` is `zcol + g`
+    /// (None for cycle covers).
+    zcol: Option<usize>,
+    /// Tours: the rows that link the indicators to the passages (module documentation),
+    /// handed to the cut pool by the first separation that needs them.
+    links: Vec<Row>,
+    /// Whether `links` has been handed out (the cut loop keeps every row it is given).
+    linked: Cell<bool>,
     formulation: Formulation,
 }
 
@@ -822,6 +862,9 @@ impl<'a> PassageModel<'a> {
             edges: inst.edges().collect(),
             isolated: 0,
             stay: vec![NONE; n],
+            zcol: None,
+            links: Vec::new(),
+            linked: Cell::new(false),
             formulation: Formulation::default(),
         };
         let mut f = Formulation::default();
@@ -871,8 +914,45 @@ impl<'a> PassageModel<'a> {
                 ));
             }
         }
+        if goal.is_tour() {
+            // Port-use indicators and their linking rows `z_g <= usage(g)` and
+            // `Σ_{g ∈ P(v)} z_g >= 1`, kept out of the model until the first cut needs them.
+            let zcol = f.num_cols();
+            m.zcol = Some(zcol);
+            for _ in 0..total {
+                f.add_col(0.0, 0.0, 1.0, true);
+            }
+            for v in 0..n as u32 {
+                for p in 0..inst.degree(v) as u32 {
+                    let z = (zcol + m.global(v, p), 1.0);
+                    let usage = m.port_terms(v, p).map(|(k, c)| (k, -c));
+                    m.links
+                        .push(Row::range(usage.chain([z]), f64::NEG_INFINITY, 0.0));
+                }
+                if inst.degree(v) > 0 {
+                    let ports = m.port_start[v as usize]..m.port_start[v as usize + 1];
+                    m.links
+                        .push(Row::at_least(ports.map(|g| (zcol + g, 1.0)), 1.0));
+                }
+            }
+        }
         m.formulation = f;
         m
+    }
+
+    /// Integer counts with the port-use indicators of tours set to "used" (`z_g = 1` exactly
+    /// when port `g` carries a passage end): the indicators every tour satisfies every cut
+    /// with.
+    fn with_ports(&self, mut counts: Vec<u32>) -> Vec<u32> {
+        if let Some(zcol) = self.zcol {
+            let x = Self::as_x(&counts);
+            for v in 0..self.inst.len() as u32 {
+                for p in 0..self.inst.degree(v) as u32 {
+                    counts[zcol + self.global(v, p)] = u32::from(self.port_usage(&x, v, p) > 0.5);
+                }
+            }
+        }
+        counts
     }
 
     /// Whether the U-turn at `v` back through local port `a` keeps its column: the channel
@@ -946,8 +1026,9 @@ impl<'a> PassageModel<'a> {
         (label, map.len())
     }
 
-    /// The cut row `Σ_{edges across S} x_e + Σ_{passages across S} p >= 2` of a port set.
-    fn port_cut(&self, s: &[bool]) -> Row {
+    /// The crossing of a port set `S` as terms: `Σ_{edges across S} x_e + Σ_{passages
+    /// across S} p` (an edge's multiplicity is its passage ends at one of its ports).
+    fn crossing_terms(&self, s: &[bool]) -> Vec<(usize, f64)> {
         let mut terms: Vec<(usize, f64)> = Vec::new();
         for &(v, w) in &self.edges {
             let pv = local_port(self.inst, v, w) as u32;
@@ -961,21 +1042,122 @@ impl<'a> PassageModel<'a> {
                 terms.push((k, 1.0));
             }
         }
-        Row::at_least(terms, 2.0)
+        terms
     }
 
-    /// Cuts between port components: `S` = the ports of a set `Q` of components plus every
-    /// port of the vertices only `Q` touches, valid when some vertex is touched only by `Q`
-    /// and some vertex not at all. Components of the support and of heavier parts.
+    /// The strongest "the tour uses a port on this side" term for one side of a port set
+    /// (the ports `g` with `s[g] == side`) at `x`, as (constant, terms): `z_p` for a port `p`
+    /// on the side, or `1 − z(P(u) ∖ side)` for a vertex `u` (the tour uses a port of `u`, so
+    /// if none off the side, one on it). Before the indicators are linked only the constant
+    /// 1 of a vertex with every port on the side; None if there is none.
+    fn side_term(&self, s: &[bool], side: bool, x: &[f64]) -> Option<SideTerm> {
+        let zcol = self.zcol.expect("tours have port indicators");
+        let linked = self.linked.get();
+        // (value at x, the term)
+        let mut best: Option<(f64, SideTerm)> = None;
+        for v in 0..self.inst.len() {
+            let ports = self.port_start[v]..self.port_start[v + 1];
+            if ports.is_empty() {
+                continue;
+            }
+            let off: Vec<(usize, f64)> = ports
+                .clone()
+                .filter(|&g| s[g] != side)
+                .map(|g| (zcol + g, -1.0))
+                .collect();
+            if !linked {
+                if off.is_empty() {
+                    return Some((1.0, off));
+                }
+                continue;
+            }
+            let value = 1.0 - off.iter().map(|&(j, _)| x[j]).sum::<f64>();
+            let better = |b: &(f64, SideTerm)| {
+                value > b.0 + 1e-9 || (value > b.0 - 1e-9 && off.len() < b.1.1.len())
+            };
+            if best.as_ref().is_none_or(better) {
+                best = Some((value, (1.0, off)));
+            }
+            for g in ports.filter(|&g| s[g] == side) {
+                let value = x[zcol + g];
+                if best.as_ref().is_none_or(|b| value > b.0 + 1e-9) {
+                    best = Some((value, (0.0, vec![(zcol + g, 1.0)])));
+                }
+            }
+        }
+        best.map(|(_, term)| term)
+    }
+
+    /// The generalized subtour cut of a port set `S`, if `x` violates it:
+    /// `crossing(S) >= 2 (A + B − 1)`, with `A` ([`Self::side_term`]) at most 1, and 1 only
+    /// if the tour (with its indicators `z_g` = port `g` used) uses a port in `S`, and `B` the
+    /// same outside `S`. A closed walk that uses ports on both sides crosses `S` at least
+    /// twice.
+    fn gsec(&self, s: &[bool], x: &[f64]) -> Option<Row> {
+        let (ca, ta) = self.side_term(s, true, x)?;
+        let (cb, tb) = self.side_term(s, false, x)?;
+        let rhs = 2.0 * (ca + cb - 1.0);
+        let terms = self
+            .crossing_terms(s)
+            .into_iter()
+            .chain(ta.into_iter().chain(tb).map(|(j, c)| (j, -2.0 * c)));
+        let row = Row::at_least(terms, rhs);
+        (row.activity(x) < rhs - 1e-6).then_some(row)
+    }
+
+    /// Generalized subtour cuts between the port components of the support (and of its
+    /// heavier parts): `S` = the ports of one component, with or without the other ports of
+    /// the vertices only it touches, and, when these give nothing, unions of components.
+    /// On an integer solution whose indicators mark used ports in two components, the
+    /// component of either gives a violated cut (crossing 0 < 2).
     fn crossing_cuts(&self, x: &[f64]) -> Vec<Row> {
+        const MAX_COMPONENTS: usize = 256;
+        let zcol = self.zcol.expect("tours have port indicators");
         let n = self.inst.len();
+        let total = *self.port_start.last().unwrap_or(&0);
         let mut out = Vec::new();
         let mut seen = std::collections::HashSet::new();
+        let mut try_set = |s: Vec<bool>, out: &mut Vec<Row>| {
+            if seen.insert(s.clone())
+                && let Some(row) = self.gsec(&s, x)
+            {
+                out.push(row);
+            }
+        };
         for threshold in [1e-6, 0.3, 0.6, 0.9] {
             let (label, count) = self.port_components(x, threshold);
             if count <= 1 {
                 continue;
             }
+            let before = out.len();
+            // Components with the most used indicators first.
+            let mut zmax = vec![0.0f64; count];
+            for g in 0..total {
+                if label[g] != u32::MAX {
+                    let z = &mut zmax[label[g] as usize];
+                    *z = z.max(x[zcol + g]);
+                }
+            }
+            let mut order: Vec<usize> = (0..count).collect();
+            order.sort_by(|&a, &b| zmax[b].total_cmp(&zmax[a]));
+            for &c in order.iter().take(MAX_COMPONENTS) {
+                let own: Vec<bool> = label.iter().map(|&l| l as usize == c).collect();
+                let mut widened = own.clone();
+                for v in 0..n {
+                    let ports = self.port_start[v]..self.port_start[v + 1];
+                    let only = ports.clone().any(|g| own[g])
+                        && ports.clone().all(|g| label[g] == u32::MAX || own[g]);
+                    if only {
+                        ports.for_each(|g| widened[g] = true);
+                    }
+                }
+                try_set(own, &mut out);
+                try_set(widened, &mut out);
+            }
+            if out.len() > before {
+                continue;
+            }
+            // Unions: the components touching each vertex (of the first 64 components).
             let count = count.min(64);
             let comp = |g: usize| -> Option<u32> {
                 (label[g] != u32::MAX && (label[g] as usize) < count).then_some(label[g])
@@ -987,33 +1169,18 @@ impl<'a> PassageModel<'a> {
                         .fold(0u64, |m, l| m | 1u64 << l)
                 })
                 .collect();
-            let try_q = |q: u64| -> Option<Vec<bool>> {
-                let private = (0..n).any(|v| touch[v] != 0 && touch[v] & !q == 0);
-                let untouched = (0..n).any(|v| touch[v] & q == 0);
-                (private && untouched).then(|| {
-                    (0..n)
-                        .flat_map(|v| {
-                            let private = touch[v] != 0 && touch[v] & !q == 0;
-                            (self.port_start[v]..self.port_start[v + 1])
-                                .map(move |g| private || comp(g).is_some_and(|l| q >> l & 1 == 1))
-                        })
-                        .collect()
-                })
-            };
-            let mut sets: Vec<Vec<bool>> = (0..count).filter_map(|c| try_q(1u64 << c)).collect();
-            if sets.is_empty() {
-                let mut qs = touch.clone();
-                qs.sort_unstable();
-                qs.dedup();
-                sets.extend(qs.into_iter().filter_map(try_q).take(8));
-            }
-            for s in sets {
-                if seen.insert(s.clone()) {
-                    let row = self.port_cut(&s);
-                    if row.activity(x) < 2.0 - 1e-6 {
-                        out.push(row);
-                    }
-                }
+            let mut qs = touch.clone();
+            qs.sort_unstable();
+            qs.dedup();
+            for q in qs.into_iter().filter(|&q| q != 0).take(8) {
+                let s: Vec<bool> = (0..n)
+                    .flat_map(|v| {
+                        let private = touch[v] != 0 && touch[v] & !q == 0;
+                        (self.port_start[v]..self.port_start[v + 1])
+                            .map(move |g| private || comp(g).is_some_and(|l| q >> l & 1 == 1))
+                    })
+                    .collect();
+                try_set(s, &mut out);
             }
         }
         out
@@ -1140,7 +1307,8 @@ impl<'a> PassageModel<'a> {
     }
 
     /// Drops port components whose every vertex another kept component also visits (most
-    /// expensive first); coverage is kept and the cost does not grow.
+    /// expensive first), or, when some component visits every vertex, all but the cheapest
+    /// such; coverage is kept and the cost does not grow.
     fn drop_redundant(&self, counts: &mut [u32]) {
         let x = Self::as_x(counts);
         let (label, count) = self.port_components(&x, 0.5);
@@ -1166,9 +1334,20 @@ impl<'a> PassageModel<'a> {
                 t
             })
             .collect();
-        let mut order: Vec<usize> = (0..count).collect();
-        order.sort_by(|&a, &b| cost[b].total_cmp(&cost[a]));
         let mut dropped = vec![false; count];
+        // A component that visits every vertex is a tour by itself: keep the cheapest.
+        let covering = (0..count)
+            .filter(|&c| {
+                (0..n).all(|v| self.inst.degree(v as u32) == 0 || touching[v].contains(&(c as u32)))
+            })
+            .min_by(|&a, &b| cost[a].total_cmp(&cost[b]));
+        let mut order: Vec<usize> = (0..count).collect();
+        if let Some(keep) = covering {
+            dropped.iter_mut().for_each(|d| *d = true);
+            dropped[keep] = false;
+            order.clear();
+        }
+        order.sort_by(|&a, &b| cost[b].total_cmp(&cost[a]));
         for c in order {
             let redundant = (0..n).all(|v| {
                 !touching[v].contains(&(c as u32))
@@ -1351,7 +1530,7 @@ impl CutModel for PassageModel<'_> {
         &self.formulation
     }
 
-    fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
+    fn separate(&self, x: &[f64], integral: bool, deadline: &Deadline) -> Vec<Row> {
         if !self.goal.is_tour() {
             return Vec::new();
         }
@@ -1373,11 +1552,18 @@ impl CutModel for PassageModel<'_> {
                             std::iter::repeat_n(s[v], self.port_start[v + 1] - self.port_start[v])
                         })
                         .collect();
-                    self.port_cut(&ports)
+                    Row::at_least(self.crossing_terms(&ports), 2.0)
                 })
                 .collect();
         }
-        self.crossing_cuts(x)
+        let cuts = self.crossing_cuts(x);
+        if cuts.is_empty() && integral && !self.linked.get() {
+            // Walks that share vertices but no port: link the indicators (their values in
+            // `x` are arbitrary until then).
+            self.linked.set(true);
+            return self.links.clone();
+        }
+        cuts
     }
 
     fn is_feasible(&self, x: &[f64]) -> bool {
@@ -1388,7 +1574,7 @@ impl CutModel for PassageModel<'_> {
         let mut counts = self.counts(x);
         if self.goal.is_tour() {
             self.drop_redundant(&mut counts);
-            counts = self.connect(counts);
+            counts = self.with_ports(self.connect(counts));
         }
         self.is_feasible_counts(&counts)
             .then(|| Self::as_x(&counts))
@@ -1497,7 +1683,13 @@ fn solve_passages(
         .collect();
     let start = model
         .walk_counts(&tree)
-        .map(|c| if goal.is_tour() { model.connect(c) } else { c })
+        .map(|c| {
+            if goal.is_tour() {
+                model.with_ports(model.connect(c))
+            } else {
+                c
+            }
+        })
         .filter(|c| model.is_feasible_counts(c))
         .map(|c| PassageModel::as_x(&c));
     let s = if model.formulation().num_cols() == 0 {
@@ -1875,6 +2067,42 @@ mod tests {
             odd > 20,
             "only {odd} instances with an odd cc-turns optimum"
         );
+    }
+
+    /// The instance the soak found (seed 17, `MOWMILL_SOAK=3000`) before the tour cuts had
+    /// port-use indicators: K5 with two collinear pairs at every vertex. Its integer
+    /// solutions include closed walks that share every vertex but no port; the cuts whose
+    /// sides are anchored at whole vertices do not separate them, and the solve ended with
+    /// status error. The generalized subtour cuts do.
+    #[test]
+    fn k5_with_two_collinear_pairs_per_vertex_reaches_the_brute_force_optimum() {
+        let edges: Vec<(u32, u32)> = (0..5u32)
+            .flat_map(|a| (a + 1..5).map(move |b| (a, b)))
+            .collect();
+        let collinear = [
+            (0, 1, 3),
+            (0, 2, 4),
+            (1, 0, 2),
+            (1, 3, 4),
+            (2, 0, 4),
+            (2, 1, 3),
+            (3, 0, 2),
+            (3, 1, 4),
+            (4, 0, 2),
+            (4, 1, 3),
+        ];
+        let k5 = Discrete::new(5, &edges, &collinear, None).unwrap();
+        // The brute force's optima. The straight channels are the cycles 0-1-2-3, 0-2-4 and
+        // 1-3-4: two of them cover without turning, and one walk through two costs 2 turns.
+        for (objective, want) in [
+            (Objective::TourTurns, 2),
+            (Objective::Weighted { turn_cost: 2 }, 10),
+            (Objective::Weighted { turn_cost: 0 }, 5),
+            (Objective::CcTurns, 0),
+        ] {
+            assert_eq!(brute_optimum(&k5, objective), Some(want), "{objective}");
+            assert_eq!(optimum(&k5, objective), Some(want), "{objective}");
+        }
     }
 
     /// A cycle of collinear pairs is covered without turning: no rook may sit on it (the
