@@ -55,8 +55,9 @@
 //! with holes in P the contour bound fails, so no ratio is claimed there.
 //!
 //! # Complexity
-//! O(N log N + M·N') where N pixels, M contour segments and N' the pixels on a contour-adjacent
-//! column or row end (candidate links), plus the registered algorithms' time.
+//! O(E·M) for the candidate links (E pixel sides on the edge of R_N, M contour segments) and
+//! O(T·K) for the splicing (T tour points, K tree links), plus the registered algorithms' time:
+//! quadratic in the worst case, not the paper's O(n) (which works on trapezoids, not pixels).
 
 use super::erosion::{Erosion, feasibility, interior_pixels};
 use super::polygon::{Point, Polygon};
