@@ -20,14 +20,18 @@
 //! formats, the checker's argument and the limits.
 
 mod check;
+mod corollary4;
 mod cover;
 mod erosion;
+mod generate;
 mod polygon;
 mod rational;
 mod tour;
 
 pub use check::{Report, Violation, check, turn_cost};
+pub use corollary4::{Certificates, LowerBounds, corollary4, lower_bounds, walk_length};
 pub use erosion::{Erosion, Infeasible, feasibility, interior_pixels};
+pub use generate::{FAMILIES, generate};
 pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
 pub use tour::{MAX_TOUR_POINTS, Tour};

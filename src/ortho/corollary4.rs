@@ -1,0 +1,474 @@
+//! Corollary 4 of *Lawn mowing and milling*: a milling tour of a rectilinear polygon with
+//! arbitrary coordinates, within 11/5 of optimal (plus a constant) for simple polygons, by
+//! combining the 6/5 tour of the integer pixels inside with a walk along the contour δB of
+//! the erosion.
+//!
+//! # The construction
+//!
+//! 1. [`feasibility`]: the piece B of centre positions that mills P (or the refusal).
+//! 2. R_N: the integer pixels whose centre lies in B ([`interior_pixels`], kept piece only),
+//!    split into grid components. Each component gets the tour of the registered `tsp65`
+//!    (Theorem 5, length ≤ (6N − 4)/5 for a hole-free component of N ≥ 2 pixels) when its
+//!    precondition holds, else `milling25`; [`Certificates`] says how many took which.
+//! 3. δB: the closed walks of [`Erosion::contour`].
+//! 4. Joining (the paper says only "combining"): from pixel centres, straight axis-parallel
+//!    links to the nearest contour point in each of the four directions are candidates; a
+//!    minimum spanning tree of them (Kruskal, by length) ties every component tour and every
+//!    contour walk together, and each tree link is walked there and back, splicing the walks
+//!    at its ends. A link lies in B: its pixel centre is in B, and if it is not on δB, it is
+//!    an interior point of B and the open link meets no boundary point before its end.
+//!
+//! # Why the union mills P
+//!
+//! Every swept square is centred in B, so nothing leaves P. Let p ∈ P and S_p = p + [−½, ½]²,
+//! the centres whose square covers p. The squares of B cover P, so S_p meets B. If S_p meets
+//! δB, the contour walk covers p. Otherwise S_p, being connected, lies in the interior of B;
+//! then the pixel centre in S_p (⌊p⌋ + ½, for p off the integer lines) is in B, its pixel is
+//! in R_N and contains p, and the pixel tour covers it. (Points on integer lines follow by
+//! closedness.) [`check`](super::check) confirms this exactly on every output in the tests.
+//!
+//! # Guarantee
+//!
+//! Lower bounds ([`LowerBounds`]), for any tour T milling P:
+//!
+//! - **Area:** L(T) ≥ area(P) − 1. The square starts with area 1, and a move of length ℓ sweeps
+//!   a box of area ℓ + 1 that contains the square at its start, so adds at most ℓ.
+//! - **Extent:** L(T) ≥ 2(w_B + h_B), w_B × h_B the bounding box of B. P's leftmost edge is
+//!   covered only by centres on B's leftmost line (and so on for the other three sides), so the
+//!   closed walk spans B's width twice and its height twice.
+//! - **Contour (paper):** L(T) ≥ L_δB for simple P. The paper asserts it without proof. We
+//!   have not proved it in general: the Crofton-style argument (each horizontal chord of the
+//!   simply connected B separates it and must be crossed twice) needs that the tour visits
+//!   both sides of every chord, which we could not derive from milling alone. It is tested
+//!   against exact optima on small integral simple regions (tests/ortho_corollary4.rs). It is
+//!   **false for polygons with holes**: for the 3 × 3 square with its centre pixel removed, B is
+//!   a loop of zero width, L_δB = 16 (its outer and inner walk) and OPT = 8; there only the
+//!   area and extent bounds are used.
+//!
+//! Length: L ≤ Σ_i L(tsp65 on component i) + L_δB + 2·Σ links, each link shorter than 1 (the
+//! lowest pixel of a column sees δB straight below within distance < 1). For simple P and a
+//! connected, hole-free R_N of N ≥ 2 pixels: L ≤ (6N − 4)/5 + L_δB + 2 and N ≤ area(P) ≤
+//! OPT + 1, so with the paper's contour bound L ≤ 6/5·(OPT + 1) − 4/5 + OPT + 2 = 11/5·OPT + 12/5.
+//! The paper's "11/5" is this, with its additive constant. Where it does not hold as stated:
+//! R_N may split into k components (a non-integral neck holds no pixel), each with its own
+//! tour and link: + O(k); a component with holes takes `milling25` (2.5, not 6/5); and
+//! with holes in P the contour bound fails, so no ratio is claimed there.
+//!
+//! # Complexity
+//! O(E·M) for the candidate links (E pixel sides on the edge of R_N, M contour segments) and
+//! O(T·K) for the splicing (T tour points, K tree links), plus the registered algorithms' time:
+//! quadratic in the worst case, not the paper's O(n) (which works on trapezoids, not pixels).
+
+use super::erosion::{Erosion, feasibility, interior_pixels};
+use super::polygon::{Point, Polygon};
+use super::rational::Rational;
+use super::tour::Tour;
+use crate::algorithms::{self, Options};
+use crate::error::{Error, Result};
+use crate::region::{Pixel, Region};
+use crate::topology;
+use serde::Serialize;
+
+/// What the construction used (never the tour's own cost: [`check`](super::check) recounts it).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Certificates {
+    /// Pixels of R_N with their centre in the kept piece of B.
+    pub pixels: usize,
+    /// Grid components of those pixels.
+    pub components: usize,
+    /// Components toured by `tsp65` (Theorem 5).
+    pub tsp65: usize,
+    /// Components toured by `milling25` (tsp65's precondition failed: a hole).
+    pub milling25: usize,
+    /// Walks of δB.
+    pub contour_walks: usize,
+    /// L_δB.
+    pub contour_length: Rational,
+    /// Links of the spanning tree, and their total length (each walked twice).
+    pub links: usize,
+    pub link_length: Rational,
+    pub bounds: LowerBounds,
+}
+
+/// Lower bounds on the length of any tour milling the polygon (module docs).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct LowerBounds {
+    /// area(P) − 1, at least 0.
+    pub area: Rational,
+    /// 2(w_B + h_B).
+    pub extent: Rational,
+    /// L_δB: a lower bound for simple polygons by the paper's claim; `None` with holes.
+    pub contour: Option<Rational>,
+}
+
+impl LowerBounds {
+    /// The largest of the bounds.
+    pub fn best(&self) -> Rational {
+        self.area
+            .max(self.extent)
+            .max(self.contour.unwrap_or(Rational::ZERO))
+    }
+
+    /// The largest of the proven ones (area, extent).
+    pub fn proven(&self) -> Rational {
+        self.area.max(self.extent)
+    }
+}
+
+fn add(a: Rational, b: Rational) -> Result<Rational> {
+    a.checked_add(b)
+        .ok_or_else(|| Error::invalid("length overflows the exact rationals"))
+}
+
+fn sub(a: Rational, b: Rational) -> Result<Rational> {
+    a.checked_sub(b)
+        .ok_or_else(|| Error::invalid("length overflows the exact rationals"))
+}
+
+fn distance(a: Point, b: Point) -> Result<Rational> {
+    add(sub(a.x, b.x)?.abs(), sub(a.y, b.y)?.abs())
+}
+
+/// The length of a closed walk (closing move included).
+pub fn walk_length(walk: &[Point]) -> Result<Rational> {
+    let mut total = Rational::ZERO;
+    for (i, &a) in walk.iter().enumerate() {
+        total = add(total, distance(a, walk[(i + 1) % walk.len()])?)?;
+    }
+    Ok(total)
+}
+
+/// The lower bounds of `polygon`, whose kept erosion piece is `erosion`.
+///
+/// # Errors
+/// Only if the area overflows the exact rationals.
+pub fn lower_bounds(polygon: &Polygon, erosion: &Erosion) -> Result<LowerBounds> {
+    let mut area = Rational::ZERO;
+    for ring in polygon.rings() {
+        let m = ring.corners.len();
+        let mut twice = Rational::ZERO;
+        for i in 0..m {
+            let (a, b) = (ring.corners[i], ring.corners[(i + 1) % m]);
+            let cross = sub(
+                a.x.checked_mul(b.y)
+                    .ok_or_else(|| Error::invalid("overflow"))?,
+                b.x.checked_mul(a.y)
+                    .ok_or_else(|| Error::invalid("overflow"))?,
+            )?;
+            twice = add(twice, cross)?;
+        }
+        let part = twice.abs().checked_mul(Rational::HALF).expect("halving");
+        area = if ring.hole {
+            sub(area, part)?
+        } else {
+            add(area, part)?
+        };
+    }
+    let area = sub(area, Rational::ONE)?.max(Rational::ZERO);
+    let boxes = erosion.rectangles();
+    let extent = match (
+        boxes.iter().map(|b| b.0.x).min(),
+        boxes.iter().map(|b| b.1.x).max(),
+        boxes.iter().map(|b| b.0.y).min(),
+        boxes.iter().map(|b| b.1.y).max(),
+    ) {
+        (Some(x0), Some(x1), Some(y0), Some(y1)) => {
+            let half = add(sub(x1, x0)?, sub(y1, y0)?)?;
+            add(half, half)?
+        }
+        _ => Rational::ZERO,
+    };
+    let contour = if polygon.rings().iter().any(|r| r.hole) {
+        None
+    } else {
+        let mut total = Rational::ZERO;
+        for walk in erosion.contour() {
+            total = add(total, walk_length(walk)?)?;
+        }
+        Some(total)
+    };
+    Ok(LowerBounds {
+        area,
+        extent,
+        contour,
+    })
+}
+
+/// A candidate link: pixel centre `from` (of component `component`) to contour point `to` (on
+/// walk `walk`), of length `length`.
+#[derive(Clone, Copy, Debug)]
+struct Link {
+    length: Rational,
+    component: usize,
+    walk: usize,
+    from: Point,
+    to: Point,
+}
+
+/// The nearest points of the contour walks from `c` along direction `d` (including `c`
+/// itself), with their walks: one per walk that attains the least distance (walks of zero-width
+/// parts of B may share points).
+fn nearest_on_contour(contour: &[Vec<Point>], c: Point, d: (i32, i32)) -> Vec<(Point, usize)> {
+    let mut best: Vec<(Rational, Point, usize)> = Vec::new();
+    for (w, walk) in contour.iter().enumerate() {
+        for i in 0..walk.len() {
+            let (a, b) = (walk[i], walk[(i + 1) % walk.len()]);
+            // The point of segment a–b on the ray's line, nearest c ahead.
+            let hit = if d.0 == 0 {
+                // Vertical ray x = c.x.
+                let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
+                if c.x < lo || c.x > hi {
+                    continue;
+                }
+                let (ylo, yhi) = (a.y.min(b.y), a.y.max(b.y));
+                let y = if d.1 > 0 {
+                    if yhi < c.y { continue } else { ylo.max(c.y) }
+                } else if ylo > c.y {
+                    continue;
+                } else {
+                    yhi.min(c.y)
+                };
+                Point::new(c.x, y)
+            } else {
+                let (lo, hi) = (a.y.min(b.y), a.y.max(b.y));
+                if c.y < lo || c.y > hi {
+                    continue;
+                }
+                let (xlo, xhi) = (a.x.min(b.x), a.x.max(b.x));
+                let x = if d.0 > 0 {
+                    if xhi < c.x { continue } else { xlo.max(c.x) }
+                } else if xlo > c.x {
+                    continue;
+                } else {
+                    xhi.min(c.x)
+                };
+                Point::new(x, c.y)
+            };
+            let Ok(length) = distance(c, hit) else {
+                continue;
+            };
+            match best.first() {
+                Some(&(l, _, _)) if length > l => {}
+                Some(&(l, _, _)) if length == l => {
+                    if !best.iter().any(|b| b.2 == w) {
+                        best.push((length, hit, w));
+                    }
+                }
+                _ => best = vec![(length, hit, w)],
+            }
+        }
+    }
+    best.into_iter().map(|(_, p, w)| (p, w)).collect()
+}
+
+/// Inserts `p` into the closed walk as a vertex (on the first segment containing it), unless it
+/// is one already; returns its index.
+fn insert_vertex(walk: &mut Vec<Point>, p: Point) -> usize {
+    if let Some(i) = walk.iter().position(|&q| q == p) {
+        return i;
+    }
+    let m = walk.len();
+    for i in 0..m {
+        let (a, b) = (walk[i], walk[(i + 1) % m]);
+        let on = (a.x == b.x && p.x == a.x && a.y.min(b.y) <= p.y && p.y <= a.y.max(b.y))
+            || (a.y == b.y && p.y == a.y && a.x.min(b.x) <= p.x && p.x <= a.x.max(b.x));
+        if on {
+            walk.insert(i + 1, p);
+            return i + 1;
+        }
+    }
+    unreachable!("a link ends on its contour walk")
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+/// Corollary 4's milling tour of `polygon` and what it used.
+///
+/// # Arguments
+/// A polygon; with holes it still returns a valid tour (the bound is then not claimed, see
+/// the module docs).
+///
+/// # Returns
+/// One closed walk of the cutter's centre that mills the polygon, and its [`Certificates`].
+///
+/// # Errors
+/// [`Error::Invalid`] with the [`feasibility`] refusal when the polygon cannot be milled;
+/// when some contour walk cannot be linked to the rest (only possible with holes, when no
+/// pixel centre sees that walk along a line); when neither `tsp65` nor `milling25` applies to a
+/// component; when exact lengths overflow.
+///
+/// # Examples
+/// ```
+/// use mowmill::ortho::{Polygon, check, corollary4};
+/// let p = Polygon::parse("POLYGON ((0 0, 4.25 0, 4.25 2.5, 0 2.5, 0 0))", "p.wkt")?;
+/// let (tour, certificates) = corollary4(&p)?;
+/// assert!(check(&p, &tour)?.valid);
+/// assert_eq!(certificates.tsp65, 1);
+/// # Ok::<(), mowmill::Error>(())
+/// ```
+pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
+    let erosion = feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
+    let bounds = lower_bounds(polygon, &erosion)?;
+    let all = interior_pixels(polygon)?;
+    let kept: Vec<Pixel> = all
+        .pixels()
+        .iter()
+        .copied()
+        .filter(|p| erosion.contains(Point::pixel_centre(p.x, p.y)))
+        .collect();
+    let region = Region::from_pixels(kept)?;
+    let labels = topology::components(&region);
+
+    // Step 2: a tour per component.
+    let (tsp65, milling25) = (
+        algorithms::find("tsp65").expect("tsp65 is registered"),
+        algorithms::find("milling25").expect("milling25 is registered"),
+    );
+    let (mut used65, mut used25) = (0, 0);
+    let mut tours: Vec<Vec<Point>> = Vec::new();
+    for k in 0..labels.count {
+        let pixels = (0..region.len())
+            .filter(|&i| labels.label[i] as usize == k)
+            .map(|i| region.pixel(i));
+        let component = Region::from_pixels(pixels)?;
+        let algorithm = if (tsp65.precondition)(&component).is_ok() {
+            used65 += 1;
+            tsp65
+        } else {
+            (milling25.precondition)(&component)?;
+            used25 += 1;
+            milling25
+        };
+        let solution = (algorithm.run)(&component, &Options::default())?;
+        let output = solution
+            .outputs
+            .iter()
+            .find(|o| o.objective == algorithms::Objective::Length && o.cover.is_tour())
+            .ok_or_else(|| Error::invalid(format!("{} returned no tour", algorithm.name)))?;
+        tours.extend(Tour::from_cover(&output.cover).cycles);
+    }
+
+    // Step 3 and 4: the contour walks, linked to the tours by a minimum spanning tree.
+    let mut walks: Vec<Vec<Point>> = erosion.contour().to_vec();
+    let component_of = |p: Pixel| labels.label[region.index_of(p).expect("a kept pixel")] as usize;
+    let mut candidates = Vec::new();
+    for &p in region.pixels() {
+        let c = Point::pixel_centre(p.x, p.y);
+        for d in [(0, -1), (0, 1), (-1, 0), (1, 0)] {
+            // Only where the neighbouring pixel is missing: elsewhere a nearer pixel sees the
+            // same walk along the same line.
+            if region.contains(Pixel::new(p.x + d.0, p.y + d.1)) {
+                continue;
+            }
+            for (to, walk) in nearest_on_contour(&walks, c, d) {
+                candidates.push(Link {
+                    length: distance(c, to)?,
+                    component: component_of(p),
+                    walk,
+                    from: c,
+                    to,
+                });
+            }
+        }
+    }
+    candidates.sort_by_key(|l| (l.length, l.from, l.to, l.walk));
+    let (nt, nw) = (tours.len(), walks.len());
+    // Items: the component tours 0..nt, then the contour walks.
+    let mut parent: Vec<usize> = (0..nt + nw).collect();
+    let mut tree: Vec<Link> = Vec::new();
+    for link in candidates {
+        let (a, b) = (
+            find(&mut parent, link.component),
+            find(&mut parent, nt + link.walk),
+        );
+        if a != b {
+            parent[a] = b;
+            tree.push(link);
+        }
+    }
+    let roots = (0..nt + nw).filter(|&i| find(&mut parent, i) == i).count();
+    if roots > 1 {
+        return Err(Error::invalid(format!(
+            "cannot join the {nt} pixel tour(s) and {nw} contour walk(s) into one tour by \
+             straight links from pixel centres ({roots} groups remain)"
+        )));
+    }
+    let mut link_length = Rational::ZERO;
+    for link in &tree {
+        link_length = add(link_length, link.length)?;
+        insert_vertex(&mut walks[link.walk], link.to);
+    }
+
+    // Splicing: a depth-first walk over the tree, each link there and back.
+    let mut items: Vec<Vec<Point>> = tours;
+    items.extend(walks);
+    let ends = |l: &Link| [(l.component, l.from), (nt + l.walk, l.to)];
+    let mut used = vec![false; tree.len()];
+    let mut out: Vec<Point> = Vec::new();
+    let start = items[0][0];
+    emit(&items, &tree, &ends, &mut used, 0, start, &mut out);
+    let contour_length = {
+        let mut total = Rational::ZERO;
+        for walk in erosion.contour() {
+            total = add(total, walk_length(walk)?)?;
+        }
+        total
+    };
+    let certificates = Certificates {
+        pixels: region.len(),
+        components: labels.count,
+        tsp65: used65,
+        milling25: used25,
+        contour_walks: nw,
+        contour_length,
+        links: tree.len(),
+        link_length,
+        bounds,
+    };
+    Ok((Tour::new(out), certificates))
+}
+
+/// Appends item `item`'s closed walk from `start` (not the return to `start`), detouring
+/// along every unused tree link at each of its points.
+fn emit(
+    items: &[Vec<Point>],
+    tree: &[Link],
+    ends: &dyn Fn(&Link) -> [(usize, Point); 2],
+    used: &mut [bool],
+    item: usize,
+    start: Point,
+    out: &mut Vec<Point>,
+) {
+    let walk = &items[item];
+    let first = walk
+        .iter()
+        .position(|&p| p == start)
+        .expect("a link end is a vertex");
+    for k in 0..walk.len() {
+        let p = walk[(first + k) % walk.len()];
+        out.push(p);
+        for (l, link) in tree.iter().enumerate() {
+            if used[l] {
+                continue;
+            }
+            let [a, b] = ends(link);
+            let (here, there) = if a == (item, p) {
+                (a, b)
+            } else if b == (item, p) {
+                (b, a)
+            } else {
+                continue;
+            };
+            used[l] = true;
+            emit(items, tree, ends, used, there.0, there.1, out);
+            out.push(there.1);
+            out.push(here.1);
+        }
+    }
+}
