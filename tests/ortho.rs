@@ -418,3 +418,73 @@ fn cli_refuses_infeasible_polygons_and_checks_tours_exactly() {
     ]);
     assert_eq!(refused.status.code(), Some(2));
 }
+
+/// `gen` of the ortho families and `solve --algo corollary4`: a perturbed polygon gets a tour
+/// the exact checker accepts (also through `validate`), a narrow one is refused with exit 2.
+#[test]
+fn cli_generates_and_mills_non_integral_polygons() {
+    use std::process::Command;
+    let bin = env!("CARGO_BIN_EXE_mowmill");
+    let dir = std::env::temp_dir().join(format!("mowmill-ortho-gen-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |args: &[&str]| Command::new(bin).args(args).output().unwrap();
+    let p = dir.join("p.wkt");
+    let t = dir.join("p.json");
+    let p_s = p.to_str().unwrap();
+    let made = run(&[
+        "gen",
+        "ortho-perturbed",
+        "--n",
+        "30",
+        "--seed",
+        "4",
+        "--out",
+        p_s,
+    ]);
+    assert!(
+        made.status.success(),
+        "{}",
+        String::from_utf8_lossy(&made.stderr)
+    );
+    let solved = run(&[
+        "solve",
+        p_s,
+        "--algo",
+        "corollary4",
+        "--tour-out",
+        t.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        solved.status.success(),
+        "{}",
+        String::from_utf8_lossy(&solved.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&solved.stdout).unwrap();
+    assert_eq!(v["valid"], true);
+    assert_eq!(v["cycles"], 1);
+    assert!(
+        run(&["validate", p_s, "--tour", t.to_str().unwrap()])
+            .status
+            .success()
+    );
+    let narrow = dir.join("n.wkt");
+    let n_s = narrow.to_str().unwrap();
+    assert!(
+        run(&[
+            "gen",
+            "ortho-narrow",
+            "--n",
+            "30",
+            "--seed",
+            "4",
+            "--out",
+            n_s
+        ])
+        .status
+        .success()
+    );
+    let refused = run(&["solve", n_s, "--algo", "corollary4"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("cannot be milled"));
+}

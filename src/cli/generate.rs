@@ -33,7 +33,8 @@ fn family_parser() -> PossibleValuesParser {
         Family::ALL
             .map(Family::name)
             .into_iter()
-            .chain(super::discrete::FAMILIES.iter().copied()),
+            .chain(super::discrete::FAMILIES.iter().copied())
+            .chain(mowmill::ortho::FAMILIES.iter().copied()),
     )
 }
 
@@ -120,6 +121,9 @@ pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
             }
         }
         return super::discrete::generate(&a.family, n, holes, a.seed, &a.out);
+    }
+    if mowmill::ortho::FAMILIES.contains(&a.family.as_str()) {
+        return super::ortho::generate(&a.family, &a.params.0, a.seed, &a.out);
     }
     let family: Family = a.family.parse()?;
     let info = family.info();

@@ -15,12 +15,13 @@ use std::process::ExitCode;
 pub struct SolveArgs {
     /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list).
     pub file: PathBuf,
-    /// Algorithm name (`mowmill algos` lists their objectives and guarantees).
+    /// Algorithm name (`mowmill algos` lists their objectives and guarantees; `corollary4`
+    /// mills a `.wkt` polygon with non-integral coordinates, docs/ortho.md).
     #[arg(
         long,
         required_unless_present = "command",
         conflicts_with = "command",
-        value_parser = super::one_of(algorithms::names())
+        value_parser = super::one_of(algorithms::names().into_iter().chain(["corollary4"]))
     )]
     pub algo: Option<String>,
     /// Run an outside program instead, e.g. "python3 examples/outside_greedy.py {instance}
@@ -120,6 +121,10 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             a.tour_out.as_deref(),
             a.json,
         );
+    }
+    if super::ortho::is_ortho(&a.file) {
+        let algo = a.algo.as_deref().unwrap_or("corollary4");
+        return super::ortho::solve(&a.file, algo, a.tour_out.as_deref(), a.json);
     }
     let inst = Instance::read(&a.file)?;
     let options = Options {
