@@ -106,11 +106,13 @@ impl Subject<'_> {
         model: Model<'_>,
         options: &Options,
     ) -> Vec<Guarantee> {
+        // The instance's parameters are computed once, and only when a factor needs them.
+        let params = std::cell::OnceCell::new();
         self.guarantees()
             .iter()
             .filter(|g| g.objective == objective)
             .filter(|_| objective != Objective::LawnLength || options.cutter == Cutter::Square)
-            .filter_map(|g| g.on(model))
+            .filter_map(|g| g.on_with(model, || *params.get_or_init(|| model.params())))
             .collect()
     }
 
@@ -295,24 +297,10 @@ pub fn evaluate(
         Subject::Outside(o) => o.run(region, &wanted),
     });
     let seconds = start.elapsed().as_secs_f64();
-    let mut eval = Evaluation {
-        algorithm: subject.name().to_string(),
-        options: options.clone(),
-        seconds,
-        certificates: BTreeMap::new(),
-        outputs: Vec::new(),
-        missing: Vec::new(),
-        error: None,
+    let (mut eval, solution) = match begin(subject.name(), options, seconds, outcome, &wanted) {
+        Ok(started) => started,
+        Err(failed) => return failed,
     };
-    let solution = match outcome {
-        Ok(s) => s,
-        Err(msg) => {
-            eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
-            eval.error = Some(msg);
-            return eval;
-        }
-    };
-    eval.certificates = solution.certificates;
     for objective in wanted {
         // A weighted objective is measured on the output it is carried by.
         let output = solution
@@ -341,6 +329,39 @@ pub fn evaluate(
         eval.outputs.push(checked);
     }
     eval
+}
+
+/// The evaluation of a run that ended with `outcome`: `Err` with the finished evaluation when
+/// it failed (every wanted objective missing for its message), else the evaluation holding the
+/// certificates and the solution whose outputs are to be checked.
+#[allow(clippy::type_complexity, clippy::result_large_err)]
+fn begin<C, S>(
+    name: &str,
+    options: &Options,
+    seconds: f64,
+    outcome: std::result::Result<algorithms::Solution<S>, String>,
+    wanted: &[Objective],
+) -> std::result::Result<(Evaluation<C>, algorithms::Solution<S>), Evaluation<C>> {
+    let mut eval = Evaluation {
+        algorithm: name.to_string(),
+        options: options.clone(),
+        seconds,
+        certificates: BTreeMap::new(),
+        outputs: Vec::new(),
+        missing: Vec::new(),
+        error: None,
+    };
+    match outcome {
+        Ok(mut solution) => {
+            eval.certificates = std::mem::take(&mut solution.certificates);
+            Ok((eval, solution))
+        }
+        Err(msg) => {
+            eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
+            eval.error = Some(msg);
+            Err(eval)
+        }
+    }
 }
 
 /// Checks one cover of `objective` and judges the subject's guarantees on it.
@@ -459,24 +480,11 @@ pub fn evaluate_discrete(
             algorithm.name
         ))),
     });
-    let mut eval = Evaluation {
-        algorithm: algorithm.name.to_string(),
-        options: options.clone(),
-        seconds: start.elapsed().as_secs_f64(),
-        certificates: BTreeMap::new(),
-        outputs: Vec::new(),
-        missing: Vec::new(),
-        error: None,
+    let seconds = start.elapsed().as_secs_f64();
+    let (mut eval, solution) = match begin(algorithm.name, options, seconds, outcome, &wanted) {
+        Ok(started) => started,
+        Err(failed) => return failed,
     };
-    let solution = match outcome {
-        Ok(s) => s,
-        Err(msg) => {
-            eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
-            eval.error = Some(msg);
-            return eval;
-        }
-    };
-    eval.certificates = solution.certificates;
     let subject = Subject::Registered(algorithm);
     for objective in wanted {
         let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {

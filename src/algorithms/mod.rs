@@ -551,12 +551,18 @@ impl Guarantee {
     /// The guarantee on one instance: its condition holds there and the instance's parameters
     /// are put into its factor (a [`Scale::One`] copy); `None` when it does not apply.
     pub fn on(&self, model: Model<'_>) -> Option<Guarantee> {
+        self.on_with(model, || model.params())
+    }
+
+    /// [`Guarantee::on`] with the instance's parameters from `params` (called only when the
+    /// factor needs them), for callers that resolve several guarantees on one instance.
+    pub fn on_with(&self, model: Model<'_>, params: impl FnOnce() -> Params) -> Option<Guarantee> {
         if !self.when.applies_to(model) {
             return None;
         }
         match self.scale {
             Scale::One => Some(*self),
-            scale => self.with_params(scale, &model.params()),
+            scale => self.with_params(scale, &params()),
         }
     }
 
