@@ -235,6 +235,10 @@ pub struct Checked<C = CycleCover> {
     /// The objective's value (length or turns) as the checker recounted it.
     pub value: u64,
     pub length: u64,
+    /// Lengths (`length`, and `value`, `opt`, `lower_bound` of a length objective) are in
+    /// units of 1/`unit`: 1 on pixels and graphs; on orthogonal polygons with arbitrary
+    /// coordinates a common denominator, so that exact lengths stay integers.
+    pub unit: u64,
     pub turns: u64,
     pub cycles: usize,
     pub max_coverage: u64,
@@ -414,6 +418,7 @@ pub fn judge(
         error,
         value,
         length: report.length,
+        unit: 1,
         turns: report.turns,
         cycles: report.cycles,
         max_coverage: u64::from(report.max_coverage),
@@ -537,6 +542,7 @@ pub fn evaluate_discrete(
             error,
             value,
             length: report.length,
+            unit: 1,
             turns: report.turns,
             cycles: report.cycles,
             max_coverage: u64::from(report.max_coverage),
@@ -549,6 +555,175 @@ pub fn evaluate_discrete(
         });
     }
     eval
+}
+
+/// [`evaluate`] on an orthogonal polygon with arbitrary coordinates: runs a registered
+/// algorithm's ortho run, recounts every output with the exact checker
+/// ([`crate::ortho::check`]), takes the proven lower bound ([`ortho_bound`]) and decides the
+/// guarantees. Lengths are exact rationals; the evaluation writes them in units of 1/`unit`
+/// ([`Checked::unit`]), a common denominator of the polygon's coordinates (doubled: the
+/// cutter's centre is half a unit in) and the walk's length, so that every column stays an
+/// integer and nothing is rounded but the lower bound, which is rounded down (still a bound).
+/// No exact optimum is known for such polygons (no exact solver: docs/ortho.md says why), so
+/// OPT is never set.
+pub fn evaluate_ortho(
+    algorithm: &'static Algorithm,
+    polygon: &crate::ortho::Polygon,
+    options: &Options,
+    objectives: &[Objective],
+) -> Evaluation<crate::ortho::Tour> {
+    let wanted: Vec<Objective> = if objectives.is_empty() {
+        algorithm.objectives.to_vec()
+    } else {
+        objectives.to_vec()
+    };
+    let start = Instant::now();
+    let outcome = guarded(|| match algorithm.ortho {
+        Some(run) => run(polygon, options),
+        None => Err(Error::invalid(format!(
+            "{} does not run on orthogonal polygons with arbitrary coordinates",
+            algorithm.name
+        ))),
+    });
+    let seconds = start.elapsed().as_secs_f64();
+    let (mut eval, solution) = match begin(algorithm.name, options, seconds, outcome, &wanted) {
+        Ok(started) => started,
+        Err(failed) => return failed,
+    };
+    let subject = Subject::Registered(algorithm);
+    for objective in wanted {
+        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
+            let why = format!("{} returned no {objective} output", algorithm.name);
+            eval.missing.push((objective, why));
+            continue;
+        };
+        match judge_ortho(subject, polygon, options, objective, &output.cover) {
+            Ok(checked) => eval.outputs.push(checked),
+            Err(e) => eval.missing.push((objective, e.to_string())),
+        }
+    }
+    eval
+}
+
+/// Checks one ortho output exactly and decides the subject's guarantees on it.
+fn judge_ortho(
+    subject: Subject<'_>,
+    polygon: &crate::ortho::Polygon,
+    options: &Options,
+    objective: Objective,
+    cover: &crate::ortho::Tour,
+) -> Result<Checked<crate::ortho::Tour>> {
+    use crate::ortho::Rational;
+    let report = crate::ortho::check(polygon, cover)?;
+    let one_walk = !objective.is_tour() || cover.is_tour();
+    let error = if !report.valid {
+        Some(report.error.clone().unwrap_or_default())
+    } else if !one_walk {
+        Some(format!("a tour objective got {} cycles", cover.cycles.len()))
+    } else {
+        None
+    };
+    let too_fine = || {
+        Error::invalid(
+            "the common denominator of the polygon and the walk overflows 64 bits: the lengths \
+             cannot be written exactly",
+        )
+    };
+    let unit = polygon
+        .denominator()
+        .and_then(|l| l.checked_mul(2))
+        .and_then(|l| crate::ortho::lcm(l, report.length.denom()))
+        .and_then(|u| u64::try_from(u).ok())
+        .ok_or_else(too_fine)?;
+    // An exact length in units of 1/unit (an integer by the choice of unit), or a bound
+    // rounded down to them.
+    let in_units = |r: Rational| -> Result<u64> {
+        let scaled = r
+            .checked_mul(Rational::from(unit as i64))
+            .ok_or_else(too_fine)?;
+        u64::try_from(scaled.floor().max(0)).map_err(|_| too_fine())
+    };
+    let length = in_units(report.length)?;
+    let (bound, lb_source) = ortho_bound(polygon, objective)?;
+    let (value, lower_bound) = match objective {
+        Objective::Length => (length, in_units(bound)?),
+        Objective::Turns | Objective::CcTurns => (report.turns, bound.floor().max(0) as u64),
+        other => {
+            return Err(Error::invalid(format!(
+                "{other} is not measured on orthogonal polygons with arbitrary coordinates"
+            )));
+        }
+    };
+    let measured = Measured {
+        value,
+        length,
+        max_coverage: 0,
+    };
+    let n = Model::Ortho(polygon).len() as u64;
+    // A bound on a length is written in the same units: its constant and its N scale by unit.
+    let applicable: Vec<_> = subject
+        .applicable_to(objective, Model::Ortho(polygon), options)
+        .into_iter()
+        .map(|mut g| {
+            let on_length = g.quantity == algorithms::Quantity::Length
+                || (g.quantity == algorithms::Quantity::Value && objective == Objective::Length);
+            if on_length {
+                g.add = g.add.saturating_mul(unit as i64);
+                if g.against == algorithms::Against::N {
+                    g.num = g.num.saturating_mul(unit as i64);
+                }
+            }
+            g
+        })
+        .collect();
+    let (verdicts, within_guarantee) =
+        verdicts(&applicable, &measured, n, None, Some(lower_bound));
+    Ok(Checked {
+        objective,
+        cover: cover.clone(),
+        valid: report.valid && one_walk,
+        error,
+        value,
+        length,
+        unit,
+        turns: report.turns,
+        cycles: report.cycles,
+        max_coverage: 0,
+        opt: None,
+        opt_status: String::new(),
+        lower_bound: Some(lower_bound),
+        lb_source,
+        verdicts,
+        within_guarantee,
+    })
+}
+
+/// The proven lower bound on the optimum of `objective` on an orthogonal polygon, exactly,
+/// with its source. Length: the larger of area − 1 and the erosion's extent
+/// ([`crate::ortho::lower_bounds`]; the paper's contour bound is not proven here and not
+/// used). Turns (of a tour or a cycle cover): 4, the turns of any closed walk.
+pub fn ortho_bound(
+    polygon: &crate::ortho::Polygon,
+    objective: Objective,
+) -> Result<(crate::ortho::Rational, String)> {
+    use crate::ortho::Rational;
+    match objective {
+        Objective::Length => {
+            let erosion =
+                crate::ortho::feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
+            let b = crate::ortho::lower_bounds(polygon, &erosion)?;
+            let source = if b.area >= b.extent {
+                "area: L >= area - 1"
+            } else {
+                "extent: L >= 2 (w_B + h_B)"
+            };
+            Ok((b.proven(), source.to_string()))
+        }
+        _ => Ok((
+            Rational::from(4),
+            "a closed walk turns at least 4 times".to_string(),
+        )),
+    }
 }
 
 /// The cheap lower bound on the optimum of `objective` on a discrete instance: the star

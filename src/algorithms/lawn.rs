@@ -713,6 +713,7 @@ pub(crate) const LAWN_MST: Algorithm = Algorithm {
     precondition,
     run: lawn_mst,
     discrete: None,
+    ortho: None,
 };
 
 /// The registry entry of `lawn-christofides`: Christofides on the cell centres
@@ -769,6 +770,7 @@ pub(crate) const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     precondition,
     run: lawn_christofides,
     discrete: None,
+    ortho: None,
 };
 
 /// The registry entry of `lawn-2opt`: 2-opt and Or-opt started from the better of the MST and
@@ -827,6 +829,7 @@ pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
     precondition,
     run: lawn_two_opt,
     discrete: None,
+    ortho: None,
 };
 
 /// The registry entry of `lawn-box`: the shorter of the bounding-box rings of Fig. 9 and the
@@ -886,6 +889,7 @@ pub(crate) const LAWN_BOX: Algorithm = Algorithm {
     precondition,
     run: lawn_box,
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]

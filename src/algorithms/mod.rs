@@ -260,6 +260,9 @@ pub enum When {
     /// instance, whose one-vertex walk the checker counts as 4 turns (turning in place): the
     /// paper's bounds are read for instances with an edge.
     NonTrivial,
+    /// Simple polygons: no holes (Corollary 4 of the milling paper). Grid regions without
+    /// holes, orthogonal polygons without inner rings; never discrete instances.
+    Simple,
 }
 
 impl When {
@@ -284,33 +287,44 @@ impl When {
                 .list
                 .iter()
                 .any(|c| c.closed),
+            (When::Simple, Model::Grid(region)) => crate::topology::holes(region).count == 0,
+            (When::Simple, Model::Ortho(p)) => !p.rings().iter().any(|r| r.hole),
+            (When::Simple, Model::Discrete(_)) => false,
+            // Orthogonal polygons with arbitrary coordinates are none of these.
+            (When::Biconnected | When::Lattice | When::NoRings, Model::Ortho(_)) => false,
         }
     }
 }
 
-/// An instance of either model: a grid region, or a discrete milling instance (a graph with
-/// collinear pairs; [`crate::discrete`]). A grid region is the special case
-/// [`Discrete::from_region`](crate::discrete::Discrete::from_region).
+/// An instance of one of the three models: a grid region, a discrete milling instance (a graph
+/// with collinear pairs; [`crate::discrete`]), or an orthogonal polygon with arbitrary
+/// coordinates ([`crate::ortho`]). A grid region is the special case
+/// [`Discrete::from_region`](crate::discrete::Discrete::from_region) of the second and
+/// [`Polygon::from_region`](crate::ortho::Polygon::from_region) of the third.
 #[derive(Clone, Copy, Debug)]
 pub enum Model<'a> {
     Grid(&'a Region),
     Discrete(&'a Discrete),
+    Ortho(&'a crate::ortho::Polygon),
 }
 
 impl Model<'_> {
-    /// The `model` column of results: `grid` or `discrete`.
+    /// The `model` column of results: `grid`, `discrete` or `ortho`.
     pub fn name(self) -> &'static str {
         match self {
             Model::Grid(_) => "grid",
             Model::Discrete(_) => "discrete",
+            Model::Ortho(_) => "ortho",
         }
     }
 
-    /// The number of pixels (vertices) to cover.
+    /// The number of pixels (vertices) to cover; for an orthogonal polygon its area rounded up
+    /// (the pixel count of an integral one).
     pub fn len(self) -> usize {
         match self {
             Model::Grid(r) => r.len(),
             Model::Discrete(d) => d.len(),
+            Model::Ortho(p) => p.area().map_or(0, |a| a.ceil().max(0) as usize),
         }
     }
 
@@ -321,10 +335,13 @@ impl Model<'_> {
 
     /// Table 1's parameters (δ, μ, ρ, d and the exact counts behind them); a grid region's are
     /// those of its grid graph.
+    /// An orthogonal polygon has none of them (no graph): its factors are constants, and a
+    /// scaled guarantee does not apply to it ([`Params::none`]).
     pub fn params(self) -> Params {
         match self {
             Model::Grid(r) => Discrete::from_region(r).params(),
             Model::Discrete(d) => d.params(),
+            Model::Ortho(_) => Params::none(),
         }
     }
 }
@@ -657,6 +674,7 @@ impl fmt::Display for Guarantee {
             When::Lattice => format!("lattice instances; {}", self.source),
             When::NoRings => format!("no closed channels; {}", self.source),
             When::NonTrivial => format!("N >= 2; {}", self.source),
+            When::Simple => format!("simple polygons; {}", self.source),
         };
         let source = source.as_str();
         let q = self.quantity.label(self.objective);
@@ -749,6 +767,11 @@ impl<C> Default for Solution<C> {
 /// How an algorithm runs on discrete instances (its `run` takes grid regions).
 pub type DiscreteRun = fn(&Discrete, &Options) -> Result<Solution<DiscreteCover>>;
 
+/// How an algorithm runs on orthogonal polygons with arbitrary coordinates: walks of the
+/// cutter's centre with exact coordinates ([`crate::ortho::Tour`], one per output; a cycle
+/// cover is a `Tour` with several cycles).
+pub type OrthoRun = fn(&crate::ortho::Polygon, &Options) -> Result<Solution<crate::ortho::Tour>>;
+
 /// A registered algorithm.
 pub struct Algorithm {
     /// Stable name: the CLI's `--algo`, the `algorithm` column of results.
@@ -770,6 +793,9 @@ pub struct Algorithm {
     /// Its run on discrete instances, for the algorithms of discrete milling (they run on grid
     /// regions through [`Discrete::from_region`]); `None` for the grid-only ones.
     pub discrete: Option<DiscreteRun>,
+    /// Its run on orthogonal polygons with arbitrary coordinates (issue 18); `None` for the
+    /// others.
+    pub ortho: Option<OrthoRun>,
 }
 
 impl Algorithm {
@@ -822,6 +848,8 @@ pub static REGISTRY: &[Algorithm] = &[
     thin_euler::ALGORITHM,
     // Discrete milling, Table 1's rows Discrete and Restricted-direction (issue 17).
     crate::discrete::star_cover::ALGORITHM,
+    // Orthogonal polygons with arbitrary coordinates, Table 1's row Orthogonal (issue 18).
+    crate::ortho::COROLLARY4,
 ];
 
 /// The registered algorithm called `name`.

@@ -295,11 +295,9 @@ pub static MILLING_COR_4: Theorem = Theorem {
     id: "Corollary 4",
     statement: "milling simple rectilinear polygons (arbitrary vertices) within 11/5",
     factor: "11/5 OPT",
-    measure: Measure::Nothing,
-    when: When::Always,
-    realized: Realized::Not(
-        "needs polygons with non-integral vertices and the contour tour; mowmill reads integral regions only",
-    ),
+    measure: Measure::Bound(bound(Value, 11, 5, 0, Opt)),
+    when: When::Simple,
+    realized: Realized::ByAlgorithms,
     tight: None,
 };
 
@@ -661,11 +659,47 @@ pub static TURNS_THM_5_3: Theorem = Theorem {
 pub static TURNS_THM_5_7: Theorem = Theorem {
     paper: TurnCost,
     id: "Theorem 5.7",
-    statement: "nonintegral orthogonal milling: 4.5 cycle cover, 6.25 tour",
-    factor: "9/2 OPT_cc, 25/4 OPT",
-    measure: Measure::Nothing,
+    statement: "nonintegral orthogonal milling: cycle cover 4.5 OPT_cc",
+    factor: "9/2 OPT_cc",
+    measure: Measure::Bound(bound(Value, 9, 2, 0, Opt)),
     when: When::Always,
-    realized: Realized::Not("needs non-integral orthogonal polygons (issue 18)"),
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_THM_5_7_TOUR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.7 (tour)",
+    statement: "nonintegral orthogonal milling: tour 6.25 OPT",
+    factor: "25/4 OPT",
+    measure: Measure::Bound(bound(Value, 25, 4, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+/// Table 1's row "Orthogonal", simultaneous length column (the text states only the turn
+/// factors of Theorem 5.7; the 8 is the table's).
+pub static TURNS_THM_5_7_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.7 (length)",
+    statement: "Table 1, Orthogonal: the min-turn tour is within 8 of the minimum length",
+    factor: "8 OPT_length",
+    measure: Measure::Bound(bound(Length, 8, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+/// Table 1's row "Orthogonal", maximum coverage column.
+pub static TURNS_THM_5_7_COVERAGE: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Theorem 5.7 (coverage)",
+    statement: "Table 1, Orthogonal: every point is milled at most 8 times",
+    factor: "coverage <= 8",
+    measure: Measure::Bound(bound(MaxCoverage, 8, 1, 0, One)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
     tight: None,
 };
 
@@ -718,6 +752,9 @@ pub static THEOREMS: &[&Theorem] = &[
     &TURNS_THM_5_2_COVERAGE,
     &TURNS_THM_5_3,
     &TURNS_THM_5_7,
+    &TURNS_THM_5_7_TOUR,
+    &TURNS_THM_5_7_LENGTH,
+    &TURNS_THM_5_7_COVERAGE,
     &TURNS_THM_5_10,
 ];
 

@@ -12,14 +12,7 @@ use std::process::ExitCode;
 
 /// Whether `path` is a `.wkt` polygon with a coordinate that is not an integer (read exactly).
 pub fn is_ortho(path: &Path) -> bool {
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("wkt"))
-        && Polygon::read(path).is_ok_and(|p| {
-            p.rings()
-                .iter()
-                .flat_map(|r| &r.corners)
-                .any(|c| !c.x.is_integer() || !c.y.is_integer())
-        })
+    Polygon::is_ortho_file(path)
 }
 
 /// Reads the polygon and refuses it (exit 2, the message naming where) when no tour of the unit
@@ -89,60 +82,139 @@ pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
     })
 }
 
-/// `solve --algo corollary4` on an ortho polygon: Corollary 4's tour (the pixels inside toured
-/// by `tsp65` or `milling25`, joined to the contour of the erosion), checked by the exact
-/// checker, with its length against the lower bounds (area and extent proven; the contour bound
-/// as the paper claims it, unproven here: docs/ortho.md). Exit 1 when the tour is invalid.
+/// `solve --algo A` on an ortho polygon, for every registered algorithm with an ortho run
+/// (`corollary4`, `strips-contour`): its outputs go through the one pipeline
+/// ([`mowmill::evaluate::evaluate_ortho`]): checked by the exact checker, each against its proven
+/// lower bound. `--tour-out` writes the tour (the first tour output). For `corollary4` the JSON
+/// also carries the length bounds of Corollary 4's proof (the contour bound as the paper claims
+/// it, unproven here: docs/ortho.md). Exit 1 when an output is invalid.
 pub fn solve(path: &Path, algo: &str, tour_out: Option<&Path>, as_json: bool) -> Result<ExitCode> {
-    if algo != "corollary4" {
+    let ortho_names: Vec<&str> = mowmill::algorithms::REGISTRY
+        .iter()
+        .filter(|a| a.ortho.is_some())
+        .map(|a| a.name)
+        .collect();
+    let Some(algorithm) = mowmill::algorithms::find(algo).filter(|a| a.ortho.is_some()) else {
         return Err(Error::invalid(format!(
-            "{}: a polygon with non-integral coordinates is milled by corollary4 only (not {algo})",
-            path.display()
+            "{}: a polygon with non-integral coordinates is milled by {} (not {algo})",
+            path.display(),
+            ortho_names.join(" or ")
         ))
         .into());
-    }
-    let (polygon, _) = feasible(path)?;
-    let (tour, certificates) = ortho::corollary4(&polygon)?;
-    let report = ortho::check(&polygon, &tour)?;
-    if let Some(out) = tour_out {
-        tour.write(out)?;
-    }
-    let proven = certificates.bounds.proven();
-    let best = certificates.bounds.best();
-    let ratio = |b: ortho::Rational| {
-        (b.numer() != 0).then(|| {
-            (report.length.numer() as f64 / report.length.denom() as f64)
-                / (b.numer() as f64 / b.denom() as f64)
-        })
     };
-    let v = json!({
-        "algorithm": "corollary4",
+    let (polygon, erosion) = feasible(path)?;
+    let eval = mowmill::evaluate::evaluate_ortho(
+        algorithm,
+        &polygon,
+        &mowmill::algorithms::Options::default(),
+        &[],
+    );
+    if let Some(e) = &eval.error {
+        return Err(Error::invalid(format!("{}: {algo}: {e}", path.display())).into());
+    }
+    if let Some((objective, why)) = eval.missing.first() {
+        return Err(Error::invalid(format!("{}: {algo}: {objective}: {why}", path.display())).into());
+    }
+    let exact = |units: u64, unit: u64| {
+        ortho::Rational::new(i128::from(units), i128::from(unit))
+            .map_or_else(|| format!("{units}/{unit}"), |r| r.to_string())
+    };
+    let outputs: Vec<serde_json::Value> = eval
+        .outputs
+        .iter()
+        .map(|c| {
+            let length = exact(c.length, c.unit);
+            let (value, bound) = if c.objective == mowmill::algorithms::Objective::Length {
+                (length.clone(), c.lower_bound.map(|b| exact(b, c.unit)))
+            } else {
+                (c.value.to_string(), c.lower_bound.map(|b| b.to_string()))
+            };
+            json!({
+                "objective": c.objective,
+                "valid": c.valid,
+                "error": c.error,
+                "value": value,
+                "length": length,
+                "turns": c.turns,
+                "cycles": c.cycles,
+                "lower_bound": bound,
+                "lb_source": c.lb_source,
+                "ratio_lb": c.lower_bound.filter(|&b| b > 0).map(|b| c.value as f64 / b as f64),
+                "verdicts": c.verdicts,
+                "within_guarantee": c.within_guarantee,
+            })
+        })
+        .collect();
+    let tour = eval.outputs.iter().find(|c| c.objective.is_tour());
+    if let (Some(out), Some(t)) = (tour_out, tour) {
+        t.cover.write(out)?;
+    }
+    let valid = eval.outputs.iter().all(|c| c.valid);
+    let mut v = json!({
+        "algorithm": algorithm.name,
         "model": "ortho",
-        "valid": report.valid,
-        "length": report.length.to_string(),
-        "turns": report.turns,
-        "cycles": report.cycles,
-        "error": report.error,
-        "lower_bound_proven": proven.to_string(),
-        "lower_bound_with_contour": best.to_string(),
-        "ratio_proven_bound": ratio(proven),
-        "ratio_with_contour": ratio(best),
-        "certificates": certificates,
+        "valid": valid,
+        "seconds": eval.seconds,
+        "outputs": outputs,
+        "certificates": eval.certificates,
     });
+    // The tour's own figures at the top level (as `solve` reports a tour on pixels).
+    if let Some(t) = tour {
+        v["length"] = json!(exact(t.length, t.unit));
+        v["turns"] = json!(t.turns);
+        v["cycles"] = json!(t.cycles);
+        v["error"] = json!(t.error);
+    }
+    let mut contour_note = String::new();
+    if algorithm.name == "corollary4" {
+        let bounds = ortho::lower_bounds(&polygon, &erosion)?;
+        v["lower_bound_proven"] = json!(bounds.proven().to_string());
+        v["lower_bound_with_contour"] = json!(bounds.best().to_string());
+        if let Some(t) = tour {
+            let length = ortho::Rational::new(i128::from(t.length), i128::from(t.unit));
+            let ratio = |b: ortho::Rational| {
+                length.filter(|_| b.numer() != 0).map(|l| {
+                    (l.numer() as f64 / l.denom() as f64) / (b.numer() as f64 / b.denom() as f64)
+                })
+            };
+            v["ratio_proven_bound"] = json!(ratio(bounds.proven()));
+            v["ratio_with_contour"] = json!(ratio(bounds.best()));
+        }
+        contour_note = format!(
+            "; {} with the paper's contour bound (unproven here)",
+            bounds.best()
+        );
+    }
     if as_json {
         println!("{}", serde_json::to_string_pretty(&v)?);
     } else {
-        println!(
-            "corollary4: length {} (turns {}, {} cycle(s)) | {} | lower bound {} (area, extent), {} with the paper's contour bound",
-            report.length,
-            report.turns,
-            report.cycles,
-            if report.valid { "valid" } else { "INVALID" },
-            proven,
-            best
-        );
+        for c in &eval.outputs {
+            let (value, bound) = if c.objective == mowmill::algorithms::Objective::Length {
+                (
+                    exact(c.length, c.unit),
+                    c.lower_bound.map(|b| exact(b, c.unit)),
+                )
+            } else {
+                (c.value.to_string(), c.lower_bound.map(|b| b.to_string()))
+            };
+            println!(
+                "{}: {} {} (length {}, turns {}, {} cycle(s)) | {} | lower bound {} ({})",
+                algorithm.name,
+                c.objective,
+                value,
+                exact(c.length, c.unit),
+                c.turns,
+                c.cycles,
+                if c.valid { "valid" } else { "INVALID" },
+                bound.unwrap_or_else(|| "-".into()),
+                c.lb_source,
+            );
+        }
+        if !contour_note.is_empty() {
+            println!("corollary4: lower bounds{contour_note}");
+        }
     }
-    Ok(if report.valid {
+    Ok(if valid {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

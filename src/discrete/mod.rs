@@ -72,6 +72,24 @@ pub struct Params {
     pub beta_max: u64,
 }
 
+impl Params {
+    /// No parameters: an instance that is not a graph (an orthogonal polygon with arbitrary
+    /// coordinates). n = 0 and no d, so that no factor in them resolves to a number that means
+    /// anything: callers do not resolve scaled guarantees on such instances.
+    pub fn none() -> Params {
+        Params {
+            delta: 0.0,
+            mu: 0,
+            rho: 0.0,
+            d: None,
+            n: 0,
+            edges: 0,
+            direction_sum: 0,
+            beta_max: 0,
+        }
+    }
+}
+
 impl Discrete {
     /// An instance on vertices `0..n` with the undirected `edges` and, for every triple
     /// `(v, a, b)` of `collinear`, the edges `va` and `vb` collinear at `v`.

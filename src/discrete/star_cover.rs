@@ -598,6 +598,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     precondition: crate::algorithms::precondition::connected,
     run: run_grid,
     discrete: Some(run_discrete),
+    ortho: None,
 };
 
 /// The star cover and its merged tour on a discrete instance, with the rook and merge counts

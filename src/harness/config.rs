@@ -22,8 +22,14 @@
 //! n = [20, 40]         # discrete instances, run by the algorithms with a discrete run
 //! count = 3
 //!
+//! [[family]]
+//! family = "ortho-perturbed"  # orthogonal polygons with arbitrary coordinates (issue 18):
+//! n = [12, 24]         # ortho-perturbed, ortho-holed, ortho-sliver, ortho-narrow (n); run
+//! count = 3            # by the algorithms with an ortho run (corollary4, strips-contour)
+//!
 //! [[files]]            # existing instances: every .grid/.wkt/.poly/.gg/.csv file of a folder, and
-//!                      # the discrete .dm/.vox/.hex (not .json: folders hold tours as .json)
+//!                      # the discrete .dm/.vox/.hex (not .json: folders hold tours as .json);
+//!                      # a .wkt with a non-integral coordinate is an orthogonal polygon
 //! dir = "../instances/fixtures"   # relative to the config file's folder
 //! family = "fixtures"  # the family column of their rows
 //!
@@ -359,6 +365,12 @@ pub enum Source {
         n: usize,
         holes: Option<usize>,
     },
+    /// A family of orthogonal polygons with arbitrary coordinates ([`crate::ortho::FAMILIES`]);
+    /// the seed is the spec's.
+    Ortho {
+        family: String,
+        n: usize,
+    },
     File(PathBuf),
 }
 
@@ -447,8 +459,8 @@ impl Config {
         let mut combinations: BTreeMap<(String, String), usize> = BTreeMap::new();
         for (i, f) in self.family.iter().enumerate() {
             let at = format!("family[{i}]");
-            if is_discrete_family(&f.family) {
-                total = self.validate_discrete_family(f, &at, total, &mut combinations)?;
+            if is_discrete_family(&f.family) || is_ortho_family(&f.family) {
+                total = self.validate_model_family(f, &at, total, &mut combinations)?;
                 check_algorithms(&f.algorithms, &outside, &at)?;
                 continue;
             }
@@ -456,8 +468,9 @@ impl Config {
                 Problem::value(
                     format!("{at}.family"),
                     format!(
-                        "{e}; or a family of the discrete model: {}",
-                        crate::discrete::generate::FAMILIES.join(", ")
+                        "{e}; or a family of the discrete model: {}; or of orthogonal polygons: {}",
+                        crate::discrete::generate::FAMILIES.join(", "),
+                        crate::ortho::FAMILIES.join(", ")
                     ),
                 )
             })?;
@@ -617,6 +630,7 @@ impl Config {
         let mut out = Vec::new();
         for f in &self.family {
             let discrete = is_discrete_family(&f.family);
+            let ortho = is_ortho_family(&f.family);
             for combo in expand(f) {
                 let params = params_string(&combo);
                 for index in 0..f.count {
@@ -627,6 +641,11 @@ impl Config {
                             family: f.family.clone(),
                             n: n.unwrap_or(0),
                             holes,
+                        }
+                    } else if ortho {
+                        Source::Ortho {
+                            family: f.family.clone(),
+                            n: discrete_params(&combo).0.unwrap_or(0),
                         }
                     } else {
                         let mut g = GenParams::new(f.family.parse::<Family>()?, seed);
@@ -752,7 +771,13 @@ fn is_discrete_family(family: &str) -> bool {
     crate::discrete::generate::FAMILIES.contains(&family)
 }
 
-/// The `n` and `holes` of a discrete family's parameter combination.
+/// Whether `family` is a family of orthogonal polygons with arbitrary coordinates
+/// (`ortho-perturbed`, `ortho-holed`, `ortho-sliver`, `ortho-narrow`).
+fn is_ortho_family(family: &str) -> bool {
+    crate::ortho::FAMILIES.contains(&family)
+}
+
+/// The `n` and `holes` of a discrete (or ortho) family's parameter combination.
 fn discrete_params(combo: &[(Param, ParamValue)]) -> (Option<usize>, Option<usize>) {
     let get = |p: Param| {
         combo.iter().find_map(|&(k, v)| match (k == p, v) {
@@ -764,10 +789,10 @@ fn discrete_params(combo: &[(Param, ParamValue)]) -> (Option<usize>, Option<usiz
 }
 
 impl Config {
-    /// The checks of a `[[family]]` table of a discrete family: it takes `n` (required) and,
-    /// for `voxel`, `holes`; counts and combinations as for the grid families. Returns the
-    /// new instance total.
-    fn validate_discrete_family(
+    /// The checks of a `[[family]]` table of a discrete or ortho family: it takes `n`
+    /// (required) and, for `voxel`, `holes`; counts and combinations as for the grid families.
+    /// Returns the new instance total.
+    fn validate_model_family(
         &self,
         f: &FamilySpec,
         at: &str,
@@ -798,8 +823,20 @@ impl Config {
         for combo in expand(f) {
             let params = params_string(&combo);
             let (n, holes) = discrete_params(&combo);
-            crate::discrete::generate::check(&f.family, n, holes)
-                .map_err(|e| Problem::value(at, format!("{params}: {e}")))?;
+            if is_ortho_family(&f.family) {
+                match n {
+                    Some(1..=10_000) => {}
+                    _ => {
+                        return Err(Problem::value(
+                            at,
+                            format!("{params}: family {} needs n from 1 to 10000", f.family),
+                        ));
+                    }
+                }
+            } else {
+                crate::discrete::generate::check(&f.family, n, holes)
+                    .map_err(|e| Problem::value(at, format!("{params}: {e}")))?;
+            }
             record_combination(combinations, &f.family, &params, index, at)?;
         }
         Ok(total)

@@ -72,6 +72,11 @@ pub struct Row {
     pub edges: Option<u64>,
     #[serde(default)]
     pub direction_sum: Option<u64>,
+    /// Lengths (`length`, and `value`, `opt`, `lower_bound` of a `length` row) are in units of
+    /// 1/`unit`: empty means 1 (pixels, graphs); orthogonal polygons with arbitrary coordinates
+    /// write their exact lengths over a common denominator (`evaluate_ortho`).
+    #[serde(default)]
+    pub unit: Option<u64>,
 }
 
 impl Row {
@@ -120,7 +125,13 @@ impl Row {
         };
         self.ratio_opt = ratio(self.value, self.opt);
         self.ratio_lb = ratio(self.value, self.lower_bound);
-        self.ratio_n = ratio(self.value, Some(self.n));
+        // value / N in the value's units: a length in units of 1/unit is divided by unit·N.
+        let unit = if self.objective == "length" {
+            self.unit.unwrap_or(1)
+        } else {
+            1
+        };
+        self.ratio_n = ratio(self.value, self.n.checked_mul(unit));
     }
 }
 

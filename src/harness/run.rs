@@ -223,7 +223,8 @@ fn check_same_run(
 
 /// A `results.csv` written by an older mowmill (without the option columns `merge`, `cutter`,
 /// `coverage4` appended after `error`, or without the model columns `model`, `d`, `delta`,
-/// `mu`, `rho`, `edges`, `direction_sum` appended after `coverage4`) is rewritten in the
+/// `mu`, `rho`, `edges`, `direction_sum` appended after `coverage4`, or without `unit`
+/// appended after `direction_sum`) is rewritten in the
 /// current header before rows are appended to it, so that no row lands under the wrong column;
 /// the old rows get empty columns (an old run did not record them). Any other header is
 /// refused.
@@ -236,11 +237,15 @@ fn upgrade_header(results: &Path) -> Result<()> {
     }
     let columns: Vec<&str> = current.split(',').collect();
     let given: Vec<&str> = header.split(',').collect();
-    // Only a prefix of today's columns ending at `error` (before the option columns) or at
-    // `coverage4` (before the model columns) is a known older layout.
+    // Only a prefix of today's columns ending at `error` (before the option columns), at
+    // `coverage4` (before the model columns) or at `direction_sum` (before `unit`) is a known
+    // older layout.
     let known_old = given.len() < columns.len()
         && given[..] == columns[..given.len()]
-        && matches!(given.last(), Some(&"error") | Some(&"coverage4"));
+        && matches!(
+            given.last(),
+            Some(&"error") | Some(&"coverage4") | Some(&"direction_sum")
+        );
     if !known_old {
         return Err(Error::parse(
             &results.display().to_string(),
@@ -291,6 +296,14 @@ fn run_instance(
             b.set_params("discrete", &inst.params());
             return run_on_discrete(&inst, b, spec, config, done);
         }
+        Ok((Loaded::Ortho(polygon), sha)) => {
+            let mut b = base.clone();
+            b.sha256 = sha;
+            b.n = Model::Ortho(&polygon).len() as u64;
+            b.holes = polygon.rings().iter().filter(|r| r.hole).count() as u64;
+            b.model = "ortho".to_string();
+            return run_on_ortho(&polygon, b, spec, done);
+        }
         Err(e) => e,
     };
     let key = (spec.name.clone(), "instance".to_string(), "-".to_string());
@@ -305,10 +318,11 @@ fn run_instance(
     }]
 }
 
-/// An instance of either model, as read or generated.
+/// An instance of one of the models, as read or generated.
 enum Loaded {
     Grid(Region),
     Discrete(Discrete),
+    Ortho(crate::ortho::Polygon),
 }
 
 /// Generates or reads the instance, saves it under `out/instances/` and returns it with the
@@ -323,6 +337,19 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Loaded, String)> {
         Source::Discrete { family, n, holes } => {
             let g = crate::discrete::generate::generate(family, *n, *holes, spec.seed)?;
             (g.text.into_bytes(), g.ext, Loaded::Discrete(g.instance))
+        }
+        Source::Ortho { family, n } => {
+            let polygon = crate::ortho::generate(family, *n, spec.seed)?;
+            (
+                format!("{}\n", polygon.to_wkt()).into_bytes(),
+                "wkt",
+                Loaded::Ortho(polygon),
+            )
+        }
+        Source::File(path) if crate::ortho::Polygon::is_ortho_file(path) => {
+            let polygon = crate::ortho::Polygon::read(path)?;
+            let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+            (bytes, "wkt", Loaded::Ortho(polygon))
         }
         Source::File(path) if crate::discrete::generate::is_discrete(path) => {
             let inst = crate::discrete::generate::read(path)?;
@@ -602,6 +629,61 @@ fn run_on_discrete(
     rows
 }
 
+/// Runs the algorithms with an ortho run on an orthogonal polygon with arbitrary coordinates.
+/// No `[[exact]]` objective applies: no exact solver exists for such polygons (docs/ortho.md).
+fn run_on_ortho(
+    polygon: &crate::ortho::Polygon,
+    base: Row,
+    spec: &InstanceSpec,
+    done: &HashMap<(String, String, String), Row>,
+) -> Vec<Row> {
+    let mut rows = Vec::new();
+    let names: Vec<String> = match &spec.algorithms {
+        Some(names) => names.clone(),
+        None => algorithms::REGISTRY
+            .iter()
+            .filter(|a| a.ortho.is_some())
+            .map(|a| a.name.to_string())
+            .collect(),
+    };
+    for algo_name in names {
+        let Some(algorithm) = algorithms::find(&algo_name).filter(|a| a.ortho.is_some()) else {
+            let key = (spec.name.clone(), algo_name.clone(), "-".to_string());
+            if !done.contains_key(&key) {
+                rows.push(Row {
+                    algorithm: algo_name.clone(),
+                    objective: "-".into(),
+                    error: format!(
+                        "{algo_name} does not run on orthogonal polygons with arbitrary coordinates"
+                    ),
+                    ..base.clone()
+                });
+            }
+            continue;
+        };
+        // Ortho runs take no options: one variant, under the plain name.
+        let pending: Vec<Objective> = algorithm
+            .objectives
+            .iter()
+            .copied()
+            .filter(|o| !done.contains_key(&(spec.name.clone(), algorithm.name.to_string(), o.to_string())))
+            .collect();
+        if pending.is_empty() {
+            continue;
+        }
+        let options = algorithms::Options::default();
+        let eval = evaluate::evaluate_ortho(algorithm, polygon, &options, &pending);
+        rows.extend(algorithm_rows(
+            Model::Ortho(polygon),
+            &base,
+            Subject::Registered(algorithm),
+            algorithm.name,
+            &eval,
+        ));
+    }
+    rows
+}
+
 /// The exact row of one `[[exact]]` objective on a discrete instance.
 fn discrete_exact_row(inst: &Discrete, base: &Row, e: &ExactSpec, name: &str) -> Row {
     use crate::discrete::exact as dexact;
@@ -687,9 +769,11 @@ fn algorithm_rows<C>(
             row.valid = Some(c.valid);
             row.error = c.error.clone().unwrap_or_default();
             row.length = Some(c.length);
+            row.unit = (c.unit != 1).then_some(c.unit);
             row.turns = Some(c.turns);
             row.cycles = Some(c.cycles as u64);
-            row.max_coverage = Some(c.max_coverage);
+            // The exact checker of orthogonal polygons does not count visits.
+            row.max_coverage = (!matches!(model, Model::Ortho(_))).then_some(c.max_coverage);
             row.value = Some(c.value);
             row.opt = c.opt;
             row.opt_status = c.opt_status.clone();

@@ -26,12 +26,15 @@ mod erosion;
 mod generate;
 mod polygon;
 mod rational;
+mod registered;
 mod tour;
 
 pub use check::{Report, Violation, check, turn_cost};
 pub use corollary4::{Certificates, LowerBounds, corollary4, lower_bounds, walk_length};
 pub use erosion::{Erosion, Infeasible, feasibility, interior_pixels};
 pub use generate::{FAMILIES, generate};
+pub(crate) use polygon::lcm;
 pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
+pub use registered::COROLLARY4;
 pub use tour::{MAX_TOUR_POINTS, Tour};

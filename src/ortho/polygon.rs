@@ -147,6 +147,70 @@ impl Polygon {
         &self.rings
     }
 
+    /// Whether a coordinate is not an integer (a polygon that pixels cannot describe).
+    pub fn is_non_integral(&self) -> bool {
+        self.rings
+            .iter()
+            .flat_map(|r| &r.corners)
+            .any(|c| !c.x.is_integer() || !c.y.is_integer())
+    }
+
+    /// Whether `path` is a `.wkt` polygon with a coordinate that is not an integer (read
+    /// exactly): a file of this model rather than a pixel region.
+    pub fn is_ortho_file(path: &Path) -> bool {
+        path.extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("wkt"))
+            && Polygon::read(path).is_ok_and(|p| p.is_non_integral())
+    }
+
+    /// Whether it has a hole (an inner ring).
+    pub fn has_holes(&self) -> bool {
+        self.rings.iter().any(|r| r.hole)
+    }
+
+    /// The exact area: outer rings' shoelace areas minus the holes'.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] when the exact value overflows the rationals.
+    pub fn area(&self) -> Result<Rational> {
+        let overflow = || Error::invalid("the polygon's exact area overflows i128 rationals");
+        let mut area = Rational::ZERO;
+        for ring in &self.rings {
+            let m = ring.corners.len();
+            let mut twice = Rational::ZERO;
+            for i in 0..m {
+                let (a, b) = (ring.corners[i], ring.corners[(i + 1) % m]);
+                let cross = a
+                    .x
+                    .checked_mul(b.y)
+                    .zip(b.x.checked_mul(a.y))
+                    .and_then(|(p, q)| p.checked_sub(q))
+                    .ok_or_else(overflow)?;
+                twice = twice.checked_add(cross).ok_or_else(overflow)?;
+            }
+            let part = twice.abs().checked_mul(Rational::HALF).ok_or_else(overflow)?;
+            area = if ring.hole {
+                area.checked_sub(part)
+            } else {
+                area.checked_add(part)
+            }
+            .ok_or_else(overflow)?;
+        }
+        Ok(area)
+    }
+
+    /// The least common multiple of the denominators of all coordinates (1 for an integral
+    /// polygon); `None` when it overflows.
+    pub fn denominator(&self) -> Option<i128> {
+        let mut l: i128 = 1;
+        for p in self.rings.iter().flat_map(|r| &r.corners) {
+            for d in [p.x.denom(), p.y.denom()] {
+                l = lcm(l, d)?;
+            }
+        }
+        Some(l)
+    }
+
     /// The polygon as WKT (coordinates as [`Rational`] displays them, which
     /// [`Polygon::parse`] reads back exactly).
     pub fn to_wkt(&self) -> String {
@@ -287,4 +351,12 @@ mod tests {
         assert_eq!(p.to_wkt(), "POLYGON ((0 0, 1 0, 1 1, 2 1, 2 2, 0 2, 0 0))");
         assert_eq!(Point::pixel_centre(-1, 2).to_string(), "(-0.5, 2.5)");
     }
+}
+
+/// The least common multiple of two positive integers; `None` on overflow.
+pub(crate) fn lcm(a: i128, b: i128) -> Option<i128> {
+    fn gcd(a: i128, b: i128) -> i128 {
+        if b == 0 { a } else { gcd(b, a % b) }
+    }
+    (a / gcd(a, b)).checked_mul(b)
 }

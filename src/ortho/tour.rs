@@ -60,6 +60,61 @@ impl Tour {
     }
 
     /// The JSON text: the `tour` form for one cycle, the `cycles` form otherwise.
+    /// The walks as pixel walks, when every point is a pixel centre (x + ½, y + ½): each move
+    /// written out in unit moves, repeated points dropped, the closing move implied (the inverse
+    /// of [`Tour::from_cover`]). `None` when a point is not a pixel centre, a move is diagonal,
+    /// or a walk has more than [`MAX_TOUR_POINTS`] unit moves.
+    pub fn to_pixel_cover(&self) -> Option<CycleCover> {
+        use crate::region::Pixel;
+        let pixel = |p: Point| {
+            let cell = |v: super::Rational| {
+                let twice = v.checked_mul(super::Rational::from(2))?;
+                (twice.is_integer() && twice.numer().rem_euclid(2) == 1)
+                    .then(|| i32::try_from(v.floor()).ok())
+                    .flatten()
+            };
+            Some(Pixel::new(cell(p.x)?, cell(p.y)?))
+        };
+        let mut cycles = Vec::with_capacity(self.cycles.len());
+        for walk in &self.cycles {
+            let pixels: Vec<Pixel> = walk.iter().map(|&p| pixel(p)).collect::<Option<_>>()?;
+            let mut out: Vec<Pixel> = Vec::new();
+            for &to in &pixels {
+                let Some(&from) = out.last() else {
+                    out.push(to);
+                    continue;
+                };
+                if from.x != to.x && from.y != to.y {
+                    return None;
+                }
+                let steps = (to.x - from.x).abs().max((to.y - from.y).abs());
+                if out.len() + steps as usize > MAX_TOUR_POINTS {
+                    return None;
+                }
+                let (dx, dy) = ((to.x - from.x).signum(), (to.y - from.y).signum());
+                for k in 1..=steps {
+                    out.push(Pixel::new(from.x + k * dx, from.y + k * dy));
+                }
+            }
+            // The closing move back to the first point, written out too (without repeating it).
+            if let (Some(&last), Some(&first)) = (out.last(), out.first()) {
+                if last.x != first.x && last.y != first.y {
+                    return None;
+                }
+                let steps = (first.x - last.x).abs().max((first.y - last.y).abs());
+                let (dx, dy) = ((first.x - last.x).signum(), (first.y - last.y).signum());
+                for k in 1..steps {
+                    out.push(Pixel::new(last.x + k * dx, last.y + k * dy));
+                }
+            }
+            if out.len() > 1 && out.first() == out.last() {
+                out.pop();
+            }
+            cycles.push(out);
+        }
+        Some(CycleCover::new(cycles))
+    }
+
     pub fn to_json(&self) -> String {
         let file = if self.is_tour() {
             TourFile {

@@ -27,7 +27,9 @@
 //! undecided, never counted as holding.
 
 use super::{Standing, TightRow};
-use crate::algorithms::theorems::{Implementation, Measure, Paper, Realized, THEOREMS, Theorem};
+use crate::algorithms::theorems::{
+    Bound, Implementation, Measure, Paper, Realized, THEOREMS, Theorem,
+};
 use crate::algorithms::{Against, Algorithm, Objective, Quantity, REGISTRY, When};
 use crate::error::{Error, Result};
 use crate::harness::rows::{EXACT, Row};
@@ -207,6 +209,10 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
             // A lattice instance: the row carries its number of directions d.
             || (theorem.when == When::Lattice && r.d.is_some())
             || (theorem.when == When::NonTrivial && r.n >= 2)
+            // A simple polygon: a grid region or orthogonal polygon without holes.
+            || (theorem.when == When::Simple
+                && r.holes == 0
+                && matches!(r.model.as_str(), "" | "grid" | "ortho"))
             || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
                 a.guarantees
                     .iter()
@@ -276,11 +282,28 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row]) -> Measured<'a> {
                     Quantity::MaxCoverage => r.max_coverage,
                 };
                 let Some(q) = q else { continue };
+                // Lengths of orthogonal polygons are in units of 1/unit: so is the bound's
+                // constant (and N).
+                let on_length = b.quantity == Quantity::Length
+                    || (b.quantity == Quantity::Value && r.objective == Objective::Length.name());
+                let unit = r.unit.filter(|_| on_length).unwrap_or(1) as i64;
+                let b = Bound {
+                    add: b.add.saturating_mul(unit),
+                    num: if b.against == Against::N {
+                        b.num.saturating_mul(unit)
+                    } else {
+                        b.num
+                    },
+                    ..b
+                };
+                let ortho = r.model == "ortho";
                 // (x for the bound, proven?) where x is OPT, N or 1; a lower bound only decides
                 // when the claim holds against it.
                 let (x, lower) = match (b.against, b.quantity) {
                     (Against::N, _) => (Some(r.n), None),
                     (Against::One, _) => (Some(1), None),
+                    // No exact optimum of length, and N is no bound in the units of an ortho row.
+                    (Against::Opt, Quantity::Length) if ortho => (None, None),
                     (Against::Opt, Quantity::Length) => (
                         exact_opt
                             .get(&(r.instance.as_str(), Objective::Length.name()))

@@ -230,4 +230,5 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     precondition,
     run: |region, _| holes1325(region),
     discrete: None,
+    ortho: None,
 };

@@ -505,4 +505,5 @@ pub(crate) const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Al
     precondition,
     run: |region, _| milling25(region),
     discrete: None,
+    ortho: None,
 };

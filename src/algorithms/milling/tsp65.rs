@@ -798,6 +798,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     precondition,
     run: |region, _| tsp65(region),
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]

@@ -308,6 +308,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     precondition,
     run,
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]

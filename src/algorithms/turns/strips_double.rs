@@ -158,6 +158,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     precondition: crate::algorithms::precondition::connected,
     run,
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]

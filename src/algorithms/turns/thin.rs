@@ -225,6 +225,7 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
     precondition,
     run: run_cc,
     discrete: None,
+    ortho: None,
 };
 
 /// The registry entry of `thin-merge`: the optimal cycle cover of a thin pocket, merged free
@@ -290,6 +291,7 @@ pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
     precondition,
     run: run_merge,
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]

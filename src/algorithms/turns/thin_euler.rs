@@ -179,6 +179,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     precondition,
     run,
     discrete: None,
+    ortho: None,
 };
 
 #[cfg(test)]
