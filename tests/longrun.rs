@@ -275,8 +275,8 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let (full, old) = (dir.join("full"), dir.join("old"));
     assert_ok(&bench(&cfg, &full, &[]));
     assert_ok(&bench(&cfg, &old, &[]));
-    // Two older layouts: before the option columns (ending at `error`) and before the model
-    // columns (ending at `coverage4`). Drop the last columns (none of them holds a comma in a
+    // Three older layouts: before the option columns (ending at `error`), before the model
+    // columns (ending at `coverage4`) and before `unit` (ending at `direction_sum`). Drop the last columns (none of them holds a comma in a
     // quoted field: they are the last ones) and keep only the header and 6 rows.
     let path = old.join("results.csv");
     let text = std::fs::read_to_string(&path).unwrap();
@@ -292,23 +292,27 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
             })
             .collect()
     };
-    let old_text = cut_columns(&text, 10);
+    let old_text = cut_columns(&text, 11);
     assert!(old_text.lines().next().unwrap().ends_with(",error"));
-    let between = cut_columns(&text, 7);
+    let between = cut_columns(&text, 8);
     assert!(between.lines().next().unwrap().ends_with(",coverage4"));
-    let old2 = dir.join("old2");
-    std::fs::create_dir_all(&old2).unwrap();
-    for f in std::fs::read_dir(&old).unwrap() {
-        let f = f.unwrap().path();
-        if f.is_file() {
-            std::fs::copy(&f, old2.join(f.file_name().unwrap())).unwrap();
+    let before_unit = cut_columns(&text, 1);
+    assert!(before_unit.lines().next().unwrap().ends_with(",direction_sum"));
+    let (old2, old3) = (dir.join("old2"), dir.join("old3"));
+    for (copy, text) in [(&old2, &between), (&old3, &before_unit)] {
+        std::fs::create_dir_all(copy).unwrap();
+        for f in std::fs::read_dir(&old).unwrap() {
+            let f = f.unwrap().path();
+            if f.is_file() {
+                std::fs::copy(&f, copy.join(f.file_name().unwrap())).unwrap();
+            }
         }
+        std::fs::create_dir_all(copy.join("instances")).unwrap();
+        std::fs::write(copy.join("results.csv"), text).unwrap();
     }
-    std::fs::create_dir_all(old2.join("instances")).unwrap();
-    std::fs::write(old2.join("results.csv"), &between).unwrap();
     std::fs::write(&path, &old_text).unwrap();
 
-    for run in [&old, &old2] {
+    for run in [&old, &old2, &old3] {
         assert_ok(&mowmill_env(
             &["bench", "--resume", s(run), "--config", s(&cfg)],
             &[],
@@ -317,7 +321,9 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let header = std::fs::read_to_string(&path).unwrap();
     let header = header.lines().next().unwrap().to_string();
     assert!(
-        header.ends_with(",error,merge,cutter,coverage4,model,d,delta,mu,rho,edges,direction_sum"),
+        header.ends_with(
+            ",error,merge,cutter,coverage4,model,d,delta,mu,rho,edges,direction_sum,unit"
+        ),
         "{header}"
     );
     let rows = read_rows(&path).expect("every line has every column");
@@ -334,10 +340,12 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
                 rho: None,
                 edges: None,
                 direction_sum: None,
+                unit: None,
                 ..r
             })
             .collect()
     };
+    assert_eq!(no_options(comparable(&old3)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old2)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old)), no_options(comparable(&full)));
     // The rows run after the resume record their options.

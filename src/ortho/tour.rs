@@ -183,7 +183,43 @@ impl Tour {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ortho::Rational;
     use crate::region::Pixel;
+
+    #[test]
+    fn pixel_walks_come_back_in_unit_moves() {
+        // A 3 × 2 boustrophedon with long moves: written out in unit moves, the closing move
+        // implied.
+        let c = |x, y| Point::pixel_centre(x, y);
+        let tour = Tour::new(vec![c(0, 0), c(2, 0), c(2, 1), c(0, 1)]);
+        let cover = tour.to_pixel_cover().unwrap();
+        let p = |x, y| Pixel::new(x, y);
+        assert_eq!(
+            cover.cycles,
+            vec![vec![p(0, 0), p(1, 0), p(2, 0), p(2, 1), p(1, 1), p(0, 1)]]
+        );
+        // Round trip of a pixel cover, repeated points dropped.
+        let back = Tour::from_cover(&cover).to_pixel_cover().unwrap();
+        assert_eq!(back, cover);
+        let repeated = Tour::new(vec![c(0, 0), c(0, 0), c(1, 0)]);
+        assert_eq!(
+            repeated.to_pixel_cover().unwrap().cycles,
+            vec![vec![p(0, 0), p(1, 0)]]
+        );
+        // Not pixel centres, or a diagonal move: none.
+        let q = |a: i128, b: i128| Rational::new(a, b).unwrap();
+        assert!(
+            Tour::new(vec![Point::new(q(1, 4), q(1, 2))])
+                .to_pixel_cover()
+                .is_none()
+        );
+        assert!(Tour::new(vec![c(0, 0), c(1, 1)]).to_pixel_cover().is_none());
+        assert!(
+            Tour::new(vec![Point::new(q(1, 1), q(1, 2))])
+                .to_pixel_cover()
+                .is_none()
+        );
+    }
 
     #[test]
     fn json_round_trip() {

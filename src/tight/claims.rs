@@ -1262,6 +1262,11 @@ mod tests {
         assert!(
             row(theorems::MILLING_COR_4.id)
                 .implementation
+                .starts_with("reading: ")
+        );
+        assert!(
+            row(theorems::TURNS_THM_5_10.id)
+                .implementation
                 .starts_with("none: ")
         );
     }
