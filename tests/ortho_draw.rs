@@ -79,7 +79,7 @@ fn an_invalid_tour_gets_red_marks_at_the_witnesses() {
     assert!(low.contains("INVALID: the point (1.5, 1.25) of the polygon is not milled"));
     // The ring and the two strokes of the cross, at the witness and in the legend.
     assert_eq!(low.matches(WITNESS).count(), 6, "{low}");
-    assert!(low.contains("checker's witness"));
+    assert!(low.contains("witness"), "the legend");
     let high = svg_of(&p, &tour("1.25"));
     assert!(high.contains("outside the polygon"));
     assert!(high.matches(WITNESS).count() >= 6);
@@ -123,10 +123,7 @@ fn draw_on_a_non_integral_wkt_checks_and_draws_and_refuses_bad_tours() {
     );
     let svg = std::fs::read_to_string(&fig).unwrap();
     assert!(svg.contains(SWEPT_FILL) && svg.contains(CONTOUR) && svg.contains(BLUE));
-    assert!(
-        svg.contains(">l<") || svg.contains("l</text>"),
-        "title is the file stem"
-    );
+    assert!(svg.contains(">\nl\n</text>"), "the title is the file stem");
     assert!(svg.contains("valid") && !svg.contains("INVALID"));
 
     // A tour file that is not a tour, and one that does not exist: exit 2, naming the file.

@@ -57,13 +57,15 @@ const MARK_LIMIT: usize = 20_000;
 const LEGEND_PX: f64 = 15.0;
 const SWATCH_PX: f64 = 22.0;
 
-/// The caption of a figure: the checker's length (exact, and as a decimal when it is not an
-/// integer), turns and cycles, and `valid` or `INVALID: ` and the first violation.
+/// The caption of a figure: the checker's length (exact, and as a decimal when it is a
+/// fraction), turns and cycles, and `valid` or `INVALID: ` and the first violation.
 pub fn figure_caption(report: &Report) -> String {
-    let length = if report.length.is_integer() {
-        report.length.to_string()
+    let exact = report.length.to_string();
+    // A fraction gets its decimal value too; a decimal is shown as it is.
+    let length = if exact.contains('/') {
+        format!("{exact} ≈ {:.3}", report.length.to_f64())
     } else {
-        format!("{} ≈ {:.3}", report.length, report.length.to_f64())
+        exact
     };
     let verdict = match &report.error {
         None => "valid".to_string(),
@@ -519,16 +521,25 @@ impl Picture for Figure {
             for &[x0, x1, y0, y1] in &swept.rects {
                 area.draw(&Rectangle::new([at((x0, y1)), at((x1, y0))], style))?;
             }
+            for &[a, b] in &swept.outline {
+                stroke_segment(area, strokes, (at(a), at(b)), SWEPT, width(1.5))?;
+            }
         }
+        // Over the swept area's outline: where they agree (a valid tour), the polygon's shows.
         for ring in self.outer.iter().chain(&self.holes) {
             let corners = ring.iter().map(|&p| at(p));
             stroke_closed(area, strokes, corners, OUTLINE, width(2.0))?;
         }
-        if let Some(swept) = &self.swept {
-            for &[a, b] in &swept.outline {
-                stroke_segment(area, strokes, (at(a), at(b)), SWEPT, width(1.0))?;
+        for (i, walk) in self.walks.iter().enumerate() {
+            let colour = WALK_COLOURS[i % WALK_COLOURS.len()];
+            let corners = walk.line.iter().map(|&p| at(p));
+            stroke_closed(area, strokes, corners, colour, width(line_px))?;
+            if let Some(p) = walk.single {
+                let r = width((0.22 * ps).max(3.0));
+                area.draw(&Circle::new(at(p), r, colour.stroke_width(width(line_px))))?;
             }
         }
+        // Over the tour, which often runs along δB (Corollary 4 walks it).
         let (dash, gap) = ((6.0 * k) as i32, (4.0 * k) as i32);
         for walk in &self.contour {
             let mut path: Vec<(i32, i32)> = walk.iter().map(|&p| at(p)).collect();
@@ -538,15 +549,6 @@ impl Picture for Figure {
                 area.draw(&Circle::new(path[0], width(3.0), CONTOUR.filled()))?;
             } else {
                 area.draw(&DashedPathElement::new(path, dash, gap, style))?;
-            }
-        }
-        for (i, walk) in self.walks.iter().enumerate() {
-            let colour = WALK_COLOURS[i % WALK_COLOURS.len()];
-            let corners = walk.line.iter().map(|&p| at(p));
-            stroke_closed(area, strokes, corners, colour, width(line_px))?;
-            if let Some(p) = walk.single {
-                let r = width((0.22 * ps).max(3.0));
-                area.draw(&Circle::new(at(p), r, colour.stroke_width(width(line_px))))?;
             }
         }
         if self.mark_turns {
@@ -705,6 +707,18 @@ mod tests {
         assert_eq!(back.u_turns.len(), 2);
         let one = walk_shape(&tour(&[("0.5", "0.5"), ("0.5", "0.5")]).cycles[0]);
         assert_eq!(one.single, Some((0.5, 0.5)));
+    }
+
+    #[test]
+    fn the_frame_holds_the_polygon_and_the_cutter_beyond_it() {
+        // A pass at height 1.25 of a 3 × 1.5 rectangle sweeps up to 1.75, outside it.
+        let p = polygon("POLYGON ((0 0, 3 0, 3 1.5, 0 1.5, 0 0))");
+        let t = tour(&[("0.5", "1.25"), ("2.5", "1.25")]);
+        let f = Figure::new(&p, Some(&t), None, &DrawOptions::default()).unwrap();
+        assert_eq!(f.bounds, [0.0, 0.0, 3.0, 1.75]);
+        assert_eq!(f.pixel_size, MAX_AUTO_PIXEL_SIZE);
+        assert_eq!(f.witnesses.len(), 2, "unmilled below, swept outside above");
+        assert!(f.legend.contains(&Key::Witness) && !f.legend.contains(&Key::Contour));
     }
 
     #[test]
