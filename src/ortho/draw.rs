@@ -259,16 +259,17 @@ impl Swept {
             }
         }
         let mut outline = Vec::new();
-        for j in 0..=rows {
+        // A side of a cell is on the boundary when exactly one of its two cells is covered.
+        for (j, &y) in fy.iter().enumerate() {
             let differs = |i: usize| covered(i, j) != (j > 0 && covered(i, j - 1));
             for (a, b) in runs(cols, differs) {
-                outline.push([(fx[a], fy[j]), (fx[b], fy[j])]);
+                outline.push([(fx[a], y), (fx[b], y)]);
             }
         }
-        for i in 0..=cols {
+        for (i, &x) in fx.iter().enumerate() {
             let differs = |j: usize| covered(i, j) != (i > 0 && covered(i - 1, j));
             for (a, b) in runs(rows, differs) {
-                outline.push([(fx[i], fy[a]), (fx[i], fy[b])]);
+                outline.push([(x, fy[a]), (x, fy[b])]);
             }
         }
         Swept { rects, outline }
