@@ -159,20 +159,18 @@ pub fn draw(
         caption: opts.caption.as_deref(),
         layout,
     };
-    match format {
-        Format::Svg => write_svg(&scene, out),
-        Format::Png => write_png(&scene, out),
-    }
+    write_picture(&scene, format, out)
 }
 
+/// The picture formats, chosen by the output file's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Format {
+pub(crate) enum Format {
     Svg,
     Png,
 }
 
 impl Format {
-    fn of(out: &Path) -> Result<Format> {
+    pub(crate) fn of(out: &Path) -> Result<Format> {
         let ext = out.extension().map(|e| e.to_string_lossy().to_lowercase());
         match ext.as_deref() {
             Some("svg") => Ok(Format::Svg),
@@ -524,6 +522,15 @@ pub(crate) const PALETTE: [RGBColor; 8] = [
     RGBColor(0x6a, 0x3d, 0x9a), // purple
 ];
 
+/// The width of `text` in output pixels, in the bundled font at `size` px (0 without text;
+/// call [`ensure_fonts`] first).
+pub(crate) fn text_width(text: Option<&str>, size: f64) -> f64 {
+    text.map_or(0.0, |t| {
+        let font = FontDesc::new(FontFamily::from(FONT_FAMILY), size, FontStyle::Normal);
+        font.box_size(t).map_or(0.0, |(w, _)| f64::from(w))
+    })
+}
+
 /// Where the grid goes on the canvas.
 #[derive(Clone, Copy, Debug)]
 struct Layout {
@@ -553,12 +560,6 @@ impl Layout {
             frame.width() as f64 * pixel_size,
             frame.height() as f64 * pixel_size,
         );
-        let text_width = |text: Option<&str>, size: f64| {
-            text.map_or(0.0, |t| {
-                let font = FontDesc::new(FontFamily::from(FONT_FAMILY), size, FontStyle::Normal);
-                font.box_size(t).map_or(0.0, |(w, _)| f64::from(w))
-            })
-        };
         let wide = grid_w
             .max(text_width(opts.title.as_deref(), TITLE_PX))
             .max(text_width(opts.caption.as_deref(), CAPTION_PX));
@@ -612,7 +613,7 @@ struct Scene<'a> {
 
 /// How lines reach the backend.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Strokes {
+pub(crate) enum Strokes {
     /// One polyline per line: small SVG files that stay editable.
     Polylines,
     /// One filled rectangle per axis-parallel segment, with square ends so that right-angle
@@ -621,13 +622,13 @@ enum Strokes {
     Segments,
 }
 
-type DrawResult<DB> = std::result::Result<
+pub(crate) type DrawResult<DB> = std::result::Result<
     (),
     plotters::drawing::DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>,
 >;
 
 /// Strokes the segment from `a` to `b`, `w` backend pixels wide.
-fn stroke_segment<DB: DrawingBackend>(
+pub(crate) fn stroke_segment<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     strokes: Strokes,
     (a, b): ((i32, i32), (i32, i32)),
@@ -646,7 +647,7 @@ fn stroke_segment<DB: DrawingBackend>(
 }
 
 /// Strokes the closed polyline through `corners`, `w` backend pixels wide.
-fn stroke_closed<DB: DrawingBackend>(
+pub(crate) fn stroke_closed<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     strokes: Strokes,
     corners: impl Iterator<Item = (i32, i32)>,
@@ -682,137 +683,176 @@ fn stroke_closed<DB: DrawingBackend>(
     }
 }
 
-/// Draws the scene on `area`, whose size is the layout's times `k`.
-fn render<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    scene: &Scene,
-    k: f64,
-    strokes: Strokes,
-) -> DrawResult<DB> {
-    let l = &scene.layout;
-    let ps = l.pixel_size;
-    let at = |x: f64, y: f64| {
-        let (px, py) = l.point(x, y);
-        ((px * k).round() as i32, (py * k).round() as i32)
-    };
-    let lattice = |(x, y): (i32, i32)| at(f64::from(x), f64::from(y));
-    let width = |w: f64| ((w * k).round() as u32).max(1);
+impl Picture for Scene<'_> {
+    fn size(&self) -> (u32, u32) {
+        (self.layout.width, self.layout.height)
+    }
 
-    area.fill(&WHITE)?;
-    // Without grid lines (and, when small, without outline) the pixels need more contrast.
-    let fill = if scene.detailed {
-        REGION_FILL
-    } else {
-        PLAIN_REGION_FILL
-    };
-    for &[x0, x1, y0, y1] in &scene.rects {
-        let corners = [lattice((x0, y1)), lattice((x1, y0))];
-        area.draw(&Rectangle::new(corners, fill.filled()))?;
+    /// Below one output pixel per grid unit the SVG canvas is enlarged so that every pixel
+    /// keeps whole-number coordinates (SVG coordinates from plotters are integers).
+    fn svg_scale(&self) -> f64 {
+        (1.0 / self.layout.pixel_size).ceil().max(1.0)
     }
-    for &[a, b] in &scene.grid {
-        stroke_segment(
-            area,
-            strokes,
-            (lattice(a), lattice(b)),
-            GRID_LINE,
-            width(1.0),
-        )?;
-    }
-    if scene.detailed || ps >= 2.0 {
-        let w = width(if scene.detailed { 2.0 } else { 1.0 });
-        for contour in &scene.contours {
-            stroke_closed(
+
+    /// Draws the scene on `area`, whose size is the layout's times `k`.
+    fn render<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        k: f64,
+        strokes: Strokes,
+    ) -> DrawResult<DB> {
+        let scene = self;
+        let l = &scene.layout;
+        let ps = l.pixel_size;
+        let at = |x: f64, y: f64| {
+            let (px, py) = l.point(x, y);
+            ((px * k).round() as i32, (py * k).round() as i32)
+        };
+        let lattice = |(x, y): (i32, i32)| at(f64::from(x), f64::from(y));
+        let width = |w: f64| ((w * k).round() as u32).max(1);
+
+        area.fill(&WHITE)?;
+        // Without grid lines (and, when small, without outline) the pixels need more contrast.
+        let fill = if scene.detailed {
+            REGION_FILL
+        } else {
+            PLAIN_REGION_FILL
+        };
+        for &[x0, x1, y0, y1] in &scene.rects {
+            let corners = [lattice((x0, y1)), lattice((x1, y0))];
+            area.draw(&Rectangle::new(corners, fill.filled()))?;
+        }
+        for &[a, b] in &scene.grid {
+            stroke_segment(
                 area,
                 strokes,
-                // Lattice corners of drawable regions are far below 2^53: exact in f64.
-                contour.iter().map(|&(x, y)| at(x as f64, y as f64)),
-                OUTLINE,
-                w,
+                (lattice(a), lattice(b)),
+                GRID_LINE,
+                width(1.0),
             )?;
         }
-    }
-
-    let line_px = if scene.detailed {
-        (0.05 * ps).clamp(1.5, 3.0)
-    } else {
-        (0.25 * ps).clamp(1.0, 2.0)
-    };
-    for (i, walk) in scene.walks.iter().enumerate() {
-        let colour = PALETTE[i % PALETTE.len()];
-        let corners = walk.line.iter().map(|&(x, y)| at(x, y));
-        stroke_closed(area, strokes, corners, colour, width(line_px))?;
-        if let Some((x, y)) = walk.single {
-            let r = width((0.22 * ps).max(3.0));
-            area.draw(&Circle::new(
-                at(x, y),
-                r,
-                colour.stroke_width(width(line_px)),
-            ))?;
-        }
-    }
-    if scene.detailed && scene.mark_turns {
-        // Larger than half the strand gap, so the ring encloses the end of the hairpin.
-        let ring = width((0.15 * ps).clamp(4.0, 14.0));
-        let ring_line = width((line_px * 0.7).max(1.0));
-        for (i, walk) in scene.walks.iter().enumerate() {
-            let colour = PALETTE[i % PALETTE.len()];
-            for &(x, y) in &walk.u_turns {
-                // Filled first, so the hairpin's end disappears into a clean ring.
-                area.draw(&Circle::new(at(x, y), ring, REGION_FILL.filled()))?;
-                area.draw(&Circle::new(at(x, y), ring, colour.stroke_width(ring_line)))?;
+        if scene.detailed || ps >= 2.0 {
+            let w = width(if scene.detailed { 2.0 } else { 1.0 });
+            for contour in &scene.contours {
+                stroke_closed(
+                    area,
+                    strokes,
+                    // Lattice corners of drawable regions are far below 2^53: exact in f64.
+                    contour.iter().map(|&(x, y)| at(x as f64, y as f64)),
+                    OUTLINE,
+                    w,
+                )?;
             }
         }
-        // Dots last, so that no ring hides a turn.
-        let dot = width((0.07 * ps).clamp(2.5, 5.0));
+
+        let line_px = if scene.detailed {
+            (0.05 * ps).clamp(1.5, 3.0)
+        } else {
+            (0.25 * ps).clamp(1.0, 2.0)
+        };
         for (i, walk) in scene.walks.iter().enumerate() {
             let colour = PALETTE[i % PALETTE.len()];
-            for &(x, y) in &walk.turns {
-                area.draw(&Circle::new(at(x, y), dot, colour.filled()))?;
+            let corners = walk.line.iter().map(|&(x, y)| at(x, y));
+            stroke_closed(area, strokes, corners, colour, width(line_px))?;
+            if let Some((x, y)) = walk.single {
+                let r = width((0.22 * ps).max(3.0));
+                area.draw(&Circle::new(
+                    at(x, y),
+                    r,
+                    colour.stroke_width(width(line_px)),
+                ))?;
             }
         }
-    }
+        if scene.detailed && scene.mark_turns {
+            // Larger than half the strand gap, so the ring encloses the end of the hairpin.
+            let ring = width((0.15 * ps).clamp(4.0, 14.0));
+            let ring_line = width((line_px * 0.7).max(1.0));
+            for (i, walk) in scene.walks.iter().enumerate() {
+                let colour = PALETTE[i % PALETTE.len()];
+                for &(x, y) in &walk.u_turns {
+                    // Filled first, so the hairpin's end disappears into a clean ring.
+                    area.draw(&Circle::new(at(x, y), ring, REGION_FILL.filled()))?;
+                    area.draw(&Circle::new(at(x, y), ring, colour.stroke_width(ring_line)))?;
+                }
+            }
+            // Dots last, so that no ring hides a turn.
+            let dot = width((0.07 * ps).clamp(2.5, 5.0));
+            for (i, walk) in scene.walks.iter().enumerate() {
+                let colour = PALETTE[i % PALETTE.len()];
+                for &(x, y) in &walk.turns {
+                    area.draw(&Circle::new(at(x, y), dot, colour.filled()))?;
+                }
+            }
+        }
 
-    let centre_x = (f64::from(l.width) / 2.0 * k).round() as i32;
-    let font =
-        |size: f64| FontDesc::new(FontFamily::from(FONT_FAMILY), size * k, FontStyle::Normal);
-    if let Some(title) = scene.title {
-        let style = font(TITLE_PX)
-            .color(&TITLE_COLOUR)
-            .pos(Pos::new(HPos::Center, VPos::Top));
-        let y = (MARGIN_PX * k).round() as i32;
-        area.draw(&Text::new(title, (centre_x, y), style))?;
+        let centre_x = (f64::from(l.width) / 2.0 * k).round() as i32;
+        let font =
+            |size: f64| FontDesc::new(FontFamily::from(FONT_FAMILY), size * k, FontStyle::Normal);
+        if let Some(title) = scene.title {
+            let style = font(TITLE_PX)
+                .color(&TITLE_COLOUR)
+                .pos(Pos::new(HPos::Center, VPos::Top));
+            let y = (MARGIN_PX * k).round() as i32;
+            area.draw(&Text::new(title, (centre_x, y), style))?;
+        }
+        if let Some(caption) = scene.caption {
+            let style = font(CAPTION_PX)
+                .color(&CAPTION_COLOUR)
+                .pos(Pos::new(HPos::Center, VPos::Bottom));
+            let y = ((f64::from(l.height) - MARGIN_PX) * k).round() as i32;
+            area.draw(&Text::new(caption, (centre_x, y), style))?;
+        }
+        area.present()
     }
-    if let Some(caption) = scene.caption {
-        let style = font(CAPTION_PX)
-            .color(&CAPTION_COLOUR)
-            .pos(Pos::new(HPos::Center, VPos::Bottom));
-        let y = ((f64::from(l.height) - MARGIN_PX) * k).round() as i32;
-        area.draw(&Text::new(caption, (centre_x, y), style))?;
-    }
-    area.present()
 }
 
-/// Writes an SVG; below one output pixel per grid unit the canvas is enlarged so that every
-/// pixel keeps whole-number coordinates (SVG coordinates from plotters are integers).
-fn write_svg(scene: &Scene, out: &Path) -> Result<()> {
-    let k = (1.0 / scene.layout.pixel_size).ceil().max(1.0);
-    let size = (
-        scene.layout.width * k as u32,
-        scene.layout.height * k as u32,
-    );
+/// A picture drawn by plotters on any backend, written as SVG or PNG by [`write_picture`].
+pub(crate) trait Picture {
+    /// The canvas, in output pixels.
+    fn size(&self) -> (u32, u32);
+
+    /// How many times larger the SVG canvas is drawn (its coordinates are integers).
+    fn svg_scale(&self) -> f64 {
+        1.0
+    }
+
+    /// Draws the picture on `area`, whose size is [`size`](Picture::size) times `k`.
+    fn render<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        k: f64,
+        strokes: Strokes,
+    ) -> DrawResult<DB>;
+}
+
+/// Writes `picture` to `out` in `format`.
+pub(crate) fn write_picture(picture: &impl Picture, format: Format, out: &Path) -> Result<()> {
+    match format {
+        Format::Svg => std::fs::write(out, svg_string(picture)?).map_err(|e| Error::io(out, e)),
+        Format::Png => write_png(picture, out),
+    }
+}
+
+/// The picture as SVG text.
+pub(crate) fn svg_string(picture: &impl Picture) -> Result<String> {
+    let k = picture.svg_scale();
+    let (w, h) = picture.size();
+    let size = (w * k as u32, h * k as u32);
     let mut svg = String::new();
     {
         let area = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        render(&area, scene, k, Strokes::Polylines)
+        picture
+            .render(&area, k, Strokes::Polylines)
             .map_err(|e| Error::invalid(format!("drawing failed: {e}")))?;
     }
-    std::fs::write(out, svg).map_err(|e| Error::io(out, e))
+    Ok(svg)
 }
 
 /// Writes a PNG, drawn at up to 3× and scaled down, which smooths the lines and markers
 /// (plotters draws shapes without anti-aliasing).
-fn write_png(scene: &Scene, out: &Path) -> Result<()> {
-    let (w, h) = (scene.layout.width as usize, scene.layout.height as usize);
+fn write_png(picture: &impl Picture, out: &Path) -> Result<()> {
+    let (w, h) = picture.size();
+    let (w, h) = (w as usize, h as usize);
     let k = [3, 2, 1]
         .into_iter()
         .find(|k| w * h * k * k <= 16_000_000)
@@ -821,7 +861,8 @@ fn write_png(scene: &Scene, out: &Path) -> Result<()> {
     let mut big = vec![0u8; bw * bh * 3];
     {
         let area = BitMapBackend::with_buffer(&mut big, (bw as u32, bh as u32)).into_drawing_area();
-        render(&area, scene, k as f64, Strokes::Segments)
+        picture
+            .render(&area, k as f64, Strokes::Segments)
             .map_err(|e| Error::invalid(format!("drawing failed: {e}")))?;
     }
     let small = if k == 1 {

@@ -103,7 +103,8 @@ enum Command {
     /// Draw an instance, optionally with a tour over it, to SVG or PNG.
     Draw {
         /// Instance file (.grid, WKT, .poly or a .gg/.csv pixel list; discrete: .dm, .json,
-        /// .vox, .hex).
+        /// .vox, .hex; a .wkt with non-integral coordinates: the polygon, the area the tour
+        /// sweeps and δB).
         file: PathBuf,
         /// Tour file to draw over the region.
         #[arg(long)]
@@ -282,6 +283,12 @@ fn run(cli: Cli) -> Result<ExitCode> {
         } if cli::discrete::is_discrete(&file) => {
             cli::discrete::draw(&file, tour.as_deref(), &out, title)
         }
+        Command::Draw {
+            file,
+            tour,
+            out,
+            title,
+        } if cli::ortho::is_ortho(&file) => cli::ortho::draw(&file, tour.as_deref(), &out, title),
         Command::Draw {
             file,
             tour,

@@ -82,6 +82,31 @@ pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
     })
 }
 
+/// `draw` on an ortho polygon: the polygon, δB when it is feasible, and with `--tour` the
+/// area the tour sweeps and the tour, checked exactly (the caption is the checker's verdict,
+/// its witness points marked in red). A tour file that cannot be read is refused (exit 2).
+pub fn draw(
+    path: &Path,
+    tour: Option<&Path>,
+    out: &Path,
+    title: Option<String>,
+) -> Result<ExitCode> {
+    let polygon = Polygon::read(path)?;
+    let walk = tour.map(Tour::read).transpose()?;
+    let erosion = ortho::feasibility(&polygon).ok();
+    let name = path.file_stem().map_or_else(
+        || path.display().to_string(),
+        |s| s.to_string_lossy().into_owned(),
+    );
+    let opts = mowmill::draw::DrawOptions {
+        title: Some(title.unwrap_or(name)),
+        ..mowmill::draw::DrawOptions::default()
+    };
+    ortho::draw(&polygon, walk.as_ref(), erosion.as_ref(), out, &opts)?;
+    eprintln!("wrote {}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
 /// `solve --algo A` on an ortho polygon, for every registered algorithm with an ortho run
 /// (`corollary4`, `strips-contour`): its outputs go through the one pipeline
 /// ([`mowmill::evaluate::evaluate_ortho`]): checked by the exact checker, each against its proven
@@ -113,7 +138,9 @@ pub fn solve(path: &Path, algo: &str, tour_out: Option<&Path>, as_json: bool) ->
         return Err(Error::invalid(format!("{}: {algo}: {e}", path.display())).into());
     }
     if let Some((objective, why)) = eval.missing.first() {
-        return Err(Error::invalid(format!("{}: {algo}: {objective}: {why}", path.display())).into());
+        return Err(
+            Error::invalid(format!("{}: {algo}: {objective}: {why}", path.display())).into(),
+        );
     }
     let exact = |units: u64, unit: u64| {
         ortho::Rational::new(i128::from(units), i128::from(unit))

@@ -98,7 +98,7 @@ pub struct Report {
 
 /// The heading of the move from `a` to `b`: `Ok(None)` when they are equal, `Err` when the
 /// move is diagonal.
-fn heading(a: Point, b: Point) -> std::result::Result<Option<Dir>, ()> {
+pub(crate) fn heading(a: Point, b: Point) -> std::result::Result<Option<Dir>, ()> {
     use std::cmp::Ordering::*;
     match (b.x.cmp(&a.x), b.y.cmp(&a.y)) {
         (Equal, Equal) => Ok(None),

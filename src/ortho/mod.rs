@@ -13,6 +13,7 @@
 //! - [`feasibility`]: whether the polygon can be milled at all, the [`Erosion`] (the centre
 //!   positions, B in the paper) and its contour δB; [`interior_pixels`], the integer pixels
 //!   inside (R_N in Corollary 4's proof).
+//! - [`draw`], [`draw_svg`]: the figure of a polygon, a tour over it, the area it sweeps and δB.
 //!
 //! Conventions: the cutter is the axis-parallel unit square centred on the walk; pixel (x, y)
 //! of a [`Region`](crate::Region) is the unit square [x, x+1] × [y, y+1], its centre
@@ -22,6 +23,7 @@
 mod check;
 mod corollary4;
 mod cover;
+mod draw;
 mod erosion;
 mod generate;
 mod polygon;
@@ -31,6 +33,7 @@ mod tour;
 
 pub use check::{Report, Violation, check, turn_cost};
 pub use corollary4::{Certificates, LowerBounds, corollary4, lower_bounds, walk_length};
+pub use draw::{draw, draw_svg, figure_caption};
 pub use erosion::{Erosion, Infeasible, feasibility, interior_pixels};
 pub use generate::{FAMILIES, generate};
 pub(crate) use polygon::lcm;

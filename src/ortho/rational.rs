@@ -61,6 +61,11 @@ impl Rational {
         self.den
     }
 
+    /// The nearest `f64` (or one ulp off): for drawing only, never for deciding anything.
+    pub fn to_f64(self) -> f64 {
+        self.num as f64 / self.den as f64
+    }
+
     pub fn is_integer(self) -> bool {
         self.den == 1
     }
