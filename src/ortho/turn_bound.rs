@@ -268,11 +268,21 @@ fn forced_corner_turns(polygon: &Polygon, erosion: &Erosion) -> Result<u64> {
     // Forbidden headings (bits) at each point c(v).
     let mut forbidden: BTreeMap<Point, u8> = BTreeMap::new();
     for v in corners {
-        let cell_in = |sx: i8, sy: i8| match (beside(&pxs, v.x, sx), beside(&pys, v.y, sy)) {
-            (Some(x), Some(y)) => inside(&edges, Point::new(mid(v.x, x), mid(v.y, y))),
-            _ => false,
+        const QUADRANTS: [(i8, i8); 4] = [(1, 1), (-1, 1), (-1, -1), (1, -1)];
+        let cells =
+            QUADRANTS.map(
+                |(sx, sy)| match (beside(&pxs, v.x, sx), beside(&pys, v.y, sy)) {
+                    (Some(x), Some(y)) => inside(&edges, Point::new(mid(v.x, x), mid(v.y, y))),
+                    _ => false,
+                },
+            );
+        let cell_in = |sx: i8, sy: i8| {
+            cells[QUADRANTS
+                .iter()
+                .position(|&q| q == (sx, sy))
+                .expect("a quadrant")]
         };
-        for (sx, sy) in [(1, 1), (-1, 1), (-1, -1), (1, -1)] {
+        for (sx, sy) in QUADRANTS {
             if !cell_in(sx, sy) || cell_in(-sx, sy) || cell_in(sx, -sy) {
                 continue;
             }
@@ -298,29 +308,74 @@ struct Lines {
     runs: Vec<Vec<(u32, u32)>>,
 }
 
+/// Where a value w falls among sorted lines: `first`, the first doubled face meeting
+/// [w, ∞), `last`, the last one meeting (−∞, w] (`None` when there is none), and whether w lies
+/// within the outer lines (then `first` = `last` is w's own face).
+#[derive(Clone, Copy, Debug)]
+struct End {
+    first: Option<usize>,
+    last: Option<usize>,
+    within: bool,
+}
+
+fn end(lines: &[Rational], w: Rational) -> End {
+    let n = lines.len();
+    let k = lines.partition_point(|&l| l < w);
+    let first = if k == n {
+        None
+    } else if k == 0 || lines[k] == w {
+        Some(2 * k)
+    } else {
+        Some(2 * k - 1)
+    };
+    let m = lines.partition_point(|&l| l <= w);
+    let last = if m == 0 {
+        None
+    } else if lines[m - 1] == w || m == n {
+        Some(2 * (m - 1))
+    } else {
+        Some(2 * m - 1)
+    };
+    End {
+        first,
+        last,
+        within: k < n && m > 0,
+    }
+}
+
 /// The doubled indices `first..=last` of the faces of sorted `lines` that meet [lo, hi]
 /// (lo ≤ hi), or `None`.
+#[cfg(test)]
 fn faces_meeting(lines: &[Rational], lo: Rational, hi: Rational) -> Option<(usize, usize)> {
-    let n = lines.len();
-    let k = lines.partition_point(|&l| l < lo);
-    let first = if k == 0 {
-        0
-    } else if k == n {
-        return None;
-    } else if lines[k] == lo {
-        2 * k
-    } else {
-        2 * k - 1
-    };
-    let m = lines.partition_point(|&l| l <= hi);
-    let last = if m == 0 {
-        return None;
-    } else if lines[m - 1] == hi || m == n {
-        2 * (m - 1)
-    } else {
-        2 * m - 1
-    };
+    let (first, last) = (end(lines, lo).first?, end(lines, hi).last?);
     (first <= last).then_some((first, last))
+}
+
+/// One coordinate v of a witness point, with v + 1 and where v − ½ and v + ½ fall among the
+/// face lines of its axis.
+#[derive(Clone, Copy, Debug)]
+struct Coord {
+    v: Rational,
+    plus_one: Rational,
+    minus: End,
+    plus: End,
+}
+
+fn coord(lines: &[Rational], v: Rational) -> Coord {
+    Coord {
+        v,
+        plus_one: add(v, Rational::ONE),
+        minus: end(lines, sub(v, Rational::HALF)),
+        plus: end(lines, add(v, Rational::HALF)),
+    }
+}
+
+/// A candidate witness point with its coordinates placed among the face lines.
+#[derive(Clone, Copy, Debug)]
+struct Witness {
+    point: Point,
+    x: Coord,
+    y: Coord,
 }
 
 impl Lines {
@@ -354,30 +409,9 @@ impl Lines {
         }
     }
 
-    /// For `left` ≤ `right`: whether [left, right] (along) × {c} lies in B for some c in
-    /// [c0, c1] (across). For `left` > `right`: whether some point of B has its along
-    /// coordinate in [right, left] and its across coordinate in [c0, c1].
-    fn reaches(&self, left: Rational, right: Rational, c0: Rational, c1: Rational) -> bool {
-        let Some((r0, r1)) = faces_meeting(&self.across, c0, c1) else {
-            return false;
-        };
-        let segment = left <= right;
-        let (lo, hi) = if segment {
-            (left, right)
-        } else {
-            (right, left)
-        };
-        // B lies within the outer lines: a segment reaching beyond them is not in B.
-        let within = |v: Rational| {
-            self.along.first().is_some_and(|&f| f <= v)
-                && self.along.last().is_some_and(|&l| v <= l)
-        };
-        if segment && !(within(lo) && within(hi)) {
-            return false;
-        }
-        let Some((a, b)) = faces_meeting(&self.along, lo, hi) else {
-            return false;
-        };
+    /// Whether some row of faces r0..=r1 has B on all the faces a..=b (`segment`), or on
+    /// some face of a..=b (not `segment`). Runs are maximal, so "all" means within one run.
+    fn holds(&self, (r0, r1): (usize, usize), (a, b): (usize, usize), segment: bool) -> bool {
         let rows = self.runs.get(r0..=r1).unwrap_or(&[]);
         rows.iter().any(|runs| {
             // The first run ending after face a.
@@ -393,22 +427,39 @@ impl Lines {
     }
 }
 
-/// Whether one link of B along `lines`' axis has a band containing p and q, given as (along,
-/// across) coordinates (module docs, the exact test).
-fn shared_band(lines: &Lines, p: (Rational, Rational), q: (Rational, Rational)) -> bool {
-    let c0 = sub(p.1.max(q.1), Rational::HALF);
-    let c1 = add(p.1.min(q.1), Rational::HALF);
-    if c0 > c1 {
+/// Whether one segment of B along `lines`' axis has a band containing p and q, given by their
+/// along (`pa`, `qa`) and across (`pc`, `qc`) coordinates (module docs, the exact test).
+fn shared_band(lines: &Lines, (pa, pc): (&Coord, &Coord), (qa, qc): (&Coord, &Coord)) -> bool {
+    // The across interval [max − ½, min + ½] must be non-empty: |p_c − q_c| ≤ 1.
+    let (low, high) = if pc.v <= qc.v { (pc, qc) } else { (qc, pc) };
+    if high.v > low.plus_one {
         return false;
     }
-    let left = add(p.0.min(q.0), Rational::HALF);
-    let right = sub(p.0.max(q.0), Rational::HALF);
-    lines.reaches(left, right, c0, c1)
+    let (Some(r0), Some(r1)) = (high.minus.first, low.plus.last) else {
+        return false;
+    };
+    let (left, right) = if pa.v <= qa.v { (pa, qa) } else { (qa, pa) };
+    // L = left + ½ ≤ R = right − ½: the segment [L, R] must lie in B (within the outer lines,
+    // where each end has its own face); otherwise some point with along coordinate in [R, L].
+    let segment = left.plus_one <= right.v;
+    let faces = if segment {
+        if !(left.plus.within && right.minus.within) {
+            return false;
+        }
+        (left.plus.first, right.minus.first)
+    } else {
+        (right.minus.first, left.plus.last)
+    };
+    let (Some(a), Some(b)) = faces else {
+        return false;
+    };
+    r0 <= r1 && a <= b && lines.holds((r0, r1), (a, b), segment)
 }
 
 /// Whether some axis-parallel segment in B has a band containing both p and q.
-fn attacks(horizontal: &Lines, vertical: &Lines, p: Point, q: Point) -> bool {
-    shared_band(horizontal, (p.x, p.y), (q.x, q.y)) || shared_band(vertical, (p.y, p.x), (q.y, q.x))
+fn attacks(horizontal: &Lines, vertical: &Lines, p: &Witness, q: &Witness) -> bool {
+    shared_band(horizontal, (&p.x, &p.y), (&q.x, &q.y))
+        || shared_band(vertical, (&p.y, &p.x), (&q.y, &q.x))
 }
 
 /// Candidate values along one axis with P's coordinates `coords` (module docs): `level` 2
@@ -452,21 +503,27 @@ fn axis_values(coords: &[Rational], level: u8) -> Vec<Rational> {
 }
 
 /// The candidate witness points of P (module docs), at most `MAX_CANDIDATES` (2000).
-fn candidates(polygon: &Polygon, horizontal: &Lines) -> Vec<Point> {
+fn candidates(polygon: &Polygon, horizontal: &Lines) -> Vec<Witness> {
     let (pxs, pys) = polygon.coordinates();
-    let in_p = |p: Point| shared_band(horizontal, (p.x, p.y), (p.x, p.y));
     for level in [2, 1, 0] {
         let (xs, ys) = (axis_values(&pxs, level), axis_values(&pys, level));
         // Too large a grid to scan: try a coarser one (level 0 is always scanned).
         if level > 0 && xs.len() * ys.len() > 64 * MAX_CANDIDATES {
             continue;
         }
+        // x is placed among the x lines (horizontal.along), y among the y lines.
+        let xs: Vec<Coord> = xs.iter().map(|&x| coord(&horizontal.along, x)).collect();
+        let ys: Vec<Coord> = ys.iter().map(|&y| coord(&horizontal.across, y)).collect();
         let mut points = Vec::new();
-        'scan: for &y in &ys {
-            for &x in &xs {
-                let p = Point::new(x, y);
-                if in_p(p) {
-                    points.push(p);
+        'scan: for y in &ys {
+            for x in &xs {
+                // p ∈ P: the band of some point of B (a link of length 0) contains p.
+                if shared_band(horizontal, (x, y), (x, y)) {
+                    points.push(Witness {
+                        point: Point::new(x.v, y.v),
+                        x: *x,
+                        y: *y,
+                    });
                     if points.len() > MAX_CANDIDATES {
                         break 'scan;
                     }
@@ -483,12 +540,12 @@ fn candidates(polygon: &Polygon, horizontal: &Lines) -> Vec<Point> {
 
 /// A set of pairwise independent candidates: repeatedly the one attacked by the fewest
 /// remaining candidates, dropping those it attacks.
-fn rook_placement(candidates: &[Point], horizontal: &Lines, vertical: &Lines) -> Vec<Point> {
+fn rook_placement(candidates: &[Witness], horizontal: &Lines, vertical: &Lines) -> Vec<Point> {
     let n = candidates.len();
     let mut attacked_by: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for i in 0..n {
-        for j in i + 1..n {
-            if attacks(horizontal, vertical, candidates[i], candidates[j]) {
+    for (i, p) in candidates.iter().enumerate() {
+        for (j, q) in candidates.iter().enumerate().skip(i + 1) {
+            if attacks(horizontal, vertical, p, q) {
                 attacked_by[i].push(j);
                 attacked_by[j].push(i);
             }
@@ -498,7 +555,7 @@ fn rook_placement(candidates: &[Point], horizontal: &Lines, vertical: &Lines) ->
     let mut alive = vec![true; n];
     let mut rooks = Vec::new();
     while let Some(i) = (0..n).filter(|&i| alive[i]).min_by_key(|&i| (degree[i], i)) {
-        rooks.push(candidates[i]);
+        rooks.push(candidates[i].point);
         alive[i] = false;
         for &j in &attacked_by[i] {
             if alive[j] {
@@ -540,24 +597,171 @@ mod tests {
         assert_eq!(forced_turns(0b0101), 0); // E and W: straight through
     }
 
-    #[test]
-    fn diagonal_neighbours_share_a_band_in_open_space() {
-        let p = Polygon::parse("POLYGON ((0 0, 5 0, 5 5, 0 5, 0 0))", "t").unwrap();
-        let (xs, ys, rows) = face_grid(&p);
+    /// B's face grid both ways, and a witness at `p`.
+    fn grids(polygon: &Polygon) -> (Lines, Lines) {
+        let (xs, ys, rows) = face_grid(polygon);
         let h = Lines {
             along: xs,
             across: ys,
             runs: rows,
         };
         let v = h.transposed();
-        let pt = |x: i128, y: i128| Point::new(r(x, 4), r(y, 4));
+        (h, v)
+    }
+
+    fn witness(h: &Lines, p: Point) -> Witness {
+        Witness {
+            point: p,
+            x: coord(&h.along, p.x),
+            y: coord(&h.across, p.y),
+        }
+    }
+
+    #[test]
+    fn diagonal_neighbours_share_a_band_in_open_space() {
+        let p = Polygon::parse("POLYGON ((0 0, 5 0, 5 5, 0 5, 0 0))", "t").unwrap();
+        let (h, v) = grids(&p);
+        let pt = |x: i128, y: i128| witness(&h, Point::new(r(x, 4), r(y, 4)));
         // (½, ½) and (1½, 1½): the square centred at (1, 1) touches both.
-        assert!(attacks(&h, &v, pt(2, 2), pt(6, 6)));
+        assert!(attacks(&h, &v, &pt(2, 2), &pt(6, 6)));
         // More than 1 apart in both coordinates: independent.
-        assert!(!attacks(&h, &v, pt(0, 0), pt(5, 5)));
+        assert!(!attacks(&h, &v, &pt(0, 0), &pt(5, 5)));
         // Same row, far apart: one horizontal link covers both.
-        assert!(attacks(&h, &v, pt(2, 2), pt(18, 3)));
+        assert!(attacks(&h, &v, &pt(2, 2), &pt(18, 3)));
         // Outside P.
-        assert!(!shared_band(&h, (r(6, 1), r(1, 1)), (r(6, 1), r(1, 1))));
+        let out = pt(24, 4);
+        assert!(!shared_band(&h, (&out.x, &out.y), (&out.x, &out.y)));
+    }
+
+    /// Whether the closed box [x0, x1] × [y0, y1] (of positive area) lies in P: every cell of
+    /// P's coordinate grid meeting its interior is inside P (checked at the cell's centre).
+    fn box_in(
+        polygon: &Polygon,
+        (x0, x1): (Rational, Rational),
+        (y0, y1): (Rational, Rational),
+    ) -> bool {
+        let (pxs, pys) = polygon.coordinates();
+        let edges = polygon.vertical_edges();
+        if x0 < pxs[0] || y0 < pys[0] || x1 > *pxs.last().unwrap() || y1 > *pys.last().unwrap() {
+            return false;
+        }
+        pxs.windows(2).filter(|w| w[0] < x1 && w[1] > x0).all(|wx| {
+            pys.windows(2)
+                .filter(|w| w[0] < y1 && w[1] > y0)
+                .all(|wy| inside(&edges, Point::new(mid(wx[0], wx[1]), mid(wy[0], wy[1]))))
+        })
+    }
+
+    /// lo, hi, the `lines` between them and the midpoints of consecutive ones: a point of each
+    /// face of `lines` meeting [lo, hi].
+    fn samples(lines: &[Rational], lo: Rational, hi: Rational) -> Vec<Rational> {
+        let mut v: Vec<Rational> = lines
+            .iter()
+            .copied()
+            .filter(|&l| lo <= l && l <= hi)
+            .collect();
+        v.extend([lo, hi]);
+        v.sort_unstable();
+        v.dedup();
+        let mids: Vec<Rational> = v.windows(2).map(|w| mid(w[0], w[1])).collect();
+        v.extend(mids);
+        v
+    }
+
+    /// The module docs' definition of a shared band, by brute force over the faces, with the
+    /// boxes checked against the polygon itself (not the face grid); `swap` for vertical.
+    fn brute_band(polygon: &Polygon, h: &Lines, p: Point, q: Point, swap: bool) -> bool {
+        let (pa, pc, qa, qc) = if swap {
+            (p.y, p.x, q.y, q.x)
+        } else {
+            (p.x, p.y, q.x, q.y)
+        };
+        let (along, across) = if swap {
+            (&h.across, &h.along)
+        } else {
+            (&h.along, &h.across)
+        };
+        let (c0, c1) = (
+            sub(pc.max(qc), Rational::HALF),
+            add(pc.min(qc), Rational::HALF),
+        );
+        if c0 > c1 {
+            return false;
+        }
+        let (left, right) = (
+            add(pa.min(qa), Rational::HALF),
+            sub(pa.max(qa), Rational::HALF),
+        );
+        let spans: Vec<(Rational, Rational)> = if left <= right {
+            vec![(left, right)]
+        } else {
+            samples(along, right, left)
+                .into_iter()
+                .map(|x| (x, x))
+                .collect()
+        };
+        samples(across, c0, c1).into_iter().any(|c| {
+            spans.iter().any(|&(a, b)| {
+                let (sa, sc) = (
+                    (sub(a, Rational::HALF), add(b, Rational::HALF)),
+                    (sub(c, Rational::HALF), add(c, Rational::HALF)),
+                );
+                if swap {
+                    box_in(polygon, sc, sa)
+                } else {
+                    box_in(polygon, sa, sc)
+                }
+            })
+        })
+    }
+
+    #[test]
+    fn shared_bands_agree_with_brute_force() {
+        let polygons = [
+            "POLYGON ((0 0, 4 0, 4 1.5, 0 1.5, 0 0))",
+            "POLYGON ((0.25 0, 1.25 0, 1.25 2.5, 3.5 2.5, 3.5 4, 0.25 4, 0.25 0))",
+            "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 2 1, 2 2, 1 2, 1 1), (2 2, 3 2, 3 3, 2 3, 2 2))",
+            "POLYGON ((0 0, 5 0, 5 3.5, 3.75 3.5, 3.75 1.2, 2.7 1.2, 2.7 3, 1.3 3, 1.3 1.2, 0 1.2, 0 0))",
+        ];
+        for text in polygons {
+            let polygon = Polygon::parse(text, "t").unwrap();
+            let (h, v) = grids(&polygon);
+            let (pxs, pys) = polygon.coordinates();
+            let grid = |c: &[Rational]| -> Vec<Rational> {
+                let (lo, hi) = (c[0].floor(), c.last().unwrap().ceil());
+                (4 * lo..=4 * hi)
+                    .map(|k| r(k, 4))
+                    .chain(c.iter().copied())
+                    .collect()
+            };
+            let points: Vec<Point> = grid(&pys)
+                .into_iter()
+                .step_by(2)
+                .flat_map(|y| {
+                    grid(&pxs)
+                        .into_iter()
+                        .step_by(3)
+                        .map(move |x| Point::new(x, y))
+                })
+                .collect();
+            let mut attacked = 0;
+            for (i, &p) in points.iter().enumerate() {
+                let wp = witness(&h, p);
+                for &q in &points[i..] {
+                    let wq = witness(&h, q);
+                    let fast = (
+                        shared_band(&h, (&wp.x, &wp.y), (&wq.x, &wq.y)),
+                        shared_band(&v, (&wp.y, &wp.x), (&wq.y, &wq.x)),
+                    );
+                    let slow = (
+                        brute_band(&polygon, &h, p, q, false),
+                        brute_band(&polygon, &h, p, q, true),
+                    );
+                    assert_eq!(fast, slow, "{text}: {p} {q}");
+                    attacked += usize::from(fast.0 || fast.1);
+                }
+            }
+            assert!(attacked > 0, "{text}");
+        }
     }
 }
