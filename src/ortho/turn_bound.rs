@@ -351,22 +351,41 @@ fn faces_meeting(lines: &[Rational], lo: Rational, hi: Rational) -> Option<(usiz
     (first <= last).then_some((first, last))
 }
 
-/// One coordinate v of a witness point, with v + 1 and where v − ½ and v + ½ fall among the
-/// face lines of its axis.
+/// One coordinate v of a witness point: where v − ½ and v + ½ fall among the face lines of its
+/// axis, and the ranks of v and v + 1 among all such values of the points compared (so the
+/// pair tests compare integers; see [`rank`]).
 #[derive(Clone, Copy, Debug)]
 struct Coord {
     v: Rational,
-    plus_one: Rational,
     minus: End,
     plus: End,
+    at: u32,
+    at_plus_one: u32,
 }
 
+/// The coordinate `v` placed among `lines`, not yet ranked.
 fn coord(lines: &[Rational], v: Rational) -> Coord {
     Coord {
         v,
-        plus_one: add(v, Rational::ONE),
         minus: end(lines, sub(v, Rational::HALF)),
         plus: end(lines, add(v, Rational::HALF)),
+        at: 0,
+        at_plus_one: 0,
+    }
+}
+
+/// Ranks v and v + 1 of `coords` (one axis) among all of them, so that comparisons between
+/// them and with each other's v + 1 are exact integer comparisons.
+fn rank(coords: &mut [Coord]) {
+    let mut values: Vec<Rational> = coords
+        .iter()
+        .flat_map(|c| [c.v, add(c.v, Rational::ONE)])
+        .collect();
+    values.sort_unstable();
+    values.dedup();
+    let at = |v: Rational| values.partition_point(|&w| w < v) as u32;
+    for c in coords {
+        (c.at, c.at_plus_one) = (at(c.v), at(add(c.v, Rational::ONE)));
     }
 }
 
@@ -431,17 +450,17 @@ impl Lines {
 /// along (`pa`, `qa`) and across (`pc`, `qc`) coordinates (module docs, the exact test).
 fn shared_band(lines: &Lines, (pa, pc): (&Coord, &Coord), (qa, qc): (&Coord, &Coord)) -> bool {
     // The across interval [max − ½, min + ½] must be non-empty: |p_c − q_c| ≤ 1.
-    let (low, high) = if pc.v <= qc.v { (pc, qc) } else { (qc, pc) };
-    if high.v > low.plus_one {
+    let (low, high) = if pc.at <= qc.at { (pc, qc) } else { (qc, pc) };
+    if high.at > low.at_plus_one {
         return false;
     }
     let (Some(r0), Some(r1)) = (high.minus.first, low.plus.last) else {
         return false;
     };
-    let (left, right) = if pa.v <= qa.v { (pa, qa) } else { (qa, pa) };
+    let (left, right) = if pa.at <= qa.at { (pa, qa) } else { (qa, pa) };
     // L = left + ½ ≤ R = right − ½: the segment [L, R] must lie in B (within the outer lines,
     // where each end has its own face); otherwise some point with along coordinate in [R, L].
-    let segment = left.plus_one <= right.v;
+    let segment = left.at_plus_one <= right.at;
     let faces = if segment {
         if !(left.plus.within && right.minus.within) {
             return false;
@@ -512,8 +531,10 @@ fn candidates(polygon: &Polygon, horizontal: &Lines) -> Vec<Witness> {
             continue;
         }
         // x is placed among the x lines (horizontal.along), y among the y lines.
-        let xs: Vec<Coord> = xs.iter().map(|&x| coord(&horizontal.along, x)).collect();
-        let ys: Vec<Coord> = ys.iter().map(|&y| coord(&horizontal.across, y)).collect();
+        let mut xs: Vec<Coord> = xs.iter().map(|&x| coord(&horizontal.along, x)).collect();
+        let mut ys: Vec<Coord> = ys.iter().map(|&y| coord(&horizontal.across, y)).collect();
+        rank(&mut xs);
+        rank(&mut ys);
         let mut points = Vec::new();
         'scan: for y in &ys {
             for x in &xs {
@@ -609,28 +630,39 @@ mod tests {
         (h, v)
     }
 
-    fn witness(h: &Lines, p: Point) -> Witness {
-        Witness {
-            point: p,
-            x: coord(&h.along, p.x),
-            y: coord(&h.across, p.y),
-        }
+    /// Witnesses at `points`, ranked together.
+    fn witnesses(h: &Lines, points: &[Point]) -> Vec<Witness> {
+        let mut xs: Vec<Coord> = points.iter().map(|p| coord(&h.along, p.x)).collect();
+        let mut ys: Vec<Coord> = points.iter().map(|p| coord(&h.across, p.y)).collect();
+        rank(&mut xs);
+        rank(&mut ys);
+        (0..points.len())
+            .map(|k| Witness {
+                point: points[k],
+                x: xs[k],
+                y: ys[k],
+            })
+            .collect()
     }
 
     #[test]
     fn diagonal_neighbours_share_a_band_in_open_space() {
         let p = Polygon::parse("POLYGON ((0 0, 5 0, 5 5, 0 5, 0 0))", "t").unwrap();
         let (h, v) = grids(&p);
-        let pt = |x: i128, y: i128| witness(&h, Point::new(r(x, 4), r(y, 4)));
+        let quarters = [(2, 2), (6, 6), (0, 0), (5, 5), (18, 3), (24, 4)];
+        let points: Vec<Point> = quarters
+            .iter()
+            .map(|&(x, y)| Point::new(r(x, 4), r(y, 4)))
+            .collect();
+        let w = witnesses(&h, &points);
         // (½, ½) and (1½, 1½): the square centred at (1, 1) touches both.
-        assert!(attacks(&h, &v, &pt(2, 2), &pt(6, 6)));
+        assert!(attacks(&h, &v, &w[0], &w[1]));
         // More than 1 apart in both coordinates: independent.
-        assert!(!attacks(&h, &v, &pt(0, 0), &pt(5, 5)));
+        assert!(!attacks(&h, &v, &w[2], &w[3]));
         // Same row, far apart: one horizontal link covers both.
-        assert!(attacks(&h, &v, &pt(2, 2), &pt(18, 3)));
+        assert!(attacks(&h, &v, &w[0], &w[4]));
         // Outside P.
-        let out = pt(24, 4);
-        assert!(!shared_band(&h, (&out.x, &out.y), (&out.x, &out.y)));
+        assert!(!shared_band(&h, (&w[5].x, &w[5].y), (&w[5].x, &w[5].y)));
     }
 
     /// Whether the closed box [x0, x1] × [y0, y1] (of positive area) lies in P: every cell of
@@ -745,10 +777,9 @@ mod tests {
                 })
                 .collect();
             let mut attacked = 0;
-            for (i, &p) in points.iter().enumerate() {
-                let wp = witness(&h, p);
-                for &q in &points[i..] {
-                    let wq = witness(&h, q);
+            let all = witnesses(&h, &points);
+            for (i, (&p, wp)) in points.iter().zip(&all).enumerate() {
+                for (&q, wq) in points[i..].iter().zip(&all[i..]) {
                     let fast = (
                         shared_band(&h, (&wp.x, &wp.y), (&wq.x, &wq.y)),
                         shared_band(&v, (&wp.y, &wp.x), (&wq.y, &wq.x)),
