@@ -83,7 +83,7 @@
 //! attacked candidate first, minimum degree in the attack graph). Candidates are the points of
 //! P on a grid whose lines along each axis are P's coordinates c, c ± ½, c ± 1, the midpoints
 //! between consecutive ones, and a fill at spacing ¼ in the gaps between them. At most
-//! `MAX_CANDIDATES` (2000) are tried: when there are more, the fill is dropped, then the midpoints,
+//! `MAX_CANDIDATES` (1000) are tried: when there are more, the fill is dropped, then the midpoints,
 //! and finally the first candidates in lexicographic (y, x) order are kept; fewer candidates
 //! only weaken the bound, never invalidate it.
 //!
@@ -91,7 +91,7 @@
 //!
 //! O(n·v) for the corners (v corners, n vertical edges), O(F) to transpose B's face grid (F
 //! faces in B, O(X·Y) as for [`feasibility`](super::feasibility)), and O(C²·r) for the attack
-//! graph of C ≤ `MAX_CANDIDATES` (2000) candidates (r: the face rows within a unit interval).
+//! graph of C ≤ `MAX_CANDIDATES` (1000) candidates (r: the face rows within a unit interval).
 
 use super::erosion::{Erosion, face_grid};
 use super::polygon::{Point, Polygon, VerticalEdge};
@@ -101,7 +101,7 @@ use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// The most candidate witness points [`turn_lower_bound`] tries for rooks (module docs).
-const MAX_CANDIDATES: usize = 2000;
+const MAX_CANDIDATES: usize = 1000;
 
 /// Lower bounds on the turns of any cycle cover (hence any tour) milling a polygon, each proven
 /// in the module docs.
@@ -521,7 +521,7 @@ fn axis_values(coords: &[Rational], level: u8) -> Vec<Rational> {
     values
 }
 
-/// The candidate witness points of P (module docs), at most `MAX_CANDIDATES` (2000).
+/// The candidate witness points of P (module docs), at most `MAX_CANDIDATES` (1000).
 fn candidates(polygon: &Polygon, horizontal: &Lines) -> Vec<Witness> {
     let (pxs, pys) = polygon.coordinates();
     for level in [2, 1, 0] {
