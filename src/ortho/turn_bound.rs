@@ -93,7 +93,7 @@
 //! faces in B, O(X·Y) as for [`feasibility`](super::feasibility)), and O(C²·r) for the attack
 //! graph of C ≤ `MAX_CANDIDATES` (1000) candidates (r: the face rows within a unit interval).
 
-use super::erosion::{Erosion, face_grid};
+use super::erosion::{Erosion, Faces, face_grid};
 use super::polygon::{Point, Polygon, VerticalEdge};
 use super::rational::Rational;
 use crate::error::{Error, Result};
@@ -166,7 +166,7 @@ impl TurnBound {
 /// ```
 pub fn turn_lower_bound(polygon: &Polygon, erosion: &Erosion) -> Result<TurnBound> {
     let convex_corners = forced_corner_turns(polygon, erosion)?;
-    let (xs, ys, rows) = face_grid(polygon);
+    let Faces { xs, ys, rows } = face_grid(polygon);
     let horizontal = Lines {
         along: xs,
         across: ys,
@@ -620,7 +620,7 @@ mod tests {
 
     /// B's face grid both ways, and a witness at `p`.
     fn grids(polygon: &Polygon) -> (Lines, Lines) {
-        let (xs, ys, rows) = face_grid(polygon);
+        let Faces { xs, ys, rows } = face_grid(polygon);
         let h = Lines {
             along: xs,
             across: ys,
