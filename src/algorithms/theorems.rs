@@ -657,8 +657,7 @@ pub static TURNS_THM_5_3: Theorem = Theorem {
 };
 
 /// Until `strips-contour` is registered (issue 18).
-const STRIPS_CONTOUR_PENDING: &str =
-    "not yet registered: the Theorem 5.7 algorithm (strips-contour) is being written";
+const STRIPS_CONTOUR_PENDING: &str = "not yet registered: the Theorem 5.7 algorithm (strips-contour) is being written";
 
 pub static TURNS_THM_5_7: Theorem = Theorem {
     paper: TurnCost,
