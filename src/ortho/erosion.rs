@@ -309,11 +309,18 @@ pub fn feasibility(polygon: &Polygon) -> Result<Erosion, Infeasible> {
     })
 }
 
+/// The whole erosion, every piece (an [`Erosion`] keeps only the piece that mills): the face
+/// lines x and y and, per doubled row, the maximal runs `start..end` of doubled x faces in B.
+/// For bounds over cycle covers, whose walks may use any piece.
+pub(crate) fn face_grid(polygon: &Polygon) -> Faces {
+    faces(polygon)
+}
+
 /// The whole erosion (all pieces): the face lines and the runs of faces per doubled row.
-struct Faces {
-    xs: Vec<Rational>,
-    ys: Vec<Rational>,
-    rows: Vec<Vec<Run>>,
+pub(crate) struct Faces {
+    pub(crate) xs: Vec<Rational>,
+    pub(crate) ys: Vec<Rational>,
+    pub(crate) rows: Vec<Vec<Run>>,
 }
 
 fn faces(polygon: &Polygon) -> Faces {

@@ -30,6 +30,7 @@ mod polygon;
 mod rational;
 mod registered;
 mod tour;
+mod turn_bound;
 
 pub use check::{Report, Violation, check, turn_cost};
 pub use corollary4::{Certificates, LowerBounds, corollary4, lower_bounds, walk_length};
@@ -41,3 +42,4 @@ pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
 pub use registered::COROLLARY4;
 pub use tour::{MAX_TOUR_POINTS, Tour};
+pub use turn_bound::{TurnBound, turn_lower_bound};
