@@ -79,7 +79,10 @@ fn run(polygon: &Polygon, what: &str, stats: &mut Stats) -> Option<(u64, u64)> {
     assert!(tour.turns <= bound, "{what}: {} > {bound}", tour.turns);
     // Proven lower bound.
     assert_eq!(c.lower_bound, corner_lower_bound(polygon));
-    assert!(cc.turns >= c.lower_bound && tour.turns >= c.lower_bound, "{what}");
+    assert!(
+        cc.turns >= c.lower_bound && tour.turns >= c.lower_bound,
+        "{what}"
+    );
     let lb = c.lower_bound as f64;
     stats.polygons += 1;
     stats.cc.push(cc.turns as f64 / lb);
@@ -181,7 +184,10 @@ fn against_exact_optima_on_small_regions() {
         }
         let (opt_cc, opt_tour) = (opt_cc.value.unwrap(), opt_tour.value.unwrap());
         let lb = corner_lower_bound(&polygon);
-        assert!(lb <= opt_cc && opt_cc <= opt_tour, "{what}: {lb} {opt_cc} {opt_tour}");
+        assert!(
+            lb <= opt_cc && opt_cc <= opt_tour,
+            "{what}: {lb} {opt_cc} {opt_tour}"
+        );
         assert!(opt_cc <= cc && opt_tour <= tour, "{what}");
         cc_ratios.push(cc as f64 / opt_cc as f64);
         tour_ratios.push(tour as f64 / opt_tour as f64);

@@ -113,7 +113,9 @@ pub fn solve(path: &Path, algo: &str, tour_out: Option<&Path>, as_json: bool) ->
         return Err(Error::invalid(format!("{}: {algo}: {e}", path.display())).into());
     }
     if let Some((objective, why)) = eval.missing.first() {
-        return Err(Error::invalid(format!("{}: {algo}: {objective}: {why}", path.display())).into());
+        return Err(
+            Error::invalid(format!("{}: {algo}: {objective}: {why}", path.display())).into(),
+        );
     }
     let exact = |units: u64, unit: u64| {
         ortho::Rational::new(i128::from(units), i128::from(unit))

@@ -9,8 +9,8 @@
 //! proven lower bounds, and against exact optima on grid regions.
 
 use super::corollary4::corollary4;
-use super::strips_contour::strips_contour;
 use super::polygon::Polygon;
+use super::strips_contour::strips_contour;
 use super::tour::Tour;
 use crate::algorithms::theorems::{self, Claim};
 use crate::algorithms::{Algorithm, Objective, Options, Output, Solution};
@@ -138,14 +138,23 @@ fn ortho_strips_contour(polygon: &Polygon, options: &Options) -> Result<Solution
         ("components_kept".to_string(), c.components_kept as i64),
         ("strips".to_string(), c.strips as i64),
         ("matching_turns".to_string(), c.matching_turns as i64),
-        ("matching_optimal".to_string(), i64::from(c.matching_optimal)),
+        (
+            "matching_optimal".to_string(),
+            i64::from(c.matching_optimal),
+        ),
         ("interior_cycles".to_string(), c.interior_cycles as i64),
         ("interior_cc_turns".to_string(), c.interior_cc_turns as i64),
-        ("interior_tour_turns".to_string(), c.interior_tour_turns as i64),
+        (
+            "interior_tour_turns".to_string(),
+            c.interior_tour_turns as i64,
+        ),
         ("contour_walks".to_string(), c.contour_walks as i64),
         ("contour_kept".to_string(), c.contour_kept as i64),
         ("contour_turns".to_string(), c.contour_turns as i64),
-        ("tour_contour_turns".to_string(), c.tour_contour_turns as i64),
+        (
+            "tour_contour_turns".to_string(),
+            c.tour_contour_turns as i64,
+        ),
         ("rejoined".to_string(), c.rejoined as i64),
         ("links".to_string(), c.links as i64),
         ("link_turns".to_string(), c.link_turns),

@@ -134,6 +134,13 @@ pub struct StripsContour {
     pub certificates: Certificates,
 }
 
+/// A grid component of R_N with `strips-matching`'s cycle cover and merged tour of it.
+struct Component {
+    pixels: Vec<Pixel>,
+    cover: Vec<Vec<Point>>,
+    tour: Vec<Point>,
+}
+
 /// The turn cost of a closed walk, counted as the checker counts it.
 pub fn walk_turns(walk: &[Point]) -> u64 {
     let m = walk.len();
@@ -224,8 +231,7 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
     // Step 2: strips-matching on each component.
     let strips_matching = algorithms::find("strips-matching").expect("registered");
     let (mut strips, mut matching_turns, mut matching_optimal) = (0usize, 0u64, true);
-    // Per component: its pixels, its cycle cover, its merged tour.
-    let mut components: Vec<(Vec<Pixel>, Vec<Vec<Point>>, Vec<Point>)> = Vec::new();
+    let mut components: Vec<Component> = Vec::new();
     for k in 0..labels.count {
         let pixels: Vec<Pixel> = (0..region.len())
             .filter(|&i| labels.label[i] as usize == k)
@@ -251,7 +257,11 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         if tour.len() != 1 {
             return Err(Error::invalid("strips-matching returned no single tour"));
         }
-        components.push((pixels, cover, tour.remove(0)));
+        components.push(Component {
+            pixels,
+            cover,
+            tour: tour.remove(0),
+        });
     }
 
     // Step 3: drop what the rest makes unnecessary, most turns first.
@@ -259,14 +269,14 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
     let nc = components.len();
     let turns_of = |item: usize| -> u64 {
         if item < nc {
-            components[item].1.iter().map(|w| walk_turns(w)).sum()
+            components[item].cover.iter().map(|w| walk_turns(w)).sum()
         } else {
             walk_turns(&contour[item - nc])
         }
     };
     let cycles_of = |item: usize| -> Vec<Vec<Point>> {
         if item < nc {
-            components[item].1.clone()
+            components[item].cover.clone()
         } else {
             vec![contour[item - nc].clone()]
         }
@@ -305,12 +315,12 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         let kept_region = Region::from_pixels(
             kept_components
                 .iter()
-                .flat_map(|&k| components[k].0.iter().copied()),
+                .flat_map(|&k| components[k].pixels.iter().copied()),
         )?;
         let walk_of: std::collections::HashMap<Pixel, usize> = kept_components
             .iter()
             .enumerate()
-            .flat_map(|(j, &k)| components[k].0.iter().map(move |&p| (p, j)))
+            .flat_map(|(j, &k)| components[k].pixels.iter().map(move |&p| (p, j)))
             .collect();
         let component_of = |p: Pixel| walk_of[&p];
         let walks: Vec<Vec<Point>> = (0..contour.len())
@@ -319,7 +329,7 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             .collect();
         let tours: Vec<Vec<Point>> = kept_components
             .iter()
-            .map(|&k| components[k].2.clone())
+            .map(|&k| components[k].tour.clone())
             .collect();
         match join(&kept_region, &component_of, tours, walks, Rank::Turns) {
             Ok(j) => {
@@ -343,10 +353,10 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         matching_optimal,
         interior_cycles: (0..nc)
             .filter(|&k| keep[k])
-            .map(|k| components[k].1.len())
+            .map(|k| components[k].cover.len())
             .sum(),
         interior_cc_turns: sum(0..nc, &keep, &turns_of),
-        interior_tour_turns: sum(0..nc, &used, &|k| walk_turns(&components[k].2)),
+        interior_tour_turns: sum(0..nc, &used, &|k| walk_turns(&components[k].tour)),
         contour_walks: contour.len(),
         contour_kept: (nc..keep.len()).filter(|&i| keep[i]).count(),
         contour_turns: sum(nc..keep.len(), &keep, &turns_of),
@@ -369,12 +379,12 @@ mod tests {
 
     #[test]
     fn convex_corners_of_an_l_and_a_holed_square() {
-        let l = Polygon::parse("POLYGON ((0 0, 3 0, 3 1.5, 1.5 1.5, 1.5 3, 0 3, 0 0))", "l")
-            .unwrap();
+        let l =
+            Polygon::parse("POLYGON ((0 0, 3 0, 3 1.5, 1.5 1.5, 1.5 3, 0 3, 0 0))", "l").unwrap();
         assert_eq!(corner_lower_bound(&l), 5);
         // Clockwise outer ring: the same count.
-        let l_cw = Polygon::parse("POLYGON ((0 0, 0 3, 1.5 3, 1.5 1.5, 3 1.5, 3 0, 0 0))", "l")
-            .unwrap();
+        let l_cw =
+            Polygon::parse("POLYGON ((0 0, 0 3, 1.5 3, 1.5 1.5, 3 1.5, 3 0, 0 0))", "l").unwrap();
         assert_eq!(corner_lower_bound(&l_cw), 5);
         // A hole's corners are reflex for the hole, convex for P: 4 + 0.
         let holed = Polygon::parse(
