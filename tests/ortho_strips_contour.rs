@@ -143,7 +143,9 @@ fn integral_polygons_agree_with_the_grid() {
             let report = checker::check(&region, cover, Mode::Milling);
             assert!(report.valid, "{what}: {objective} {:?}", report.error);
             assert_eq!(report.turns, turns, "{what}: {objective}");
-            assert_eq!(report.cycles == 1, objective == Objective::Turns, "{what}");
+            if objective == Objective::Turns {
+                assert_eq!(report.cycles, 1, "{what}");
+            }
             let theirs = &reference
                 .outputs
                 .iter()
