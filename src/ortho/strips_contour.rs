@@ -26,7 +26,7 @@
 //!    by a spanning tree of straight links from pixel centres to δB, each walked there and
 //!    back (the `join` module, shared with Corollary 4), ranked by the turns a link adds, then
 //!    by length. When the kept items cannot be joined that way (a dropped item was the only
-//!    way between them), every δB walk is joined too, and failing that every item
+//!    way between them), dropped items are added back, fewest turns first, until they can
 //!    (certificate `rejoined`).
 //!
 //! # Why the outputs mill P
@@ -113,8 +113,7 @@ pub struct Certificates {
     /// Turns of the kept δB walks, and of the δB walks the tour joins.
     pub contour_turns: u64,
     pub tour_contour_turns: u64,
-    /// 0 when the tour joins the kept items, 1 when it needed every contour walk, 2 every
-    /// contour walk and every component (step 5).
+    /// How many dropped items the tour joins again (step 6).
     pub rejoined: u64,
     /// Links of the spanning tree, and the turns they add counted as if each were alone at its
     /// ends (at most 4 each).
@@ -264,7 +263,7 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         });
     }
 
-    // Step 3: drop what the rest makes unnecessary, most turns first.
+    // Steps 3 and 4: drop what the rest makes unnecessary, most turns first.
     let contour = erosion.contour();
     let nc = components.len();
     let turns_of = |item: usize| -> u64 {
@@ -295,7 +294,7 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         }
     }
 
-    // Step 4: the cycle cover.
+    // Step 5: the cycle cover.
     let cycle_cover = Tour {
         cycles: (0..keep.len())
             .filter(|&i| keep[i])
@@ -303,14 +302,15 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             .collect(),
     };
 
-    // Step 5: the tour, over the kept items; where those cannot be joined (a dropped contour
-    // walk or component was the only way between them), over every contour walk, then over
-    // everything.
-    let mut attempts = vec![keep.clone()];
-    attempts.push((0..keep.len()).map(|i| keep[i] || i >= nc).collect());
-    attempts.push(vec![true; keep.len()]);
-    let mut joined = None;
-    for (attempt, used) in attempts.iter().enumerate() {
+    // Step 6: the tour, over the kept items; where those cannot be joined (a dropped item
+    // was the only way between them), dropped items are added back, fewest turns first, until
+    // they can.
+    let mut used = keep.clone();
+    let mut back: Vec<usize> = (0..keep.len()).filter(|&i| !keep[i]).collect();
+    back.sort_by_key(|&item| (turns_of(item), item));
+    let mut back = back.into_iter();
+    let mut rejoined = 0;
+    let joined = loop {
         let kept_components: Vec<usize> = (0..nc).filter(|&k| used[k]).collect();
         let kept_region = Region::from_pixels(
             kept_components
@@ -332,15 +332,16 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             .map(|&k| components[k].tour.clone())
             .collect();
         match join(&kept_region, &component_of, tours, walks, Rank::Turns) {
-            Ok(j) => {
-                joined = Some((j, used.clone(), attempt));
-                break;
-            }
-            Err(e) if attempt + 1 == attempts.len() => return Err(e),
-            Err(_) => {}
+            Ok(j) => break j,
+            Err(e) => match back.next() {
+                Some(item) => {
+                    used[item] = true;
+                    rejoined += 1;
+                }
+                None => return Err(e),
+            },
         }
-    }
-    let (joined, used, rejoined) = joined.expect("the last attempt returns or errs");
+    };
     let sum = |range: std::ops::Range<usize>, set: &[bool], f: &dyn Fn(usize) -> u64| -> u64 {
         range.filter(|&i| set[i]).map(f).sum()
     };
