@@ -17,17 +17,18 @@
 //!    distance; a cycle cover of at most 2s_i + w(M_i) turns, and its merged tour).
 //! 3. Boundary: the closed walks of δB ([`Erosion::contour`]).
 //! 4. Pruning (our addition): the items, each component's cycle cover and each δB walk, are
-//!    tried in order of decreasing turns, and one is dropped when the other kept items still
-//!    mill P, decided by the exact checker. On integral polygons R_N mills P and δB goes, so
-//!    the output is Theorem 5.5's; on slivers (B narrower than 1) the contour often mills P
-//!    alone and the pixels go.
-//! 5. Cycle cover (objective `cc-turns`): the kept items' cycles.
-//! 6. Tour (objective `turns`): the kept components' merged tours and the kept δB walks joined
-//!    by a spanning tree of straight links from pixel centres to δB, each walked there and
-//!    back (the `join` module, shared with Corollary 4), ranked by the turns a link adds, then
-//!    by length. When the kept items cannot be joined that way (a dropped item was the only
+//!    tried one by one, and one is dropped when the other kept items still mill P, decided by
+//!    the exact checker. Three orders are tried: decreasing cycle-cover turns, the δB walks
+//!    first, decreasing tour turns. On integral polygons R_N mills P, and the second order
+//!    drops δB, so the output is never worse than Theorem 5.5's; on slivers (B narrower than
+//!    1) the contour often mills P alone and the pixels go.
+//! 5. Cycle cover (objective `cc-turns`): the cycles of the kept set with the fewest turns.
+//! 6. Tour (objective `turns`): for each kept set, the kept components' merged tours and the
+//!    kept δB walks joined by a spanning tree of straight links from pixel centres to δB, each
+//!    walked there and back (the `join` module, shared with Corollary 4), ranked by the turns
+//!    a link adds, then by length. When the kept items cannot be joined that way (a dropped item was the only
 //!    way between them), dropped items are added back, fewest turns first, until they can
-//!    (certificate `rejoined`).
+//!    (certificate `rejoined`); the joined walk with the fewest turns is the tour.
 //!
 //! # Why the outputs mill P
 //!
@@ -38,7 +39,7 @@
 //! S_p is in B and its pixel, in R_N, is covered by the interior cycles. An item is dropped
 //! only when the exact checker says the rest mills P. The tour visits every pixel of the
 //! components it joins (each one's merged tour does) and walks every δB walk it joins, a
-//! superset of the cycle cover's items, so it mills P too.
+//! superset of a kept set, so it mills P too.
 //!
 //! # What is proven, and what is not
 //!
@@ -77,7 +78,7 @@
 
 use super::check::{check, turn_cost};
 use super::erosion::{feasibility, interior_pixels};
-use super::join::{Rank, join};
+use super::join::{Joined, Rank, join};
 use super::polygon::{Point, Polygon};
 use super::rational::Rational;
 use super::tour::Tour;
@@ -86,6 +87,7 @@ use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology;
 use serde::Serialize;
+use std::collections::HashMap;
 
 /// What the construction used (never the outputs' own cost: [`check`] recounts it).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -263,12 +265,20 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         });
     }
 
-    // Steps 3 and 4: drop what the rest makes unnecessary, most turns first.
+    // Steps 3 and 4: drop what the rest makes unnecessary, in three orders.
     let contour = erosion.contour();
     let nc = components.len();
-    let turns_of = |item: usize| -> u64 {
+    let items = nc + contour.len();
+    let cc_turns_of = |item: usize| -> u64 {
         if item < nc {
             components[item].cover.iter().map(|w| walk_turns(w)).sum()
+        } else {
+            walk_turns(&contour[item - nc])
+        }
+    };
+    let tour_turns_of = |item: usize| -> u64 {
+        if item < nc {
+            walk_turns(&components[item].tour)
         } else {
             walk_turns(&contour[item - nc])
         }
@@ -280,67 +290,114 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             vec![contour[item - nc].clone()]
         }
     };
-    let mut order: Vec<usize> = (0..nc + contour.len()).collect();
-    order.sort_by_key(|&item| (std::cmp::Reverse(turns_of(item)), item));
-    let mut keep = vec![true; nc + contour.len()];
-    for &item in &order {
-        keep[item] = false;
-        let cycles: Vec<Vec<Point>> = (0..keep.len())
-            .filter(|&i| keep[i])
-            .flat_map(cycles_of)
-            .collect();
-        if cycles.is_empty() || !check(polygon, &Tour { cycles })?.valid {
-            keep[item] = true;
+    let prune = |order: &[usize]| -> Result<Vec<bool>> {
+        let mut keep = vec![true; items];
+        for &item in order {
+            keep[item] = false;
+            let cycles: Vec<Vec<Point>> = (0..items)
+                .filter(|&i| keep[i])
+                .flat_map(cycles_of)
+                .collect();
+            if cycles.is_empty() || !check(polygon, &Tour { cycles })?.valid {
+                keep[item] = true;
+            }
+        }
+        Ok(keep)
+    };
+    let by = |key: &dyn Fn(usize) -> (bool, u64)| -> Vec<usize> {
+        let mut order: Vec<usize> = (0..items).collect();
+        order.sort_by_key(|&item| (key(item), item));
+        order
+    };
+    let mut kept_sets = Vec::new();
+    for order in [
+        by(&|i| (false, u64::MAX - cc_turns_of(i))),
+        by(&|i| (i < nc, u64::MAX - cc_turns_of(i))),
+        by(&|i| (false, u64::MAX - tour_turns_of(i))),
+    ] {
+        let keep = prune(&order)?;
+        if !kept_sets.contains(&keep) {
+            kept_sets.push(keep);
         }
     }
+    let cc_total =
+        |keep: &[bool]| -> u64 { (0..items).filter(|&i| keep[i]).map(cc_turns_of).sum() };
 
-    // Step 5: the cycle cover.
+    // Step 5: the cycle cover, from the kept set with the fewest turns.
+    let keep = kept_sets
+        .iter()
+        .min_by_key(|keep| cc_total(keep))
+        .expect("three orders")
+        .clone();
     let cycle_cover = Tour {
-        cycles: (0..keep.len())
+        cycles: (0..items)
             .filter(|&i| keep[i])
             .flat_map(cycles_of)
             .collect(),
     };
 
-    // Step 6: the tour, over the kept items; where those cannot be joined (a dropped item
-    // was the only way between them), dropped items are added back, fewest turns first, until
+    // Step 6: the tour over a kept set; where its items cannot be joined (a dropped item was
+    // the only way between them), dropped items are added back, fewest turns first, until
     // they can.
-    let mut used = keep.clone();
-    let mut back: Vec<usize> = (0..keep.len()).filter(|&i| !keep[i]).collect();
-    back.sort_by_key(|&item| (turns_of(item), item));
-    let mut back = back.into_iter();
-    let mut rejoined = 0;
-    let joined = loop {
-        let kept_components: Vec<usize> = (0..nc).filter(|&k| used[k]).collect();
-        let kept_region = Region::from_pixels(
-            kept_components
+    let tour_over = |keep: &[bool]| -> Result<(Joined, Vec<bool>, usize)> {
+        let mut used = keep.to_vec();
+        let mut back: Vec<usize> = (0..items).filter(|&i| !keep[i]).collect();
+        back.sort_by_key(|&item| (tour_turns_of(item), item));
+        let mut back = back.into_iter();
+        let mut rejoined = 0;
+        loop {
+            let kept_components: Vec<usize> = (0..nc).filter(|&k| used[k]).collect();
+            let kept_region = Region::from_pixels(
+                kept_components
+                    .iter()
+                    .flat_map(|&k| components[k].pixels.iter().copied()),
+            )?;
+            let walk_of: HashMap<Pixel, usize> = kept_components
                 .iter()
-                .flat_map(|&k| components[k].pixels.iter().copied()),
-        )?;
-        let walk_of: std::collections::HashMap<Pixel, usize> = kept_components
-            .iter()
-            .enumerate()
-            .flat_map(|(j, &k)| components[k].pixels.iter().map(move |&p| (p, j)))
-            .collect();
-        let component_of = |p: Pixel| walk_of[&p];
-        let walks: Vec<Vec<Point>> = (0..contour.len())
-            .filter(|&w| used[nc + w])
-            .map(|w| contour[w].clone())
-            .collect();
-        let tours: Vec<Vec<Point>> = kept_components
-            .iter()
-            .map(|&k| components[k].tour.clone())
-            .collect();
-        match join(&kept_region, &component_of, tours, walks, Rank::Turns) {
-            Ok(j) => break j,
-            Err(e) => match back.next() {
-                Some(item) => {
-                    used[item] = true;
-                    rejoined += 1;
-                }
-                None => return Err(e),
-            },
+                .enumerate()
+                .flat_map(|(j, &k)| components[k].pixels.iter().map(move |&p| (p, j)))
+                .collect();
+            let component_of = |p: Pixel| walk_of[&p];
+            let walks: Vec<Vec<Point>> = (0..contour.len())
+                .filter(|&w| used[nc + w])
+                .map(|w| contour[w].clone())
+                .collect();
+            let tours: Vec<Vec<Point>> = kept_components
+                .iter()
+                .map(|&k| components[k].tour.clone())
+                .collect();
+            match join(&kept_region, &component_of, tours, walks, Rank::Turns) {
+                Ok(joined) => return Ok((joined, used, rejoined)),
+                Err(e) => match back.next() {
+                    Some(item) => {
+                        used[item] = true;
+                        rejoined += 1;
+                    }
+                    None => return Err(e),
+                },
+            }
         }
+    };
+    // The joined walk with the fewest turns over the kept sets.
+    let mut best: Option<(Joined, Vec<bool>, usize)> = None;
+    let mut failure = None;
+    for keep in &kept_sets {
+        match tour_over(keep) {
+            Ok(found) => {
+                if best
+                    .as_ref()
+                    .is_none_or(|b| walk_turns(&found.0.walk) < walk_turns(&b.0.walk))
+                {
+                    best = Some(found);
+                }
+            }
+            Err(e) => failure = Some(e),
+        }
+    }
+    let (joined, used, rejoined) = match (best, failure) {
+        (Some(best), _) => best,
+        (None, Some(e)) => return Err(e),
+        (None, None) => unreachable!("at least one kept set"),
     };
     let sum = |range: std::ops::Range<usize>, set: &[bool], f: &dyn Fn(usize) -> u64| -> u64 {
         range.filter(|&i| set[i]).map(f).sum()
@@ -356,12 +413,12 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             .filter(|&k| keep[k])
             .map(|k| components[k].cover.len())
             .sum(),
-        interior_cc_turns: sum(0..nc, &keep, &turns_of),
-        interior_tour_turns: sum(0..nc, &used, &|k| walk_turns(&components[k].tour)),
+        interior_cc_turns: sum(0..nc, &keep, &cc_turns_of),
+        interior_tour_turns: sum(0..nc, &used, &tour_turns_of),
         contour_walks: contour.len(),
-        contour_kept: (nc..keep.len()).filter(|&i| keep[i]).count(),
-        contour_turns: sum(nc..keep.len(), &keep, &turns_of),
-        tour_contour_turns: sum(nc..keep.len(), &used, &turns_of),
+        contour_kept: (nc..items).filter(|&i| keep[i]).count(),
+        contour_turns: sum(nc..items, &keep, &cc_turns_of),
+        tour_contour_turns: sum(nc..items, &used, &tour_turns_of),
         rejoined: rejoined as u64,
         links: joined.links.len(),
         link_turns: joined.links.iter().map(|l| l.turns).sum(),
