@@ -5,7 +5,8 @@
 //!
 //! No guarantee is registered for them: a registered guarantee is a proven one, and what the
 //! implementation proves is written in each module (Corollary 4 leans on the paper's contour
-//! bound, which is unproven here). The claims table measures the papers' factors against the
+//! bound, which is unproven here; `strips-contour`'s Theorem 5.7 factors lean on bounds of
+//! the interior's and the contour's turns against OPT that are unproven here). The claims table measures the papers' factors against the
 //! proven lower bounds, and against exact optima on grid regions.
 
 use super::corollary4::corollary4;
