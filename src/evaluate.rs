@@ -619,7 +619,10 @@ fn judge_ortho(
     let error = if !report.valid {
         Some(report.error.clone().unwrap_or_default())
     } else if !one_walk {
-        Some(format!("a tour objective got {} cycles", cover.cycles.len()))
+        Some(format!(
+            "a tour objective got {} cycles",
+            cover.cycles.len()
+        ))
     } else {
         None
     };
@@ -676,8 +679,7 @@ fn judge_ortho(
             g
         })
         .collect();
-    let (verdicts, within_guarantee) =
-        verdicts(&applicable, &measured, n, None, Some(lower_bound));
+    let (verdicts, within_guarantee) = verdicts(&applicable, &measured, n, None, Some(lower_bound));
     Ok(Checked {
         objective,
         cover: cover.clone(),

@@ -297,7 +297,13 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let between = cut_columns(&text, 8);
     assert!(between.lines().next().unwrap().ends_with(",coverage4"));
     let before_unit = cut_columns(&text, 1);
-    assert!(before_unit.lines().next().unwrap().ends_with(",direction_sum"));
+    assert!(
+        before_unit
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",direction_sum")
+    );
     let (old2, old3) = (dir.join("old2"), dir.join("old3"));
     for (copy, text) in [(&old2, &between), (&old3, &before_unit)] {
         std::fs::create_dir_all(copy).unwrap();

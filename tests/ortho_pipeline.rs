@@ -97,7 +97,12 @@ fn grid_and_ortho_runs_agree_on_integral_polygons() {
                 assert_eq!(grid.error, exact.error, "{seed} {}", algorithm.name);
                 for (g, e) in grid.outputs.iter().zip(&exact.outputs) {
                     assert_eq!(g.objective, e.objective);
-                    assert!(g.valid && e.valid, "{seed} {}: {:?}", algorithm.name, g.error);
+                    assert!(
+                        g.valid && e.valid,
+                        "{seed} {}: {:?}",
+                        algorithm.name,
+                        g.error
+                    );
                     assert_eq!(g.turns, e.turns);
                     assert_eq!(g.length * e.unit, e.length);
                     assert_eq!(g.cycles, e.cycles);
@@ -162,7 +167,14 @@ family = "shapes"
             continue;
         }
         assert!(names.contains(&r.algorithm.as_str()), "{}", r.algorithm);
-        assert_eq!(r.valid, Some(true), "{} {}: {}", r.instance, r.algorithm, r.error);
+        assert_eq!(
+            r.valid,
+            Some(true),
+            "{} {}: {}",
+            r.instance,
+            r.algorithm,
+            r.error
+        );
         let unit = r.unit.expect("ortho rows carry their unit");
         if r.objective == "length" {
             let (v, lb) = (r.value.unwrap(), r.lower_bound.unwrap());
@@ -180,7 +192,11 @@ family = "shapes"
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(claims.status.success(), "{}", String::from_utf8_lossy(&claims.stderr));
+    assert!(
+        claims.status.success(),
+        "{}",
+        String::from_utf8_lossy(&claims.stderr)
+    );
     let table = std::fs::read_to_string(out.join("claims.csv")).unwrap();
     let cor4 = table
         .lines()
@@ -195,7 +211,11 @@ family = "shapes"
         "--current",
         out.to_str().unwrap(),
     ]);
-    assert!(gate.status.success(), "{}", String::from_utf8_lossy(&gate.stdout));
+    assert!(
+        gate.status.success(),
+        "{}",
+        String::from_utf8_lossy(&gate.stdout)
+    );
 }
 
 /// Config refusals for the ortho families, naming the key.
@@ -208,7 +228,10 @@ fn ortho_families_take_n_only() {
             "family = \"ortho-sliver\"\nn = 8\nholes = 1\ncount = 1\n",
             "does not apply",
         ),
-        ("family = \"ortho-sliver\"\nn = 0\ncount = 1\n", "from 1 to 10000"),
+        (
+            "family = \"ortho-sliver\"\nn = 0\ncount = 1\n",
+            "from 1 to 10000",
+        ),
     ] {
         let cfg = dir.join("c.toml");
         std::fs::write(&cfg, format!("name = \"x\"\nseed = 1\n[[family]]\n{body}")).unwrap();
@@ -221,6 +244,9 @@ fn ortho_families_take_n_only() {
         ]);
         assert_eq!(o.status.code(), Some(2), "{body}");
         let err = String::from_utf8_lossy(&o.stderr);
-        assert!(err.contains("family[0]") && err.contains(expected), "{body}: {err}");
+        assert!(
+            err.contains("family[0]") && err.contains(expected),
+            "{body}: {err}"
+        );
     }
 }

@@ -850,6 +850,7 @@ pub static REGISTRY: &[Algorithm] = &[
     crate::discrete::star_cover::ALGORITHM,
     // Orthogonal polygons with arbitrary coordinates, Table 1's row Orthogonal (issue 18).
     crate::ortho::COROLLARY4,
+    crate::ortho::STRIPS_CONTOUR,
 ];
 
 /// The registered algorithm called `name`.

@@ -666,7 +666,9 @@ fn run_on_ortho(
             .objectives
             .iter()
             .copied()
-            .filter(|o| !done.contains_key(&(spec.name.clone(), algorithm.name.to_string(), o.to_string())))
+            .filter(|o| {
+                !done.contains_key(&(spec.name.clone(), algorithm.name.to_string(), o.to_string()))
+            })
             .collect();
         if pending.is_empty() {
             continue;

@@ -15,8 +15,9 @@
 //!    links to the nearest contour point in each of the four directions are candidates; a
 //!    minimum spanning tree of them (Kruskal, by length) ties every component tour and every
 //!    contour walk together, and each tree link is walked there and back, splicing the walks
-//!    at its ends. A link lies in B: its pixel centre is in B, and if it is not on δB, it is
-//!    an interior point of B and the open link meets no boundary point before its end.
+//!    at its ends (the `join` module, shared with `strips-contour`). A link lies in B: its
+//!    pixel centre is in B, and if it is not on δB, it is an interior point of B and the open
+//!    link meets no boundary point before its end.
 //!
 //! # Why the union mills P
 //!
@@ -56,10 +57,11 @@
 //!
 //! # Complexity
 //! O(E·M) for the candidate links (E pixel sides on the edge of R_N, M contour segments) and
-//! O(T·K) for the splicing (T tour points, K tree links), plus the registered algorithms' time:
+//! O(T + K log K) for the splicing (T tour points, K candidate links), plus the registered algorithms' time:
 //! quadratic in the worst case, not the paper's O(n) (which works on trapezoids, not pixels).
 
 use super::erosion::{Erosion, feasibility, interior_pixels};
+use super::join::{Rank, add, distance, join, sub};
 use super::polygon::{Point, Polygon};
 use super::rational::Rational;
 use super::tour::Tour;
@@ -113,20 +115,6 @@ impl LowerBounds {
     pub fn proven(&self) -> Rational {
         self.area.max(self.extent)
     }
-}
-
-fn add(a: Rational, b: Rational) -> Result<Rational> {
-    a.checked_add(b)
-        .ok_or_else(|| Error::invalid("length overflows the exact rationals"))
-}
-
-fn sub(a: Rational, b: Rational) -> Result<Rational> {
-    a.checked_sub(b)
-        .ok_or_else(|| Error::invalid("length overflows the exact rationals"))
-}
-
-fn distance(a: Point, b: Point) -> Result<Rational> {
-    add(sub(a.x, b.x)?.abs(), sub(a.y, b.y)?.abs())
 }
 
 /// The length of a closed walk (closing move included).
@@ -192,100 +180,6 @@ pub fn lower_bounds(polygon: &Polygon, erosion: &Erosion) -> Result<LowerBounds>
         extent,
         contour,
     })
-}
-
-/// A candidate link: pixel centre `from` (of component `component`) to contour point `to` (on
-/// walk `walk`), of length `length`.
-#[derive(Clone, Copy, Debug)]
-struct Link {
-    length: Rational,
-    component: usize,
-    walk: usize,
-    from: Point,
-    to: Point,
-}
-
-/// The nearest points of the contour walks from `c` along direction `d` (including `c`
-/// itself), with their walks: one per walk that attains the least distance (walks of zero-width
-/// parts of B may share points).
-fn nearest_on_contour(contour: &[Vec<Point>], c: Point, d: (i32, i32)) -> Vec<(Point, usize)> {
-    let mut best: Vec<(Rational, Point, usize)> = Vec::new();
-    for (w, walk) in contour.iter().enumerate() {
-        for i in 0..walk.len() {
-            let (a, b) = (walk[i], walk[(i + 1) % walk.len()]);
-            // The point of segment a–b on the ray's line, nearest c ahead.
-            let hit = if d.0 == 0 {
-                // Vertical ray x = c.x.
-                let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-                if c.x < lo || c.x > hi {
-                    continue;
-                }
-                let (ylo, yhi) = (a.y.min(b.y), a.y.max(b.y));
-                let y = if d.1 > 0 {
-                    if yhi < c.y { continue } else { ylo.max(c.y) }
-                } else if ylo > c.y {
-                    continue;
-                } else {
-                    yhi.min(c.y)
-                };
-                Point::new(c.x, y)
-            } else {
-                let (lo, hi) = (a.y.min(b.y), a.y.max(b.y));
-                if c.y < lo || c.y > hi {
-                    continue;
-                }
-                let (xlo, xhi) = (a.x.min(b.x), a.x.max(b.x));
-                let x = if d.0 > 0 {
-                    if xhi < c.x { continue } else { xlo.max(c.x) }
-                } else if xlo > c.x {
-                    continue;
-                } else {
-                    xhi.min(c.x)
-                };
-                Point::new(x, c.y)
-            };
-            let Ok(length) = distance(c, hit) else {
-                continue;
-            };
-            match best.first() {
-                Some(&(l, _, _)) if length > l => {}
-                Some(&(l, _, _)) if length == l => {
-                    if !best.iter().any(|b| b.2 == w) {
-                        best.push((length, hit, w));
-                    }
-                }
-                _ => best = vec![(length, hit, w)],
-            }
-        }
-    }
-    best.into_iter().map(|(_, p, w)| (p, w)).collect()
-}
-
-/// Inserts `p` into the closed walk as a vertex (on the first segment containing it), unless it
-/// is one already; returns its index.
-fn insert_vertex(walk: &mut Vec<Point>, p: Point) -> usize {
-    if let Some(i) = walk.iter().position(|&q| q == p) {
-        return i;
-    }
-    let m = walk.len();
-    for i in 0..m {
-        let (a, b) = (walk[i], walk[(i + 1) % m]);
-        let on = (a.x == b.x && p.x == a.x && a.y.min(b.y) <= p.y && p.y <= a.y.max(b.y))
-            || (a.y == b.y && p.y == a.y && a.x.min(b.x) <= p.x && p.x <= a.x.max(b.x));
-        if on {
-            walk.insert(i + 1, p);
-            return i + 1;
-        }
-    }
-    unreachable!("a link ends on its contour walk")
-}
-
-fn find(parent: &mut [usize], mut i: usize) -> usize {
-    while parent[i] != i {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    i
 }
 
 /// Corollary 4's milling tour of `polygon` and what it used.
@@ -355,64 +249,19 @@ pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
     }
 
     // Step 3 and 4: the contour walks, linked to the tours by a minimum spanning tree.
-    let mut walks: Vec<Vec<Point>> = erosion.contour().to_vec();
     let component_of = |p: Pixel| labels.label[region.index_of(p).expect("a kept pixel")] as usize;
-    let mut candidates = Vec::new();
-    for &p in region.pixels() {
-        let c = Point::pixel_centre(p.x, p.y);
-        for d in [(0, -1), (0, 1), (-1, 0), (1, 0)] {
-            // Only where the neighbouring pixel is missing: elsewhere a nearer pixel sees the
-            // same walk along the same line.
-            if region.contains(Pixel::new(p.x + d.0, p.y + d.1)) {
-                continue;
-            }
-            for (to, walk) in nearest_on_contour(&walks, c, d) {
-                candidates.push(Link {
-                    length: distance(c, to)?,
-                    component: component_of(p),
-                    walk,
-                    from: c,
-                    to,
-                });
-            }
-        }
-    }
-    candidates.sort_by_key(|l| (l.length, l.from, l.to, l.walk));
-    let (nt, nw) = (tours.len(), walks.len());
-    // Items: the component tours 0..nt, then the contour walks.
-    let mut parent: Vec<usize> = (0..nt + nw).collect();
-    let mut tree: Vec<Link> = Vec::new();
-    for link in candidates {
-        let (a, b) = (
-            find(&mut parent, link.component),
-            find(&mut parent, nt + link.walk),
-        );
-        if a != b {
-            parent[a] = b;
-            tree.push(link);
-        }
-    }
-    let roots = (0..nt + nw).filter(|&i| find(&mut parent, i) == i).count();
-    if roots > 1 {
-        return Err(Error::invalid(format!(
-            "cannot join the {nt} pixel tour(s) and {nw} contour walk(s) into one tour by \
-             straight links from pixel centres ({roots} groups remain)"
-        )));
-    }
+    let nw = erosion.contour().len();
+    let joined = join(
+        &region,
+        &component_of,
+        tours,
+        erosion.contour().to_vec(),
+        Rank::Length,
+    )?;
     let mut link_length = Rational::ZERO;
-    for link in &tree {
+    for link in &joined.links {
         link_length = add(link_length, link.length)?;
-        insert_vertex(&mut walks[link.walk], link.to);
     }
-
-    // Splicing: a depth-first walk over the tree, each link there and back.
-    let mut items: Vec<Vec<Point>> = tours;
-    items.extend(walks);
-    let ends = |l: &Link| [(l.component, l.from), (nt + l.walk, l.to)];
-    let mut used = vec![false; tree.len()];
-    let mut out: Vec<Point> = Vec::new();
-    let start = items[0][0];
-    emit(&items, &tree, &ends, &mut used, 0, start, &mut out);
     let contour_length = {
         let mut total = Rational::ZERO;
         for walk in erosion.contour() {
@@ -427,48 +276,9 @@ pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
         milling25: used25,
         contour_walks: nw,
         contour_length,
-        links: tree.len(),
+        links: joined.links.len(),
         link_length,
         bounds,
     };
-    Ok((Tour::new(out), certificates))
-}
-
-/// Appends item `item`'s closed walk from `start` (not the return to `start`), detouring
-/// along every unused tree link at each of its points.
-fn emit(
-    items: &[Vec<Point>],
-    tree: &[Link],
-    ends: &dyn Fn(&Link) -> [(usize, Point); 2],
-    used: &mut [bool],
-    item: usize,
-    start: Point,
-    out: &mut Vec<Point>,
-) {
-    let walk = &items[item];
-    let first = walk
-        .iter()
-        .position(|&p| p == start)
-        .expect("a link end is a vertex");
-    for k in 0..walk.len() {
-        let p = walk[(first + k) % walk.len()];
-        out.push(p);
-        for (l, link) in tree.iter().enumerate() {
-            if used[l] {
-                continue;
-            }
-            let [a, b] = ends(link);
-            let (here, there) = if a == (item, p) {
-                (a, b)
-            } else if b == (item, p) {
-                (b, a)
-            } else {
-                continue;
-            };
-            used[l] = true;
-            emit(items, tree, ends, used, there.0, there.1, out);
-            out.push(there.1);
-            out.push(here.1);
-        }
-    }
+    Ok((Tour::new(joined.walk), certificates))
 }

@@ -17,7 +17,11 @@
 //!
 //! Conventions: the cutter is the axis-parallel unit square centred on the walk; pixel (x, y)
 //! of a [`Region`](crate::Region) is the unit square [x, x+1] × [y, y+1], its centre
-//! (x + ½, y + ½) ([`Polygon::from_region`], [`Tour::from_cover`]). docs/ortho.md has the file
+//! (x + ½, y + ½) ([`Polygon::from_region`], [`Tour::from_cover`]).
+//!
+//! The algorithms: [`corollary4`] (milling length) and [`strips_contour`] (our reading of
+//! Theorem 5.7 of *Optimal covering tours with turn costs*: turns), registered as
+//! [`COROLLARY4`] and [`STRIPS_CONTOUR`]. docs/ortho.md has the file
 //! formats, the checker's argument and the limits.
 
 mod check;
@@ -26,9 +30,11 @@ mod cover;
 mod draw;
 mod erosion;
 mod generate;
+mod join;
 mod polygon;
 mod rational;
 mod registered;
+mod strips_contour;
 mod tour;
 mod turn_bound;
 
@@ -40,6 +46,10 @@ pub use generate::{FAMILIES, generate};
 pub(crate) use polygon::lcm;
 pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
-pub use registered::COROLLARY4;
+pub use registered::{COROLLARY4, STRIPS_CONTOUR};
+pub use strips_contour::{
+    Certificates as StripsContourCertificates, StripsContour, corner_lower_bound, strips_contour,
+    walk_turns,
+};
 pub use tour::{MAX_TOUR_POINTS, Tour};
 pub use turn_bound::{TurnBound, turn_lower_bound};

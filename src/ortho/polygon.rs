@@ -180,15 +180,17 @@ impl Polygon {
             let mut twice = Rational::ZERO;
             for i in 0..m {
                 let (a, b) = (ring.corners[i], ring.corners[(i + 1) % m]);
-                let cross = a
-                    .x
-                    .checked_mul(b.y)
-                    .zip(b.x.checked_mul(a.y))
-                    .and_then(|(p, q)| p.checked_sub(q))
-                    .ok_or_else(overflow)?;
+                let cross =
+                    a.x.checked_mul(b.y)
+                        .zip(b.x.checked_mul(a.y))
+                        .and_then(|(p, q)| p.checked_sub(q))
+                        .ok_or_else(overflow)?;
                 twice = twice.checked_add(cross).ok_or_else(overflow)?;
             }
-            let part = twice.abs().checked_mul(Rational::HALF).ok_or_else(overflow)?;
+            let part = twice
+                .abs()
+                .checked_mul(Rational::HALF)
+                .ok_or_else(overflow)?;
             area = if ring.hole {
                 area.checked_sub(part)
             } else {

@@ -5,11 +5,13 @@
 //!
 //! No guarantee is registered for them: a registered guarantee is a proven one, and what the
 //! implementation proves is written in each module (Corollary 4 leans on the paper's contour
-//! bound, which is unproven here). The claims table measures the papers' factors against the
+//! bound, which is unproven here; `strips-contour`'s Theorem 5.7 factors lean on bounds of
+//! the interior's and the contour's turns against OPT that are unproven here). The claims table measures the papers' factors against the
 //! proven lower bounds, and against exact optima on grid regions.
 
 use super::corollary4::corollary4;
 use super::polygon::Polygon;
+use super::strips_contour::strips_contour;
 use super::tour::Tour;
 use crate::algorithms::theorems::{self, Claim};
 use crate::algorithms::{Algorithm, Objective, Options, Output, Solution};
@@ -34,6 +36,46 @@ pub const COROLLARY4: Algorithm = Algorithm {
     discrete: None,
     ortho: Some(ortho_corollary4),
 };
+
+/// Our reading of Theorem 5.7 of *Optimal covering tours with turn costs*:
+/// [`strips_contour`].
+pub const STRIPS_CONTOUR: Algorithm = Algorithm {
+    name: "strips-contour",
+    summary: "Theorem 5.7 (our reading): strips-matching on the integer pixels inside plus the contour of the erosion, unneeded parts dropped by the exact checker, joined by straight links ranked by added turns (milling turns, arbitrary coordinates)",
+    objectives: &[Objective::CcTurns, Objective::Turns],
+    guarantees: &[],
+    claims: &[
+        Claim::reading(
+            &theorems::TURNS_THM_5_7,
+            &[Objective::CcTurns],
+            STRIPS_CONTOUR_NOTE,
+        ),
+        Claim::reading(
+            &theorems::TURNS_THM_5_7_TOUR,
+            &[Objective::Turns],
+            STRIPS_CONTOUR_NOTE,
+        ),
+        Claim::reading(
+            &theorems::TURNS_THM_5_7_LENGTH,
+            &[Objective::Turns],
+            STRIPS_CONTOUR_NOTE,
+        ),
+        Claim::reading(
+            &theorems::TURNS_THM_5_7_COVERAGE,
+            &[Objective::Turns],
+            STRIPS_CONTOUR_NOTE,
+        ),
+    ],
+    requires: "a polygon a unit square can mill (feasibility)",
+    precondition: any_region,
+    run: grid_strips_contour,
+    discrete: None,
+    ortho: Some(ortho_strips_contour),
+};
+
+/// Where the implementation departs from the paper's one-line proof idea (module docs of
+/// `strips_contour`).
+const STRIPS_CONTOUR_NOTE: &str = "the paper's \"boundary tour modified to cover subpixels near reflex vertices\" is our contour of the erosion, with unneeded parts dropped by the exact checker, and its \"combine\" our straight links walked both ways; its 4.5 and 6.25 rest on sum OPT_cc(R_i) <= OPT_cc(P) and on the contour's turns against OPT, neither proven here";
 
 fn any_region(_: &Region) -> Result<()> {
     Ok(())
@@ -86,6 +128,56 @@ pub(crate) fn on_grid(
         outputs,
         certificates: solution.certificates,
     })
+}
+
+fn ortho_strips_contour(polygon: &Polygon, options: &Options) -> Result<Solution<Tour>> {
+    let out = strips_contour(polygon, options)?;
+    let c = out.certificates;
+    let certificates = BTreeMap::from([
+        ("pixels".to_string(), c.pixels as i64),
+        ("components".to_string(), c.components as i64),
+        ("components_kept".to_string(), c.components_kept as i64),
+        ("strips".to_string(), c.strips as i64),
+        ("matching_turns".to_string(), c.matching_turns as i64),
+        (
+            "matching_optimal".to_string(),
+            i64::from(c.matching_optimal),
+        ),
+        ("interior_cycles".to_string(), c.interior_cycles as i64),
+        ("interior_cc_turns".to_string(), c.interior_cc_turns as i64),
+        (
+            "interior_tour_turns".to_string(),
+            c.interior_tour_turns as i64,
+        ),
+        ("contour_walks".to_string(), c.contour_walks as i64),
+        ("contour_kept".to_string(), c.contour_kept as i64),
+        ("contour_turns".to_string(), c.contour_turns as i64),
+        (
+            "tour_contour_turns".to_string(),
+            c.tour_contour_turns as i64,
+        ),
+        ("rejoined".to_string(), c.rejoined as i64),
+        ("links".to_string(), c.links as i64),
+        ("link_turns".to_string(), c.link_turns),
+        ("corner_lower_bound".to_string(), c.lower_bound as i64),
+    ]);
+    Ok(Solution {
+        outputs: vec![
+            Output {
+                objective: Objective::CcTurns,
+                cover: out.cycle_cover,
+            },
+            Output {
+                objective: Objective::Turns,
+                cover: out.tour,
+            },
+        ],
+        certificates,
+    })
+}
+
+fn grid_strips_contour(region: &Region, options: &Options) -> Result<Solution> {
+    on_grid(region, options, ortho_strips_contour)
 }
 
 fn grid_corollary4(region: &Region, options: &Options) -> Result<Solution> {
