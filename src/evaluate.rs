@@ -709,10 +709,9 @@ pub fn ortho_bound(
     objective: Objective,
 ) -> Result<(crate::ortho::Rational, String)> {
     use crate::ortho::Rational;
+    let erosion = crate::ortho::feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
     match objective {
         Objective::Length => {
-            let erosion =
-                crate::ortho::feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
             let b = crate::ortho::lower_bounds(polygon, &erosion)?;
             let source = if b.area >= b.extent {
                 "area: L >= area - 1"
@@ -721,10 +720,15 @@ pub fn ortho_bound(
             };
             Ok((b.proven(), source.to_string()))
         }
-        _ => Ok((
-            Rational::from(4),
-            "a closed walk turns at least 4 times".to_string(),
-        )),
+        _ => {
+            let b = crate::ortho::turn_lower_bound(polygon, &erosion)?;
+            let source = if b.convex_corners >= b.rooks {
+                "forced convex-corner turns"
+            } else {
+                "independent points (rooks)"
+            };
+            Ok((Rational::from(b.best() as i64), source.to_string()))
+        }
     }
 }
 

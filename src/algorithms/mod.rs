@@ -851,6 +851,7 @@ pub static REGISTRY: &[Algorithm] = &[
     // Orthogonal polygons with arbitrary coordinates, Table 1's row Orthogonal (issue 18).
     crate::ortho::COROLLARY4,
     crate::ortho::STRIPS_CONTOUR,
+    crate::ortho::STAR_CONTOUR,
 ];
 
 /// The registered algorithm called `name`.

@@ -703,6 +703,52 @@ pub static TURNS_THM_5_7_COVERAGE: Theorem = Theorem {
     tight: None,
 };
 
+/// Table 1's second line for orthogonal polygons: the star cover (Theorems 5.1–5.2 with d = 2)
+/// on polygons with arbitrary coordinates. The text proves it only on pixels.
+pub static TURNS_ORTHO_STAR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Table 1, Orthogonal (star cover)",
+    statement: "nonintegral orthogonal milling by a star cover: cycle cover 10 OPT_cc",
+    factor: "10 OPT_cc",
+    measure: Measure::Bound(bound(Value, 10, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_ORTHO_STAR_TOUR: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Table 1, Orthogonal (star cover, tour)",
+    statement: "nonintegral orthogonal milling by a star cover: tour 12 OPT",
+    factor: "12 OPT",
+    measure: Measure::Bound(bound(Value, 12, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_ORTHO_STAR_LENGTH: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Table 1, Orthogonal (star cover, length)",
+    statement: "nonintegral orthogonal milling by a star cover: within 4 of the minimum length",
+    factor: "4 OPT_length",
+    measure: Measure::Bound(bound(Length, 4, 1, 0, Opt)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
+pub static TURNS_ORTHO_STAR_COVERAGE: Theorem = Theorem {
+    paper: TurnCost,
+    id: "Table 1, Orthogonal (star cover, coverage)",
+    statement: "nonintegral orthogonal milling by a star cover: every point milled at most 4 times",
+    factor: "coverage <= 4",
+    measure: Measure::Bound(bound(MaxCoverage, 4, 1, 0, One)),
+    when: When::Always,
+    realized: Realized::ByAlgorithms,
+    tight: None,
+};
+
 pub static TURNS_THM_5_10: Theorem = Theorem {
     paper: TurnCost,
     id: "Theorem 5.10",
@@ -755,6 +801,10 @@ pub static THEOREMS: &[&Theorem] = &[
     &TURNS_THM_5_7_TOUR,
     &TURNS_THM_5_7_LENGTH,
     &TURNS_THM_5_7_COVERAGE,
+    &TURNS_ORTHO_STAR,
+    &TURNS_ORTHO_STAR_TOUR,
+    &TURNS_ORTHO_STAR_LENGTH,
+    &TURNS_ORTHO_STAR_COVERAGE,
     &TURNS_THM_5_10,
 ];
 

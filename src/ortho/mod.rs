@@ -46,9 +46,9 @@ pub use generate::{FAMILIES, generate};
 pub(crate) use polygon::lcm;
 pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
 pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
-pub use registered::{COROLLARY4, STRIPS_CONTOUR};
+pub use registered::{COROLLARY4, STAR_CONTOUR, STRIPS_CONTOUR};
 pub use strips_contour::{
-    Certificates as StripsContourCertificates, StripsContour, corner_lower_bound, strips_contour,
+    Certificates as StripsContourCertificates, StripsContour, star_contour, strips_contour,
     walk_turns,
 };
 pub use tour::{MAX_TOUR_POINTS, Tour};

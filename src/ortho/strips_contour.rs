@@ -53,14 +53,8 @@
 //!   replaces t(a, b) by t(a, L) + t(−L, b) = 2 + t(a, L) − t(L, b), at most t(a, b) + 2 by the
 //!   triangle inequality of the turn metric t; the same at the far end; see the `join` module
 //!   for still walks and links of length 0.
-//! - Lower bound ([`corner_lower_bound`]): every cycle cover (hence every tour) of P turns at
-//!   least max(4, c) times, c the number of convex corners of P. Near a convex corner v only
-//!   the square with a corner at v covers P's points, so every cover visits its centre
-//!   c(v) = v ± (½, ½), a convex corner of B where a walk that moves must turn (it arrives from
-//!   inside the quadrant and leaves into it: at least 1). Two convex corners share a centre
-//!   only as adjacent quadrants (B is then a segment ending there: the walk turns back, 2) or
-//!   when B is a single point (the walk never moves: 4 by the checker's convention). A closed
-//!   walk turns at least 4 times.
+//! - Lower bound (certificate `lower_bound`): [`turn_lower_bound`](super::turn_lower_bound),
+//!   the forced convex-corner turns and independent points of `src/ortho/turn_bound.rs`.
 //!
 //! Not proven: any ratio against the optimum. The paper's 4.5 and 6.25 would need
 //! Σ_i OPT_cc(R_i) ≤ OPT_cc(P) (a cover of P restricted to the pixels of R_i is not a cover
@@ -71,6 +65,18 @@
 //! lower bounds, and against exact optima on integral regions, where the output is Theorem
 //! 5.5's (whose 2.5 and 3.75 are proven when `matching_optimal = 1`).
 //!
+//! # `star-contour`: Table 1's star-cover line (10 / 12 / 4 / 4)
+//!
+//! Table 1 of the paper lists a second line for orthogonal polygons, 10 for cycle covers, 12 for
+//! tours, 4 on length and coverage: the star cover of Theorems 5.1–5.2 (d = 2). The text gives
+//! no construction for non-integral polygons. [`star_contour`] is the same construction as
+//! above with the registered `star-cover` in step 2. On integral polygons it is `star-cover`
+//! (the pruning drops δB) and its claims there are the grid theorems'. On non-integral ones
+//! nothing is proven: the star argument needs the rook's star (its two strips) to cover every
+//! point the rook attacks, and a rook in the continuum is attacked from a whole unit box of
+//! centre positions, whose strips are not two (a star is not a bounded number of strips); so
+//! the rows measure the table's factors against the proven lower bounds.
+//!
 //! # Complexity
 //! `strips-matching` on each component (O(N^2.5) for the strip cover, plus its matching), one
 //! exact check per item (O((N + n) log(N + n)) each), and the joining (O(E·M) for the
@@ -80,8 +86,8 @@ use super::check::{check, turn_cost};
 use super::erosion::{feasibility, interior_pixels};
 use super::join::{Joined, Rank, join};
 use super::polygon::{Point, Polygon};
-use super::rational::Rational;
 use super::tour::Tour;
+use super::turn_bound::turn_lower_bound;
 use crate::algorithms::{self, Objective, Options};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
@@ -102,7 +108,7 @@ pub struct Certificates {
     /// Σ w(M_i), the components' matching weights.
     pub matching_turns: u64,
     /// Whether every component's matching is proven minimum (`strips-matching`'s
-    /// `matching_optimal`).
+    /// `matching_optimal`; `strips-contour` only, as are `strips` and `matching_turns`).
     pub matching_optimal: bool,
     /// Cycles and turns of the kept components' cycle covers.
     pub interior_cycles: usize,
@@ -121,8 +127,11 @@ pub struct Certificates {
     /// ends (at most 4 each).
     pub links: usize,
     pub link_turns: i64,
-    /// [`corner_lower_bound`]: a proven lower bound on the turns of any cycle cover or tour.
+    /// [`turn_lower_bound`](super::turn_lower_bound)`.best()`: a proven lower bound on the
+    /// turns of any cycle cover or tour.
     pub lower_bound: u64,
+    /// Σ rooks of the components' star covers (`star-contour` only; 0 for `strips-contour`).
+    pub rooks: usize,
 }
 
 /// The outputs of [`strips_contour`].
@@ -161,38 +170,6 @@ pub fn walk_turns(walk: &[Point]) -> u64 {
     turn_cost(&headings)
 }
 
-/// A proven lower bound on the turns of every cycle cover (hence every tour) milling
-/// `polygon`: max(4, the number of convex corners of P) (module docs).
-///
-/// A corner is convex when P's interior angle there is 90°: on an outer ring, a turn in the
-/// ring's orientation; on a hole, against it.
-pub fn corner_lower_bound(polygon: &Polygon) -> u64 {
-    let mut convex = 0u64;
-    for ring in polygon.rings() {
-        let c = &ring.corners;
-        let m = c.len();
-        let cross = |a: Point, b: Point, d: Point| -> i32 {
-            // The sign of (b − a) × (d − b), exact.
-            let (ux, uy) = (b.x.checked_sub(a.x), b.y.checked_sub(a.y));
-            let (vx, vy) = (d.x.checked_sub(b.x), d.y.checked_sub(b.y));
-            let (Some(ux), Some(uy), Some(vx), Some(vy)) = (ux, uy, vx, vy) else {
-                return 0;
-            };
-            // Axis-parallel edges: one of the products is zero.
-            let s = |r: Rational| (r > Rational::ZERO) as i32 - (r < Rational::ZERO) as i32;
-            s(ux) * s(vy) - s(uy) * s(vx)
-        };
-        let turns: Vec<i32> = (0..m)
-            .map(|i| cross(c[(i + m - 1) % m], c[i], c[(i + 1) % m]))
-            .collect();
-        // The ring turns +4 when counter-clockwise, −4 when clockwise.
-        let orientation: i32 = turns.iter().sum::<i32>().signum();
-        let inward = if ring.hole { -orientation } else { orientation };
-        convex += turns.iter().filter(|&&t| t != 0 && t == inward).count() as u64;
-    }
-    convex.max(4)
-}
-
 /// Our reading of Theorem 5.7's cycle cover and tour of `polygon` (module docs).
 ///
 /// # Arguments
@@ -219,6 +196,27 @@ pub fn corner_lower_bound(polygon: &Polygon) -> u64 {
 /// # Ok::<(), mowmill::Error>(())
 /// ```
 pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsContour> {
+    contour_construction(polygon, options, "strips-matching")
+}
+
+/// Table 1's star-cover line for orthogonal polygons, our reading: the same construction as
+/// [`strips_contour`] with the registered `star-cover` (Theorem 5.1 on pixels: greedy rooks,
+/// one walk of at most 10 turns per star, merged) on each component of R_N instead of
+/// `strips-matching` (module docs; the paper gives no proof for this line).
+///
+/// # Errors
+/// As [`strips_contour`].
+pub fn star_contour(polygon: &Polygon, options: &Options) -> Result<StripsContour> {
+    contour_construction(polygon, options, "star-cover")
+}
+
+/// Steps 1–6 of the module docs with the registered grid algorithm `interior` (which outputs
+/// a cycle cover and a tour) on each component of R_N.
+fn contour_construction(
+    polygon: &Polygon,
+    options: &Options,
+    interior: &str,
+) -> Result<StripsContour> {
     let erosion = feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
     let kept: Vec<Pixel> = interior_pixels(polygon)?
         .pixels()
@@ -229,9 +227,10 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
     let region = Region::from_pixels(kept)?;
     let labels = topology::components(&region);
 
-    // Step 2: strips-matching on each component.
-    let strips_matching = algorithms::find("strips-matching").expect("registered");
+    // Step 2: the interior algorithm on each component.
+    let interior_algorithm = algorithms::find(interior).expect("registered");
     let (mut strips, mut matching_turns, mut matching_optimal) = (0usize, 0u64, true);
+    let mut rooks = 0usize;
     let mut components: Vec<Component> = Vec::new();
     for k in 0..labels.count {
         let pixels: Vec<Pixel> = (0..region.len())
@@ -239,24 +238,27 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
             .map(|i| region.pixel(i))
             .collect();
         let component = Region::from_pixels(pixels.iter().copied())?;
-        (strips_matching.precondition)(&component)?;
-        let solution = (strips_matching.run)(&component, options)?;
+        (interior_algorithm.precondition)(&component)?;
+        let solution = (interior_algorithm.run)(&component, options)?;
         let output = |objective: Objective| {
             solution
                 .outputs
                 .iter()
                 .find(|o| o.objective == objective)
                 .map(|o| Tour::from_cover(&o.cover))
-                .ok_or_else(|| Error::invalid(format!("strips-matching returned no {objective}")))
+                .ok_or_else(|| Error::invalid(format!("{interior} returned no {objective}")))
         };
         let certificate = |key: &str| solution.certificates.get(key).copied().unwrap_or(0);
         strips += certificate("s") as usize;
         matching_turns += certificate("w_m") as u64;
         matching_optimal &= certificate("matching_optimal") == 1;
+        rooks += certificate("rooks") as usize;
         let cover = output(Objective::CcTurns)?.cycles;
         let mut tour = output(Objective::Turns)?.cycles;
         if tour.len() != 1 {
-            return Err(Error::invalid("strips-matching returned no single tour"));
+            return Err(Error::invalid(format!(
+                "{interior} returned no single tour"
+            )));
         }
         components.push(Component {
             pixels,
@@ -422,7 +424,8 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
         rejoined: rejoined as u64,
         links: joined.links.len(),
         link_turns: joined.links.iter().map(|l| l.turns).sum(),
-        lower_bound: corner_lower_bound(polygon),
+        lower_bound: turn_lower_bound(polygon, &erosion)?.best(),
+        rooks,
     };
     Ok(StripsContour {
         cycle_cover,
@@ -434,24 +437,6 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn convex_corners_of_an_l_and_a_holed_square() {
-        let l =
-            Polygon::parse("POLYGON ((0 0, 3 0, 3 1.5, 1.5 1.5, 1.5 3, 0 3, 0 0))", "l").unwrap();
-        assert_eq!(corner_lower_bound(&l), 5);
-        // Clockwise outer ring: the same count.
-        let l_cw =
-            Polygon::parse("POLYGON ((0 0, 0 3, 1.5 3, 1.5 1.5, 3 1.5, 3 0, 0 0))", "l").unwrap();
-        assert_eq!(corner_lower_bound(&l_cw), 5);
-        // A hole's corners are reflex for the hole, convex for P: 4 + 0.
-        let holed = Polygon::parse(
-            "POLYGON ((0 0, 5 0, 5 5, 0 5, 0 0), (2 2, 3 2, 3 3, 2 3, 2 2))",
-            "h",
-        )
-        .unwrap();
-        assert_eq!(corner_lower_bound(&holed), 4);
-    }
 
     #[test]
     fn a_sliver_is_its_contour() {
