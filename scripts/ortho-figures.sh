@@ -5,14 +5,14 @@
 # (the caption is the checker's verdict). One figure per algorithm: ortho-ALGO.svg.
 #
 # Environment (defaults in brackets): FAMILY [ortho-holed], N [16], SEED [6],
-# ALGOS ["corollary4 strips-contour"]. An algorithm this build does not know is skipped with
+# ALGOS ["corollary4 strips-contour star-contour"]. An algorithm this build does not know is skipped with
 # a note; any other failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 FAMILY=${FAMILY:-ortho-holed}
 N=${N:-16}
 SEED=${SEED:-6}
-ALGOS=${ALGOS:-corollary4 strips-contour}
+ALGOS=${ALGOS:-corollary4 strips-contour star-contour}
 cargo build --release --quiet
 bin=target/release/mowmill
 out=results/figures
