@@ -30,8 +30,8 @@ pub const COROLLARY4: Algorithm = Algorithm {
         &[Objective::Length],
         "the paper's \"combining\" is our straight links walked both ways (a spanning tree); its 11/5 rests on the contour bound L_dB <= OPT, which the paper asserts and we have not proven",
     )],
-    requires: "a polygon a unit square can mill (feasibility)",
-    precondition: any_region,
+    requires: "a polygon a unit square can mill (feasibility); on grid regions, a connected one",
+    precondition: crate::algorithms::precondition::connected,
     run: grid_corollary4,
     discrete: None,
     ortho: Some(ortho_corollary4),
@@ -66,8 +66,8 @@ pub const STRIPS_CONTOUR: Algorithm = Algorithm {
             STRIPS_CONTOUR_NOTE,
         ),
     ],
-    requires: "a polygon a unit square can mill (feasibility)",
-    precondition: any_region,
+    requires: "a polygon a unit square can mill (feasibility); on grid regions, a connected one",
+    precondition: crate::algorithms::precondition::connected,
     run: grid_strips_contour,
     discrete: None,
     ortho: Some(ortho_strips_contour),
@@ -101,8 +101,8 @@ pub const STAR_CONTOUR: Algorithm = Algorithm {
             STAR_CONTOUR_NOTE,
         ),
     ],
-    requires: "a polygon a unit square can mill (feasibility)",
-    precondition: any_region,
+    requires: "a polygon a unit square can mill (feasibility); on grid regions, a connected one",
+    precondition: crate::algorithms::precondition::connected,
     run: grid_star_contour,
     discrete: None,
     ortho: Some(ortho_star_contour),
@@ -114,10 +114,6 @@ const STAR_CONTOUR_NOTE: &str = "the paper proves the star cover on pixels only;
 /// Where the implementation departs from the paper's one-line proof idea (module docs of
 /// `strips_contour`).
 const STRIPS_CONTOUR_NOTE: &str = "the paper's \"boundary tour modified to cover subpixels near reflex vertices\" is our contour of the erosion, with unneeded parts dropped by the exact checker, and its \"combine\" our straight links walked both ways; its 4.5 and 6.25 rest on sum OPT_cc(R_i) <= OPT_cc(P) and on the contour's turns against OPT, neither proven here";
-
-fn any_region(_: &Region) -> Result<()> {
-    Ok(())
-}
 
 fn ortho_corollary4(polygon: &Polygon, _: &Options) -> Result<Solution<Tour>> {
     let (tour, c) = corollary4(polygon)?;
