@@ -280,6 +280,14 @@ impl Polygon {
     }
 }
 
+/// The least common multiple of two positive integers; `None` on overflow.
+pub(crate) fn lcm(a: i128, b: i128) -> Option<i128> {
+    fn gcd(a: i128, b: i128) -> i128 {
+        if b == 0 { a } else { gcd(b, a % b) }
+    }
+    (a / gcd(a, b)).checked_mul(b)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -353,12 +361,4 @@ mod tests {
         assert_eq!(p.to_wkt(), "POLYGON ((0 0, 1 0, 1 1, 2 1, 2 2, 0 2, 0 0))");
         assert_eq!(Point::pixel_centre(-1, 2).to_string(), "(-0.5, 2.5)");
     }
-}
-
-/// The least common multiple of two positive integers; `None` on overflow.
-pub(crate) fn lcm(a: i128, b: i128) -> Option<i128> {
-    fn gcd(a: i128, b: i128) -> i128 {
-        if b == 0 { a } else { gcd(b, a % b) }
-    }
-    (a / gcd(a, b)).checked_mul(b)
 }
