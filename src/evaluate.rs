@@ -287,21 +287,20 @@ pub fn evaluate(
     objectives: &[Objective],
     reference: &Reference,
 ) -> Evaluation {
-    let wanted: Vec<Objective> = if objectives.is_empty() {
-        subject.objectives().to_vec()
-    } else {
-        objectives.to_vec()
-    };
-    let start = Instant::now();
-    let outcome = guarded(|| match subject {
+    let run = |wanted: &[Objective]| match subject {
         Subject::Registered(a) => {
             (a.precondition)(region)?;
             (a.run)(region, options)
         }
-        Subject::Outside(o) => o.run(region, &wanted),
-    });
-    let seconds = start.elapsed().as_secs_f64();
-    let (mut eval, solution) = match begin(subject.name(), options, seconds, outcome, &wanted) {
+        Subject::Outside(o) => o.run(region, wanted),
+    };
+    let (mut eval, solution, wanted) = match begin(
+        subject.name(),
+        options,
+        subject.objectives(),
+        objectives,
+        run,
+    ) {
         Ok(started) => started,
         Err(failed) => return failed,
     };
@@ -335,21 +334,29 @@ pub fn evaluate(
     eval
 }
 
-/// The evaluation of a run that ended with `outcome`: `Err` with the finished evaluation when
-/// it failed (every wanted objective missing for its message), else the evaluation holding the
-/// certificates and the solution whose outputs are to be checked.
+/// The start of every evaluation: the objectives wanted (`objectives`, or `all` when it is
+/// empty), the timed and guarded `run`, and then either `Err` with the finished evaluation when
+/// the run failed (every wanted objective missing for its message), or the evaluation holding
+/// the certificates, the solution whose outputs are to be checked, and the wanted objectives.
 #[allow(clippy::type_complexity, clippy::result_large_err)]
 fn begin<C, S>(
     name: &str,
     options: &Options,
-    seconds: f64,
-    outcome: std::result::Result<algorithms::Solution<S>, String>,
-    wanted: &[Objective],
-) -> std::result::Result<(Evaluation<C>, algorithms::Solution<S>), Evaluation<C>> {
+    all: &[Objective],
+    objectives: &[Objective],
+    run: impl FnOnce(&[Objective]) -> Result<algorithms::Solution<S>>,
+) -> std::result::Result<(Evaluation<C>, algorithms::Solution<S>, Vec<Objective>), Evaluation<C>> {
+    let wanted: Vec<Objective> = if objectives.is_empty() {
+        all.to_vec()
+    } else {
+        objectives.to_vec()
+    };
+    let start = Instant::now();
+    let outcome = guarded(|| run(&wanted));
     let mut eval = Evaluation {
         algorithm: name.to_string(),
         options: options.clone(),
-        seconds,
+        seconds: start.elapsed().as_secs_f64(),
         certificates: BTreeMap::new(),
         outputs: Vec::new(),
         missing: Vec::new(),
@@ -358,7 +365,7 @@ fn begin<C, S>(
     match outcome {
         Ok(mut solution) => {
             eval.certificates = std::mem::take(&mut solution.certificates);
-            Ok((eval, solution))
+            Ok((eval, solution, wanted))
         }
         Err(msg) => {
             eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
@@ -472,21 +479,20 @@ pub fn evaluate_discrete(
     objectives: &[Objective],
     reference: &Reference,
 ) -> Evaluation<DiscreteCover> {
-    let wanted: Vec<Objective> = if objectives.is_empty() {
-        algorithm.objectives.to_vec()
-    } else {
-        objectives.to_vec()
-    };
-    let start = Instant::now();
-    let outcome = guarded(|| match algorithm.discrete {
+    let run = |_: &[Objective]| match algorithm.discrete {
         Some(run) => run(inst, options),
         None => Err(Error::invalid(format!(
             "{} runs on grid regions only",
             algorithm.name
         ))),
-    });
-    let seconds = start.elapsed().as_secs_f64();
-    let (mut eval, solution) = match begin(algorithm.name, options, seconds, outcome, &wanted) {
+    };
+    let (mut eval, solution, wanted) = match begin(
+        algorithm.name,
+        options,
+        algorithm.objectives,
+        objectives,
+        run,
+    ) {
         Ok(started) => started,
         Err(failed) => return failed,
     };
@@ -572,21 +578,20 @@ pub fn evaluate_ortho(
     options: &Options,
     objectives: &[Objective],
 ) -> Evaluation<crate::ortho::Tour> {
-    let wanted: Vec<Objective> = if objectives.is_empty() {
-        algorithm.objectives.to_vec()
-    } else {
-        objectives.to_vec()
-    };
-    let start = Instant::now();
-    let outcome = guarded(|| match algorithm.ortho {
+    let run = |_: &[Objective]| match algorithm.ortho {
         Some(run) => run(polygon, options),
         None => Err(Error::invalid(format!(
             "{} does not run on orthogonal polygons with arbitrary coordinates",
             algorithm.name
         ))),
-    });
-    let seconds = start.elapsed().as_secs_f64();
-    let (mut eval, solution) = match begin(algorithm.name, options, seconds, outcome, &wanted) {
+    };
+    let (mut eval, solution, wanted) = match begin(
+        algorithm.name,
+        options,
+        algorithm.objectives,
+        objectives,
+        run,
+    ) {
         Ok(started) => started,
         Err(failed) => return failed,
     };
