@@ -60,7 +60,7 @@
 //! O(T + K log K) for the splicing (T tour points, K candidate links), plus the registered algorithms' time:
 //! quadratic in the worst case, not the paper's O(n) (which works on trapezoids, not pixels).
 
-use super::erosion::{Erosion, feasibility, interior_pixels};
+use super::erosion::{Erosion, feasibility, kept_interior_pixels};
 use super::join::{Rank, add, distance, join, sub};
 use super::polygon::{Point, Polygon};
 use super::rational::Rational;
@@ -209,14 +209,7 @@ pub fn lower_bounds(polygon: &Polygon, erosion: &Erosion) -> Result<LowerBounds>
 pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
     let erosion = feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
     let bounds = lower_bounds(polygon, &erosion)?;
-    let all = interior_pixels(polygon)?;
-    let kept: Vec<Pixel> = all
-        .pixels()
-        .iter()
-        .copied()
-        .filter(|p| erosion.contains(Point::pixel_centre(p.x, p.y)))
-        .collect();
-    let region = Region::from_pixels(kept)?;
+    let region = kept_interior_pixels(polygon, &erosion)?;
     let labels = topology::components(&region);
 
     // Step 2: a tour per component.

@@ -406,6 +406,21 @@ pub fn interior_pixels(polygon: &Polygon) -> crate::Result<crate::Region> {
     )
 }
 
+/// R_N of the kept piece: the integer pixels inside `polygon` whose centre lies in `erosion`
+/// (the pixels a tour in that piece can use; Corollary 4's and Theorem 5.7's interior).
+pub(crate) fn kept_interior_pixels(
+    polygon: &Polygon,
+    erosion: &Erosion,
+) -> crate::Result<crate::Region> {
+    crate::Region::from_pixels(
+        interior_pixels(polygon)?
+            .pixels()
+            .iter()
+            .copied()
+            .filter(|p| erosion.contains(Point::pixel_centre(p.x, p.y))),
+    )
+}
+
 /// The faces of the erosion, as runs per doubled row: a sweep upward over the doubled rows,
 /// keeping for each column of the polygon's cell grid how many of its cells in the band of
 /// rows the cutter's square spans lie outside the polygon.

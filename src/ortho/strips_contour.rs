@@ -83,7 +83,7 @@
 //! candidate links, E pixel sides on the edge of R_N, M contour segments).
 
 use super::check::{check, turn_cost};
-use super::erosion::{feasibility, interior_pixels};
+use super::erosion::{feasibility, kept_interior_pixels};
 use super::join::{Joined, Rank, join};
 use super::polygon::{Point, Polygon};
 use super::tour::Tour;
@@ -218,13 +218,7 @@ fn contour_construction(
     interior: &str,
 ) -> Result<StripsContour> {
     let erosion = feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
-    let kept: Vec<Pixel> = interior_pixels(polygon)?
-        .pixels()
-        .iter()
-        .copied()
-        .filter(|p| erosion.contains(Point::pixel_centre(p.x, p.y)))
-        .collect();
-    let region = Region::from_pixels(kept)?;
+    let region = kept_interior_pixels(polygon, &erosion)?;
     let labels = topology::components(&region);
 
     // Step 2: the interior algorithm on each component.
