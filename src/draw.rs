@@ -785,25 +785,38 @@ impl Picture for Scene<'_> {
             }
         }
 
-        let centre_x = (f64::from(l.width) / 2.0 * k).round() as i32;
-        let font =
-            |size: f64| FontDesc::new(FontFamily::from(FONT_FAMILY), size * k, FontStyle::Normal);
-        if let Some(title) = scene.title {
-            let style = font(TITLE_PX)
-                .color(&TITLE_COLOUR)
-                .pos(Pos::new(HPos::Center, VPos::Top));
-            let y = (MARGIN_PX * k).round() as i32;
-            area.draw(&Text::new(title, (centre_x, y), style))?;
-        }
-        if let Some(caption) = scene.caption {
-            let style = font(CAPTION_PX)
-                .color(&CAPTION_COLOUR)
-                .pos(Pos::new(HPos::Center, VPos::Bottom));
-            let y = ((f64::from(l.height) - MARGIN_PX) * k).round() as i32;
-            area.draw(&Text::new(caption, (centre_x, y), style))?;
-        }
+        draw_title_and_caption(area, (l.width, l.height), k, scene.title, scene.caption)?;
         area.present()
     }
+}
+
+/// The title centred at the top and the caption centred at the bottom of a figure of
+/// `size` (width, height) layout pixels, drawn at scale `k`; every figure's.
+pub(crate) fn draw_title_and_caption<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    size: (u32, u32),
+    k: f64,
+    title: Option<&str>,
+    caption: Option<&str>,
+) -> DrawResult<DB> {
+    let centre_x = (f64::from(size.0) / 2.0 * k).round() as i32;
+    let font =
+        |size: f64| FontDesc::new(FontFamily::from(FONT_FAMILY), size * k, FontStyle::Normal);
+    if let Some(title) = title {
+        let style = font(TITLE_PX)
+            .color(&TITLE_COLOUR)
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        let y = (MARGIN_PX * k).round() as i32;
+        area.draw(&Text::new(title, (centre_x, y), style))?;
+    }
+    if let Some(caption) = caption {
+        let style = font(CAPTION_PX)
+            .color(&CAPTION_COLOUR)
+            .pos(Pos::new(HPos::Center, VPos::Bottom));
+        let y = ((f64::from(size.1) - MARGIN_PX) * k).round() as i32;
+        area.draw(&Text::new(caption, (centre_x, y), style))?;
+    }
+    Ok(())
 }
 
 /// A picture drawn by plotters on any backend, written as SVG or PNG by [`write_picture`].

@@ -24,7 +24,7 @@ use crate::discrete::{Discrete, VertexWalk};
 use crate::draw::{
     AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DETAIL_LIMIT, DrawOptions, FONT_FAMILY, GRID_LINE,
     JOG, MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, REGION_FILL, STRAND_GAP, STRAND_SPREAD,
-    TITLE_COLOUR, TITLE_PX, ensure_fonts,
+    TITLE_PX, draw_title_and_caption, ensure_fonts,
 };
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -986,21 +986,7 @@ fn render<DB: DrawingBackend>(
         }
     }
 
-    let centre_x = (f64::from(l.width) / 2.0 * k).round() as i32;
-    if let Some(title) = scene.title {
-        let style = font(TITLE_PX)
-            .color(&TITLE_COLOUR)
-            .pos(Pos::new(HPos::Center, VPos::Top));
-        let y = (MARGIN_PX * k).round() as i32;
-        area.draw(&Text::new(title, (centre_x, y), style))?;
-    }
-    if let Some(caption) = scene.caption {
-        let style = font(CAPTION_PX)
-            .color(&CAPTION_COLOUR)
-            .pos(Pos::new(HPos::Center, VPos::Bottom));
-        let y = ((f64::from(l.height) - MARGIN_PX) * k).round() as i32;
-        area.draw(&Text::new(caption, (centre_x, y), style))?;
-    }
+    draw_title_and_caption(area, (l.width, l.height), k, scene.title, scene.caption)?;
     area.present()
 }
 

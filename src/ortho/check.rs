@@ -255,14 +255,16 @@ fn recount(polygon: &Polygon, tour: &Tour, report: &mut Report) -> Result<Option
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    fn polygon(text: &str) -> Polygon {
+    /// A polygon from WKT text (the unit tests of `ortho` share these two helpers).
+    pub(in crate::ortho) fn polygon(text: &str) -> Polygon {
         Polygon::parse(text, "p.wkt").unwrap()
     }
 
-    fn tour(points: &[(&str, &str)]) -> Tour {
+    /// A walk from decimal or `p/q` coordinate pairs.
+    pub(in crate::ortho) fn tour(points: &[(&str, &str)]) -> Tour {
         let q = |s: &str| Rational::parse_coordinate(s).unwrap();
         Tour::new(
             points

@@ -661,20 +661,7 @@ fn witness_mark<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn polygon(text: &str) -> Polygon {
-        Polygon::parse(text, "p.wkt").unwrap()
-    }
-
-    fn tour(points: &[(&str, &str)]) -> Tour {
-        let q = |s: &str| Rational::parse_coordinate(s).unwrap();
-        Tour::new(
-            points
-                .iter()
-                .map(|&(x, y)| Point::new(q(x), q(y)))
-                .collect(),
-        )
-    }
+    use crate::ortho::check::tests::{polygon, tour};
 
     #[test]
     fn the_union_of_overlapping_boxes_is_disjoint_with_its_outline() {
