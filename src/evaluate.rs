@@ -596,13 +596,25 @@ pub fn evaluate_ortho(
         Err(failed) => return failed,
     };
     let subject = Subject::Registered(algorithm);
+    // The lower bounds once per evaluation: one for length, one shared by the turn objectives.
+    let mut bounds: BTreeMap<bool, (crate::ortho::Rational, String)> = BTreeMap::new();
     for objective in wanted {
         let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
             let why = format!("{} returned no {objective} output", algorithm.name);
             eval.missing.push((objective, why));
             continue;
         };
-        match judge_ortho(subject, polygon, options, objective, &output.cover) {
+        let is_length = objective == Objective::Length;
+        let bound = match bounds.get(&is_length) {
+            Some(known) => Ok(known.clone()),
+            None => ortho_bound(polygon, objective).inspect(|found| {
+                bounds.insert(is_length, found.clone());
+            }),
+        };
+        let judged = bound.and_then(|bound| {
+            judge_ortho(subject, polygon, options, objective, &output.cover, bound)
+        });
+        match judged {
             Ok(checked) => eval.outputs.push(checked),
             Err(e) => eval.missing.push((objective, e.to_string())),
         }
@@ -610,13 +622,15 @@ pub fn evaluate_ortho(
     eval
 }
 
-/// Checks one ortho output exactly and decides the subject's guarantees on it.
+/// Checks one ortho output exactly and decides the subject's guarantees on it, against
+/// `bound`, the [`ortho_bound`] of its objective (with its source).
 fn judge_ortho(
     subject: Subject<'_>,
     polygon: &crate::ortho::Polygon,
     options: &Options,
     objective: Objective,
     cover: &crate::ortho::Tour,
+    (bound, lb_source): (crate::ortho::Rational, String),
 ) -> Result<Checked<crate::ortho::Tour>> {
     use crate::ortho::Rational;
     let report = crate::ortho::check(polygon, cover)?;
@@ -652,7 +666,6 @@ fn judge_ortho(
         u64::try_from(scaled.floor().max(0)).map_err(|_| too_fine())
     };
     let length = in_units(report.length)?;
-    let (bound, lb_source) = ortho_bound(polygon, objective)?;
     let (value, lower_bound) = match objective {
         Objective::Length => (length, in_units(bound)?),
         Objective::Turns | Objective::CcTurns => (report.turns, bound.floor().max(0) as u64),
