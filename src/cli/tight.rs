@@ -129,7 +129,10 @@ pub fn write_claims(
     let path = out.join("claims.md");
     std::fs::write(&path, &md).map_err(|e| Error::io(&path, e))?;
     println!("{md}");
-    Ok(table.iter().filter(|c| c.verdict == "violated").count())
+    let findings = out.join("findings.md");
+    std::fs::write(&findings, claims::findings_markdown(table))
+        .map_err(|e| Error::io(&findings, e))?;
+    Ok(table.iter().filter(|c| claims::is_violated(c)).count())
 }
 
 /// Exits 1 when any claim is violated (the table says whether by the paper's algorithm or by
@@ -161,7 +164,7 @@ pub fn claims_command(
         Some(out) => write_claims(&table, Path::new(from), out)?,
         None => {
             println!("{}", claims::markdown(&table, from));
-            table.iter().filter(|c| c.verdict == "violated").count()
+            table.iter().filter(|c| claims::is_violated(c)).count()
         }
     };
     if let Some(dir) = findings {

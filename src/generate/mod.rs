@@ -308,3 +308,25 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
     ];
     Ok((GridFile::with_meta(region, &meta), provenance))
 }
+
+/// Whether `family` (the `family` column of a result row) is one of the structured families of
+/// issue 29: the shapes the papers' proofs find hardest, built to stress them (docs/claims.md,
+/// "Structured families"). A claim "holds" only when some of its decided instances are of one.
+pub fn is_structured(family: &str) -> bool {
+    const STRUCTURED: [&str; 13] = [
+        "hole-lattice",
+        "comb",
+        "double-comb",
+        "spiral",
+        "windows",
+        "outlines",
+        "ring",
+        "corridor-star",
+        "hub-path",
+        "collinear-bridges",
+        "thin-arms",
+        "ortho-sliver",
+        "ortho-narrow",
+    ];
+    STRUCTURED.contains(&family)
+}

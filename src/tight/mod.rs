@@ -18,6 +18,7 @@
 //! reached`, a gap of our construction and not evidence against the theorem.
 
 pub mod claims;
+pub mod evidence;
 pub mod figures;
 
 use crate::algorithms::{self, Merge, Objective as AlgoObjective, Options};

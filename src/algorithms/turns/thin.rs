@@ -220,6 +220,16 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
             &crate::algorithms::theorems::TURNS_COR_5_3_TOUR,
             &[crate::algorithms::Objective::Turns],
         ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_THM_5_6,
+            &[crate::algorithms::Objective::Turns],
+            crate::algorithms::theorems::COVERAGE4_NOTE,
+        ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_TABLE_1,
+            &[crate::algorithms::Objective::Turns],
+            crate::algorithms::theorems::COVERAGE4_NOTE,
+        ),
     ],
     requires: "a connected thin region (no 2x2 block)",
     precondition,
@@ -285,6 +295,16 @@ pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
         crate::algorithms::theorems::Claim::paper(
             &crate::algorithms::theorems::TURNS_THM_5_9,
             &[crate::algorithms::Objective::Turns],
+        ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_THM_5_6,
+            &[crate::algorithms::Objective::Turns],
+            crate::algorithms::theorems::COVERAGE4_NOTE,
+        ),
+        crate::algorithms::theorems::Claim::reading(
+            &crate::algorithms::theorems::TURNS_TABLE_1,
+            &[crate::algorithms::Objective::Turns],
+            crate::algorithms::theorems::COVERAGE4_NOTE,
         ),
     ],
     requires: "a connected thin region (no 2x2 block)",

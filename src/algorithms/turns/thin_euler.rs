@@ -171,9 +171,12 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
         &crate::algorithms::theorems::TURNS_THM_5_8,
         "Theorem 5.8 of Optimal covering tours with turn costs",
     )],
-    claims: &[crate::algorithms::theorems::Claim::paper(
+    // The paper states Theorem 5.8 without its algorithm (the full version [4] has it): the
+    // straight-through Euler decomposition joined at crossings is our construction.
+    claims: &[crate::algorithms::theorems::Claim::reading(
         &crate::algorithms::theorems::TURNS_THM_5_8,
         &[crate::algorithms::Objective::Turns],
+        "the paper gives no algorithm for Theorem 5.8 (it is in the full version [4]); the straight-through Euler decomposition joined at crossings is our construction",
     )],
     requires: "a connected thin region whose pixels all have even degree",
     precondition,
