@@ -20,7 +20,7 @@ pub struct SampleArgs {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// About this many rows (each sampled instance's exact rows included).
-    #[arg(long, default_value_t = 200)]
+    #[arg(long, default_value_t = 2000)]
     pub count: usize,
     /// Seed of the draw.
     #[arg(long, default_value_t = 1)]

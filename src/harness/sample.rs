@@ -63,7 +63,7 @@ pub struct DrawOptions {
 impl Default for DrawOptions {
     fn default() -> Self {
         DrawOptions {
-            count: 200,
+            count: 2000,
             seed: 1,
             max_seconds: 120.0,
         }
