@@ -192,36 +192,28 @@ pub fn draw(from: &[PathBuf], out: &Path, opts: &DrawOptions) -> Result<Index> {
     let mut sampler = Sampler::new(&runs, &candidates);
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed);
     // First every stratum, then random rows under the budget.
-    let mut strata: BTreeMap<String, Vec<(usize, usize)>> = BTreeMap::new();
-    for &(ri, k) in &candidates {
-        for s in strata_of(&runs[ri], &runs[ri].rows[k]) {
-            strata.entry(s).or_default().push((ri, k));
+    for members in sampler.strata.clone() {
+        if !members.iter().any(|&c| sampler.chosen[c]) {
+            if let Some(pick) = sampler.pick(&members, f64::INFINITY, &mut rng) {
+                sampler.add(pick);
+            }
         }
     }
-    for (stratum, members) in &strata {
-        if sampler.covered.contains(stratum) {
-            continue;
-        }
-        if let Some(pick) = sampler.pick(members, f64::INFINITY, &mut rng) {
-            sampler.add(pick);
-        }
-    }
-    while sampler.chosen.len() < opts.count {
-        let pool: Vec<(usize, usize)> = candidates
-            .iter()
-            .copied()
-            .filter(|c| !sampler.chosen.contains(c))
-            .collect();
+    let all: Vec<usize> = (0..candidates.len()).collect();
+    while sampler.count < opts.count {
         let left = opts.max_seconds - sampler.seconds;
-        match sampler.pick(&pool, left, &mut rng) {
+        match sampler.pick(&all, left, &mut rng) {
             Some(pick) => sampler.add(pick),
             None => break,
         }
     }
+    let mut chosen: Vec<(usize, usize)> = (0..candidates.len())
+        .filter(|&c| sampler.chosen[c])
+        .map(|c| candidates[c])
+        .collect();
 
     // Write: rows, manifests, instance files, index.
     prepare_out(out)?;
-    let mut chosen: Vec<(usize, usize)> = sampler.chosen.iter().copied().collect();
     chosen.sort_by(|a, b| {
         let (x, y) = (&runs[a.0].rows[a.1], &runs[b.0].rows[b.1]);
         (a.0, x.key()).cmp(&(b.0, y.key()))
@@ -393,109 +385,133 @@ fn prepare_out(out: &Path) -> Result<()> {
     std::fs::create_dir_all(&manifests).map_err(|e| Error::io(&manifests, e))
 }
 
-/// The draw's state: chosen rows, what they cost, which strata they cover.
-struct Sampler<'a> {
-    runs: &'a [Run],
-    chosen: BTreeSet<(usize, usize)>,
-    instances: BTreeSet<(usize, &'a str)>,
-    /// (run, instance, algorithm column) already paid for.
-    variants: BTreeSet<(usize, &'a str, &'a str)>,
-    covered: BTreeSet<String>,
-    seconds: f64,
-    /// Per (run, instance): its eligible exact rows and their seconds.
-    exact: HashMap<(usize, &'a str), (Vec<usize>, f64)>,
-    /// Per (run, instance, algorithm column): the seconds of one run of it.
-    variant_seconds: HashMap<(usize, &'a str, &'a str), f64>,
+/// One candidate row as the draw sees it: integer ids of its instance and algorithm variant.
+struct Candidate {
+    instance: usize,
+    /// The (instance, algorithm column) run it belongs to; `None` for an exact row.
+    variant: Option<usize>,
 }
 
-impl<'a> Sampler<'a> {
-    fn new(runs: &'a [Run], candidates: &[(usize, usize)]) -> Sampler<'a> {
-        let mut exact: HashMap<(usize, &str), (Vec<usize>, f64)> = HashMap::new();
-        let mut variant_seconds: HashMap<(usize, &str, &str), f64> = HashMap::new();
-        for &(ri, k) in candidates {
+/// The draw's state over the candidate rows (indices into the draw's candidate list): which
+/// are chosen and what the chosen ones cost.
+struct Sampler {
+    candidates: Vec<Candidate>,
+    /// Per instance: its exact rows and their recorded seconds.
+    exact: Vec<(Vec<usize>, f64)>,
+    /// Per variant: the recorded seconds of one run of it (every objective records them).
+    variant_seconds: Vec<f64>,
+    /// Per stratum (in the order of their names): its candidates.
+    strata: Vec<Vec<usize>>,
+    chosen: Vec<bool>,
+    instance_chosen: Vec<bool>,
+    variant_chosen: Vec<bool>,
+    count: usize,
+    seconds: f64,
+}
+
+impl Sampler {
+    fn new(runs: &[Run], candidates: &[(usize, usize)]) -> Sampler {
+        let mut instance_ids: HashMap<(usize, &str), usize> = HashMap::new();
+        let mut variant_ids: HashMap<(usize, &str, &str), usize> = HashMap::new();
+        let mut strata: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+        let mut exact: Vec<(Vec<usize>, f64)> = Vec::new();
+        let mut variant_seconds: Vec<f64> = Vec::new();
+        let mut out = Vec::with_capacity(candidates.len());
+        for (c, &(ri, k)) in candidates.iter().enumerate() {
             let r = &runs[ri].rows[k];
-            if r.algorithm == EXACT {
-                let e = exact.entry((ri, r.instance.as_str())).or_default();
-                e.0.push(k);
-                e.1 += r.seconds;
-            } else {
-                // Every objective of one run of an algorithm records that run's seconds.
-                let s = variant_seconds
-                    .entry((ri, r.instance.as_str(), r.algorithm.as_str()))
-                    .or_default();
-                *s = s.max(r.seconds);
+            let next = instance_ids.len();
+            let instance = *instance_ids.entry((ri, &r.instance)).or_insert(next);
+            if instance == exact.len() {
+                exact.push((Vec::new(), 0.0));
             }
+            let variant = if r.algorithm == EXACT {
+                exact[instance].0.push(c);
+                exact[instance].1 += r.seconds;
+                None
+            } else {
+                let next = variant_ids.len();
+                let v = *variant_ids
+                    .entry((ri, &r.instance, &r.algorithm))
+                    .or_insert(next);
+                if v == variant_seconds.len() {
+                    variant_seconds.push(0.0);
+                }
+                variant_seconds[v] = variant_seconds[v].max(r.seconds);
+                Some(v)
+            };
+            for stratum in strata_of(&runs[ri], r) {
+                strata.entry(stratum).or_default().push(c);
+            }
+            out.push(Candidate { instance, variant });
         }
         Sampler {
-            runs,
-            chosen: BTreeSet::new(),
-            instances: BTreeSet::new(),
-            variants: BTreeSet::new(),
-            covered: BTreeSet::new(),
-            seconds: 0.0,
+            chosen: vec![false; out.len()],
+            instance_chosen: vec![false; exact.len()],
+            variant_chosen: vec![false; variant_seconds.len()],
+            candidates: out,
             exact,
             variant_seconds,
+            strata: strata.into_values().collect(),
+            count: 0,
+            seconds: 0.0,
         }
     }
 
-    /// The recorded seconds adding row `(ri, k)` costs.
-    fn cost(&self, (ri, k): (usize, usize)) -> f64 {
-        let r = &self.runs[ri].rows[k];
+    /// The recorded seconds adding candidate `c` costs.
+    fn cost(&self, c: usize) -> f64 {
+        let cand = &self.candidates[c];
         let mut cost = 0.0;
-        if !self.instances.contains(&(ri, r.instance.as_str())) {
-            cost += self
-                .exact
-                .get(&(ri, r.instance.as_str()))
-                .map_or(0.0, |e| e.1);
+        if !self.instance_chosen[cand.instance] {
+            cost += self.exact[cand.instance].1;
         }
-        let v = (ri, r.instance.as_str(), r.algorithm.as_str());
-        if r.algorithm != EXACT && !self.variants.contains(&v) {
-            cost += self.variant_seconds.get(&v).copied().unwrap_or(0.0);
+        if let Some(v) = cand.variant.filter(|&v| !self.variant_chosen[v]) {
+            cost += self.variant_seconds[v];
         }
         cost
     }
 
-    /// A row of `pool` costing at most `left`, drawn with weight 1 / (floor + cost).
-    fn pick(
-        &self,
-        pool: &[(usize, usize)],
-        left: f64,
-        rng: &mut ChaCha8Rng,
-    ) -> Option<(usize, usize)> {
-        let weighted: Vec<((usize, usize), f64)> = pool
-            .iter()
-            .map(|&c| (c, self.cost(c)))
-            .filter(|&(_, cost)| cost <= left)
-            .map(|(c, cost)| (c, 1.0 / (COST_FLOOR + cost)))
-            .collect();
-        let total: f64 = weighted.iter().map(|w| w.1).sum();
-        if weighted.is_empty() || total <= 0.0 {
+    /// An unchosen candidate of `pool` costing at most `left`, drawn with weight
+    /// 1 / (floor + cost).
+    fn pick(&self, pool: &[usize], left: f64, rng: &mut ChaCha8Rng) -> Option<usize> {
+        let weight = |c: usize| {
+            let cost = self.cost(c);
+            (!self.chosen[c] && cost <= left).then(|| 1.0 / (COST_FLOOR + cost))
+        };
+        let total: f64 = pool.iter().filter_map(|&c| weight(c)).sum();
+        if total <= 0.0 {
             return None;
         }
         let mut t = rng.random::<f64>() * total;
-        for &(c, w) in &weighted {
-            if t < w {
-                return Some(c);
+        let mut last = None;
+        for &c in pool {
+            if let Some(w) = weight(c) {
+                if t < w {
+                    return Some(c);
+                }
+                t -= w;
+                last = Some(c);
             }
-            t -= w;
         }
-        weighted.last().map(|w| w.0)
+        last
     }
 
-    /// Adds a row, with the exact rows of its instance.
-    fn add(&mut self, (ri, k): (usize, usize)) {
-        self.seconds += self.cost((ri, k));
-        let runs = self.runs;
-        let r = &runs[ri].rows[k];
-        let inst = r.instance.as_str();
-        let mut added = vec![k];
-        if self.instances.insert((ri, inst)) {
-            added.extend(self.exact.get(&(ri, inst)).map_or(&[][..], |e| &e.0[..]));
+    /// Adds a candidate, with the exact rows of its instance.
+    fn add(&mut self, c: usize) {
+        self.seconds += self.cost(c);
+        let (instance, variant) = (self.candidates[c].instance, self.candidates[c].variant);
+        let mut added = vec![c];
+        if !self.instance_chosen[instance] {
+            self.instance_chosen[instance] = true;
+            added.extend(self.exact[instance].0.iter().copied());
         }
-        self.variants.insert((ri, inst, r.algorithm.as_str()));
-        for k in added {
-            self.chosen.insert((ri, k));
-            self.covered.extend(strata_of(&runs[ri], &runs[ri].rows[k]));
+        if let Some(v) = variant {
+            self.variant_chosen[v] = true;
+        }
+        for c in added {
+            if !self.chosen[c] {
+                self.chosen[c] = true;
+                self.count += 1;
+            }
         }
     }
 }
