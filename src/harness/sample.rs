@@ -193,10 +193,10 @@ pub fn draw(from: &[PathBuf], out: &Path, opts: &DrawOptions) -> Result<Index> {
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed);
     // First every stratum, then random rows under the budget.
     for members in sampler.strata.clone() {
-        if !members.iter().any(|&c| sampler.chosen[c]) {
-            if let Some(pick) = sampler.pick(&members, f64::INFINITY, &mut rng) {
-                sampler.add(pick);
-            }
+        if !members.iter().any(|&c| sampler.chosen[c])
+            && let Some(pick) = sampler.pick(&members, f64::INFINITY, &mut rng)
+        {
+            sampler.add(pick);
         }
     }
     let all: Vec<usize> = (0..candidates.len()).collect();
@@ -597,6 +597,14 @@ pub fn check(dir: &Path, jobs: Option<usize>) -> Result<CheckReport> {
     let rows = read_rows(&dir.join(SAMPLE_CSV))?;
     let mut configs: HashMap<&str, (&str, Config)> = HashMap::new();
     for run in &index.runs {
+        // A name is a folder of the sample, never a path out of it.
+        if run.name.is_empty() || run.name.starts_with('.') || run.name.contains(['/', '\\']) {
+            return Err(Error::invalid(format!(
+                "{}: run name {:?}: expected a folder name (no `/`, `\\`, leading `.`)",
+                index_path.display(),
+                run.name
+            )));
+        }
         let path = dir.join("manifests").join(format!("{}.json", run.name));
         let manifest = Recorded::read_path(&path)?;
         configs.insert(&run.run_id, (&run.name, recorded_config(&manifest)?));
