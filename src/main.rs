@@ -14,7 +14,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 mod cli;
-use cli::{algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, solve::*, tight::*};
+use cli::{
+    algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, sample::*, solve::*, tight::*,
+};
 
 #[derive(Parser)]
 #[command(
@@ -65,6 +67,9 @@ enum Command {
     Hunt(HuntArgs),
     /// Run a benchmark suite: instances x algorithms x exact objectives -> CSV, stats, plots.
     Bench(BenchArgs),
+    /// Draw a fixed random sample of runs' rows (with their instance files), or re-run a
+    /// sample and compare every row with it (--check; exit 1 on a difference).
+    Sample(SampleArgs),
     /// Redraw the plots of a run directory from its CSV files.
     Plot {
         /// Run directory (holding results.csv).
@@ -244,6 +249,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             claims_command(&from, &tight, &hunt, out.as_deref(), findings.as_deref())
         }
         Command::Bench(args) => bench_command(args),
+        Command::Sample(args) => sample_command(args),
         Command::Hunt(args) => hunt_command(args),
         Command::Exact(args) => exact_command(args),
         Command::Plot { dir } => {

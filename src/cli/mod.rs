@@ -8,6 +8,7 @@ pub mod export;
 pub mod generate;
 pub mod hunt;
 pub mod ortho;
+pub mod sample;
 pub mod solve;
 pub mod tight;
 

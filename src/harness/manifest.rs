@@ -162,7 +162,13 @@ pub struct Recorded {
 impl Recorded {
     /// Reads `dir/manifest.json`; errors name the file.
     pub fn read(dir: &Path) -> Result<Recorded> {
-        let path = dir.join("manifest.json");
+        Recorded::read_path(&dir.join("manifest.json"))
+    }
+
+    /// Reads a manifest from a file of any name (a sample keeps its runs' manifests as
+    /// `manifests/RUN.json`); errors name the file.
+    pub fn read_path(path: &Path) -> Result<Recorded> {
+        let path = path.to_path_buf();
         let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
         let json = serde_json::from_str(&text).map_err(|e| {
             Error::parse(

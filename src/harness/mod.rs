@@ -3,7 +3,8 @@
 //! Data flows one way: [`config`] expands a suite into instances; [`run`] generates them, runs
 //! the exact solvers and the registered algorithms, checks every output with the checker and
 //! appends [`rows`] to `results.csv`; [`stats`] aggregates the rows into `stats.csv`; [`plots`]
-//! draws them; [`gate`] compares a run with a committed baseline; [`merge`] joins shards;
+//! draws them; [`gate`] compares a run with a committed baseline; [`sample`] draws and re-runs
+//! a committed sample of a run's rows; [`merge`] joins shards;
 //! [`lock`] keeps two runs out of one output directory.
 
 pub mod config;
@@ -15,6 +16,7 @@ pub mod plots;
 pub mod progress;
 pub mod rows;
 pub mod run;
+pub mod sample;
 pub mod stats;
 pub mod summary;
 

@@ -281,29 +281,7 @@ fn run_instance(
         ..Row::default()
     };
     let error = match materialize(spec, &opts.out) {
-        Ok((Loaded::Grid(region), sha)) => {
-            let mut b = base.clone();
-            b.sha256 = sha;
-            b.n = region.len() as u64;
-            b.holes = topology::holes(&region).count as u64;
-            b.set_params("grid", &Model::Grid(&region).params());
-            return run_on_region(&region, b, spec, config, done);
-        }
-        Ok((Loaded::Discrete(inst), sha)) => {
-            let mut b = base.clone();
-            b.sha256 = sha;
-            b.n = inst.len() as u64;
-            b.set_params("discrete", &inst.params());
-            return run_on_discrete(&inst, b, spec, config, done);
-        }
-        Ok((Loaded::Ortho(polygon), sha)) => {
-            let mut b = base.clone();
-            b.sha256 = sha;
-            b.n = Model::Ortho(&polygon).len() as u64;
-            b.holes = polygon.rings().iter().filter(|r| r.hole).count() as u64;
-            b.model = "ortho".to_string();
-            return run_on_ortho(&polygon, b, spec, done);
-        }
+        Ok((loaded, sha)) => return run_loaded(&loaded, sha, base, spec, config, done),
         Err(e) => e,
     };
     let key = (spec.name.clone(), "instance".to_string(), "-".to_string());
@@ -318,8 +296,47 @@ fn run_instance(
     }]
 }
 
+/// The rows of one loaded instance (`sha` the sha256 of its file, `base` the row's instance
+/// columns): the config's exact objectives, then the algorithms of its model. Bench calls it
+/// on every instance it generates or reads; `mowmill sample --check` on the committed copies
+/// of sampled instances ([`super::sample`]), so that both go through the same code.
+pub(crate) fn run_loaded(
+    loaded: &Loaded,
+    sha: String,
+    base: Row,
+    spec: &InstanceSpec,
+    config: &Config,
+    done: &HashMap<(String, String, String), Row>,
+) -> Vec<Row> {
+    match loaded {
+        Loaded::Grid(region) => {
+            let mut b = base;
+            b.sha256 = sha;
+            b.n = region.len() as u64;
+            b.holes = topology::holes(region).count as u64;
+            b.set_params("grid", &Model::Grid(region).params());
+            run_on_region(region, b, spec, config, done)
+        }
+        Loaded::Discrete(inst) => {
+            let mut b = base;
+            b.sha256 = sha;
+            b.n = inst.len() as u64;
+            b.set_params("discrete", &inst.params());
+            run_on_discrete(inst, b, spec, config, done)
+        }
+        Loaded::Ortho(polygon) => {
+            let mut b = base;
+            b.sha256 = sha;
+            b.n = Model::Ortho(polygon).len() as u64;
+            b.holes = polygon.rings().iter().filter(|r| r.hole).count() as u64;
+            b.model = "ortho".to_string();
+            run_on_ortho(polygon, b, spec, done)
+        }
+    }
+}
+
 /// An instance of one of the models, as read or generated.
-enum Loaded {
+pub(crate) enum Loaded {
     Grid(Region),
     Discrete(Discrete),
     Ortho(crate::ortho::Polygon),
