@@ -278,13 +278,13 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             a.min_n, a.max_n
         )));
     }
-    let exact_time_limit = a.exact_time_limit.unwrap_or(
-        if a.against.as_deref() == Some("best") {
+    let exact_time_limit = a
+        .exact_time_limit
+        .unwrap_or(if a.against.as_deref() == Some("best") {
             30.0
         } else {
             20.0
-        },
-    );
+        });
     if !(exact_time_limit.is_finite() && exact_time_limit > 0.0) {
         return Err(bad(format!(
             "--exact-time-limit {exact_time_limit}: expected a positive number of seconds"
@@ -391,7 +391,8 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         opts.max_n,
         match against {
             Against::Bound => " (an over-estimate of the ratio to OPT)",
-            Against::Best => " (the best checked walk known: an under-estimate of the ratio to OPT)",
+            Against::Best =>
+                " (the best checked walk known: an under-estimate of the ratio to OPT)",
             Against::Opt => "",
         }
     );

@@ -132,3 +132,42 @@ pub fn better(a: Option<BestWalk>, b: Option<BestWalk>) -> Option<BestWalk> {
     }
     best
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// On a ring of 16 pixels (6×4, 2×4 hole), milling25's tour has length 32 but the thin
+    /// algorithms' tours walk the ring once (16): the best walk is theirs, not milling25's.
+    #[test]
+    fn best_takes_the_shortest_checked_walk_of_any_algorithm() {
+        let ring = Region::from_ascii("######\n#....#\n#....#\n######\n");
+        let opts = Options::default();
+        let m25 = algorithms::find("milling25").unwrap();
+        let own = (m25.run)(&ring, &opts).unwrap();
+        let own = own
+            .outputs
+            .iter()
+            .find(|o| o.objective == Objective::Length)
+            .unwrap();
+        assert_eq!(
+            checked_value(&ring, &own.cover, Objective::Length, &opts),
+            Some(32)
+        );
+        let best = best_of_algorithms(&ring, Objective::Length, &opts).unwrap();
+        assert_eq!(best.value, 16);
+        // thin-cc, thin-merge and thin-euler tie; the first in registry order is kept.
+        assert_eq!(best.source, "thin-cc:turns");
+        assert_eq!(
+            checked_value(&ring, &best.cover, Objective::Length, &opts),
+            Some(16)
+        );
+        // For turns the same tour's 4 turns are the best (milling25's has 12).
+        let best = best_of_algorithms(&ring, Objective::Turns, &opts).unwrap();
+        assert_eq!(best.value, 4);
+        // A cycle cover of two cycles is not a tour: it never carries `length`.
+        let mut two = best.cover.clone();
+        two.cycles.push(two.cycles[0].clone());
+        assert_eq!(checked_value(&ring, &two, Objective::Length, &opts), None);
+    }
+}

@@ -196,3 +196,96 @@ pub fn random(r: &Region, rng: &mut ChaCha8Rng) -> Option<Region> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::topology;
+
+    fn connected(r: &Region) -> bool {
+        topology::components(r).count == 1
+    }
+
+    /// Each lattice on the 5×5 interior of a 7×7 square removes its documented cells: square
+    /// (1,1),(1,3),(3,1),(3,3); staggered 2 + 3; diagonal one per row; sparse (1|4, 1|4).
+    #[test]
+    fn hole_lattices_remove_the_documented_cells() {
+        let square = Region::rectangle(7, 7);
+        let inner = Rect {
+            x0: 1,
+            y0: 1,
+            w: 5,
+            h: 5,
+        };
+        for (lattice, holes) in [
+            (Lattice::Square, 4),
+            (Lattice::Staggered, 5),
+            (Lattice::Diagonal, 5),
+            (Lattice::Sparse, 4),
+        ] {
+            let r = hole_lattice(&square, inner, lattice).unwrap();
+            assert_eq!(r.len(), 49 - holes, "{lattice:?}");
+            assert_eq!(topology::holes(&r).count, holes, "{lattice:?}");
+            assert!(connected(&r), "{lattice:?}");
+        }
+        // The staggered lattice leaves no full 2×2 block inside a 9×9 one.
+        let r = hole_lattice(&Region::rectangle(9, 9), inner, Lattice::Staggered).unwrap();
+        let c = Region::from_pixels(
+            r.pixels()
+                .iter()
+                .copied()
+                .filter(|p| (1..=5).contains(&p.x) && (1..=5).contains(&p.y)),
+        )
+        .unwrap();
+        assert!(topology::summary(&c).thin);
+    }
+
+    /// The comb keeps the left column and the even rows: 5 + 2 · 4 + ... = 17 of 25 pixels,
+    /// connected and of width 1.
+    #[test]
+    fn thin_comb_leaves_a_width_one_comb() {
+        let r = thin_comb(
+            &Region::rectangle(5, 5),
+            Rect {
+                x0: 0,
+                y0: 0,
+                w: 5,
+                h: 5,
+            },
+        )
+        .unwrap();
+        assert_eq!(r.len(), 17);
+        assert!(connected(&r));
+        assert!(topology::summary(&r).thin);
+    }
+
+    /// Widening a row of 5 upwards gives a 5×2 rectangle; copying a 3×3 ring to its right
+    /// gives two rings (16 pixels, 2 holes); copying a band of 2 columns of a 4×3 rectangle
+    /// gives a 6×3 one.
+    #[test]
+    fn widen_and_copies_grow_the_region_as_documented() {
+        let all = |w, h| Rect { x0: 0, y0: 0, w, h };
+        let r = widen(&Region::rectangle(5, 1), all(5, 1), (0, 1)).unwrap();
+        assert_eq!(r.len(), 10);
+        assert_eq!(r.bbox().height(), 2);
+        let ring = Region::from_ascii("###\n#.#\n###\n");
+        let r = copy_motif(&ring, all(3, 3), true).unwrap();
+        assert_eq!(r.len(), 16);
+        assert_eq!(topology::holes(&r).count, 2);
+        assert!(connected(&r));
+        let r = copy_motif(&ring, all(3, 3), false).unwrap();
+        assert_eq!((r.len(), r.bbox().height()), (16, 6));
+        let r = copy_band(&Region::rectangle(4, 3), 1, 2, false).unwrap();
+        assert_eq!((r.len(), r.bbox().width()), (18, 6));
+        // A copy over existing pixels replaces them: the target becomes the motif exactly.
+        let r = copy_motif(&Region::rectangle(6, 3), all(3, 3), true).unwrap();
+        assert_eq!(r.len(), 18);
+        let r = copy_motif(
+            &Region::from_ascii("######\n#.####\n######\n"),
+            all(3, 3),
+            true,
+        )
+        .unwrap();
+        assert_eq!((r.len(), topology::holes(&r).count), (16, 2));
+    }
+}
