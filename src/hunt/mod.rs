@@ -1,6 +1,8 @@
 //! `mowmill hunt`: a search over regions for the instances where an algorithm is worst — the
 //! largest ratio of its checked value to the exact optimum (`--against opt`) or to the best
-//! lower bound (`--against bound`, an over-estimate of the true ratio).
+//! lower bound (`--against bound`, an over-estimate of the true ratio), or to the best checked
+//! walk known (`--against best`, an upper bound on OPT from every registered algorithm and the
+//! exact incumbent: [`best`]).
 //!
 //! # The search
 //! A small population of simulated-annealing chains ([`HuntOptions::chains`]), each with its own
@@ -8,7 +10,8 @@
 //! parallel and applied in chain order, so a seed and an evaluation count give the same
 //! `hunt.csv` on any number of jobs. Neighbours come from local moves ([`Move`]): add or remove
 //! a boundary pixel, flip a 2×2 block, open or close a hole, stretch a row or column, mirror
-//! the region onto one of its sides. A neighbour that leaves the family's constraint or the
+//! the region onto one of its sides; and structural moves on a sub-rectangle ([`moves`]: hole
+//! lattices, a width-1 comb, widening, copying a motif or a band). A neighbour that leaves the family's constraint or the
 //! algorithm's precondition is redrawn (it costs no evaluation). Chains start from the
 //! generator of the family, from the papers' tight families when they fit, and from `--start`
 //! files; a chain that has not improved on its own best for [`HuntOptions::patience`] evaluations
