@@ -271,3 +271,109 @@ fn a_suite_compares_the_search_with_random_sampling() {
         assert_eq!(o.status.code(), Some(2), "{bad}");
     }
 }
+
+/// `hunt.csv` rows as maps from column to value.
+fn rows(dir: &Path) -> Vec<std::collections::HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(dir.join("hunt.csv")).unwrap();
+    let head = r.headers().unwrap().clone();
+    r.records()
+        .map(|rec| {
+            head.iter()
+                .zip(rec.unwrap().iter())
+                .map(|(h, v)| (h.to_string(), v.to_string()))
+                .collect()
+        })
+        .collect()
+}
+
+/// `--against best` at N in the hundreds (with the structural moves, exact incumbents under
+/// a 2 s limit): the hunt finishes, every decided ratio is value / best with a named source,
+/// and a best walk is never above the algorithm's own.
+#[test]
+fn a_hunt_against_best_at_n_in_the_hundreds_finishes() {
+    let dir = temp_dir("hunt-best");
+    let o = mowmill(&[
+        "hunt",
+        "--algo",
+        "milling25",
+        "--objective",
+        "length",
+        "--against",
+        "best",
+        "--family",
+        "random-holed",
+        "--min-n",
+        "200",
+        "--max-n",
+        "400",
+        "--evaluations",
+        "16",
+        "--exact-time-limit",
+        "2",
+        "--seed",
+        "3",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let rows = rows(&dir);
+    assert_eq!(rows.len(), 16);
+    let mut decided = 0;
+    for r in &rows {
+        let n: usize = r["n"].parse().unwrap();
+        assert!((200..=400).contains(&n), "N = {n}");
+        if r["ratio"].is_empty() {
+            continue;
+        }
+        decided += 1;
+        let (value, best): (f64, f64) = (r["value"].parse().unwrap(), r["best"].parse().unwrap());
+        assert!(best <= value, "best {best} above the algorithm's {value}");
+        let ratio: f64 = r["ratio"].parse().unwrap();
+        assert!((ratio - value / best).abs() < 1e-6);
+        assert!(!r["best_source"].is_empty());
+    }
+    assert_eq!(decided, 16);
+    let w = worst(&dir);
+    assert_eq!(w[0].meta("against"), Some("best"));
+    assert!(!w[0].meta("best_source").unwrap_or("").is_empty());
+    assert!(dir.join("worst/rank-01.txt").exists());
+}
+
+/// Same seed and `--evaluations` give the same `hunt.csv` against best (no exact solve:
+/// `--exact-max-n` below the range, so no time limit decides an incumbent), and a different
+/// seed a different one.
+#[test]
+fn hunts_against_best_are_reproducible() {
+    let run = |seed: &str, tag: &str| {
+        let dir = temp_dir(tag);
+        let o = mowmill(&[
+            "hunt",
+            "--algo",
+            "milling25",
+            "--objective",
+            "length",
+            "--against",
+            "best",
+            "--family",
+            "random-holed",
+            "--min-n",
+            "60",
+            "--max-n",
+            "160",
+            "--exact-max-n",
+            "10",
+            "--evaluations",
+            "40",
+            "--seed",
+            seed,
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        csv_without_time(&dir)
+    };
+    let a = run("5", "hunt-best-a");
+    assert_eq!(a.len(), 41);
+    assert_eq!(a, run("5", "hunt-best-b"));
+    assert_ne!(a, run("6", "hunt-best-c"));
+}

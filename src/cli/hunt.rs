@@ -64,9 +64,11 @@ pub struct HuntArgs {
     /// Regions to start from (.grid, WKT, .poly or .gg/.csv), one chain each.
     #[arg(long, num_args = 1..)]
     pub start: Vec<PathBuf>,
-    /// Divide by the exact optimum (default where an exact objective exists) or by the best
-    /// cheap lower bound (for larger N; over-estimates the ratio).
-    #[arg(long, value_parser = ["opt", "bound"])]
+    /// Divide by the exact optimum (default where an exact objective exists), by the best
+    /// cheap lower bound (for larger N; over-estimates the ratio), or by the best checked walk
+    /// known (`best`: every registered algorithm's walk that carries the objective and the
+    /// exact solver's incumbent; OPT <= best, so a ratio above a factor is a proven violation).
+    #[arg(long, value_parser = ["opt", "bound", "best"])]
     pub against: Option<String>,
     /// How many distinct worst instances to save.
     #[arg(long, default_value_t = 5)]
@@ -79,9 +81,13 @@ pub struct HuntArgs {
     /// Evaluations without improvement after which a chain restarts.
     #[arg(long, default_value_t = 150)]
     pub patience: usize,
-    /// Seconds per exact solve.
-    #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
-    pub exact_time_limit: f64,
+    /// Seconds per exact solve (default 20; 30 with `--against best`, where the incumbent
+    /// is an upper bound whether or not it is proven).
+    #[arg(long, allow_negative_numbers = true)]
+    pub exact_time_limit: Option<f64>,
+    /// With `--against bound|best`: no exact solve on candidates above this many pixels.
+    #[arg(long, default_value_t = 2000)]
+    pub exact_max_n: usize,
     /// `anneal` (the search) or `random` (independent generated regions, the baseline a
     /// search must beat).
     #[arg(long, default_value = "anneal", value_parser = STRATEGIES)]
@@ -272,10 +278,16 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             a.min_n, a.max_n
         )));
     }
-    if !(a.exact_time_limit.is_finite() && a.exact_time_limit > 0.0) {
+    let exact_time_limit = a
+        .exact_time_limit
+        .unwrap_or(if a.against.as_deref() == Some("best") {
+            30.0
+        } else {
+            20.0
+        });
+    if !(exact_time_limit.is_finite() && exact_time_limit > 0.0) {
         return Err(bad(format!(
-            "--exact-time-limit {}: expected a positive number of seconds",
-            a.exact_time_limit
+            "--exact-time-limit {exact_time_limit}: expected a positive number of seconds"
         )));
     }
     if let Some(b) = a.budget
@@ -305,7 +317,7 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
                 command: super::solve::split_command(c),
                 objectives: vec![objective.unwrap_or(Objective::Length).to_string()],
                 guarantee: None,
-                time_limit: a.exact_time_limit,
+                time_limit: exact_time_limit,
             };
             outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new("."))
                 .map_err(|e| mowmill::Error::invalid(format!("--command: {e}")))?;
@@ -316,6 +328,14 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
     let objective = subject.pick_objective(objective)?;
     let against = match (a.against.as_deref(), objective) {
         (Some("bound"), _) | (None, Objective::LawnLength) => Against::Bound,
+        (Some("best"), Objective::LawnLength) => {
+            return Err(bad(
+                "--against best: lawn-length has no exact solver and the registered lawn \
+                 tours are the algorithms themselves; use --against bound"
+                    .into(),
+            ));
+        }
+        (Some("best"), _) => Against::Best,
         (Some(_), Objective::LawnLength) => {
             return Err(bad(
                 "--against opt: lawn-length has no exact solver; use --against bound".into(),
@@ -347,7 +367,8 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         starts,
         chains: a.chains,
         patience: a.patience,
-        exact_time_limit: a.exact_time_limit,
+        exact_time_limit,
+        exact_max_n: a.exact_max_n,
         strategy: if a.strategy == "random" {
             hunt::Strategy::Random
         } else {
@@ -368,10 +389,11 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         opts.family.name(),
         opts.min_n,
         opts.max_n,
-        if against == Against::Bound {
-            " (an over-estimate of the ratio to OPT)"
-        } else {
-            ""
+        match against {
+            Against::Bound => " (an over-estimate of the ratio to OPT)",
+            Against::Best =>
+                " (the best checked walk known: an under-estimate of the ratio to OPT)",
+            Against::Opt => "",
         }
     );
     let report =
@@ -394,6 +416,7 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         "strategy": a.strategy,
         "patience": opts.patience,
         "exact_time_limit": opts.exact_time_limit,
+        "exact_max_n": opts.exact_max_n,
         "options": evaluate_options(&opts.options),
         "evaluations": report.records.len(),
         "exact_solves": report.exact_solves,

@@ -1,6 +1,8 @@
 //! `mowmill hunt`: a search over regions for the instances where an algorithm is worst — the
 //! largest ratio of its checked value to the exact optimum (`--against opt`) or to the best
-//! lower bound (`--against bound`, an over-estimate of the true ratio).
+//! lower bound (`--against bound`, an over-estimate of the true ratio), or to the best checked
+//! walk known (`--against best`, an upper bound on OPT from every registered algorithm and the
+//! exact incumbent: [`best`]).
 //!
 //! # The search
 //! A small population of simulated-annealing chains ([`HuntOptions::chains`]), each with its own
@@ -8,7 +10,8 @@
 //! parallel and applied in chain order, so a seed and an evaluation count give the same
 //! `hunt.csv` on any number of jobs. Neighbours come from local moves ([`Move`]): add or remove
 //! a boundary pixel, flip a 2×2 block, open or close a hole, stretch a row or column, mirror
-//! the region onto one of its sides. A neighbour that leaves the family's constraint or the
+//! the region onto one of its sides; and structural moves on a sub-rectangle ([`moves`]: hole
+//! lattices, a width-1 comb, widening, copying a motif or a band). A neighbour that leaves the family's constraint or the
 //! algorithm's precondition is redrawn (it costs no evaluation). Chains start from the
 //! generator of the family, from the papers' tight families when they fit, and from `--start`
 //! files; a chain that has not improved on its own best for [`HuntOptions::patience`] evaluations
@@ -28,6 +31,8 @@
 //! (the exact solver or the checker is wrong) are findings: reported at once and saved.
 
 mod audit;
+pub mod best;
+pub mod moves;
 pub mod output;
 
 use crate::algorithms::{self, Objective, Options};
@@ -48,6 +53,10 @@ use std::time::Instant;
 pub enum Against {
     Opt,
     Bound,
+    /// The best checked walk known ([`best`]): every registered algorithm's walk that carries
+    /// the objective and the exact solver's incumbent. OPT ≤ best, so a ratio above a
+    /// guarantee's factor is a proven violation.
+    Best,
 }
 
 impl std::fmt::Display for Against {
@@ -55,6 +64,7 @@ impl std::fmt::Display for Against {
         f.write_str(match self {
             Against::Opt => "opt",
             Against::Bound => "bound",
+            Against::Best => "best",
         })
     }
 }
@@ -105,6 +115,9 @@ impl Shape {
             Family::Boundary => Shape::Boundary,
             Family::Eroded => Shape::Connected,
             Family::LawnScattered => Shape::Any,
+            // A family the hunt has no class for keeps connectivity only.
+            #[allow(unreachable_patterns)]
+            _ => Shape::Connected,
         }
     }
 
@@ -146,6 +159,9 @@ pub struct HuntOptions {
     /// Seconds per exact solve; a solve that does not prove its optimum makes the candidate's
     /// ratio undecided (recorded, never accepted as a new best).
     pub exact_time_limit: f64,
+    /// Above this many pixels no exact solve is made (`--against bound|best`; with `best` the
+    /// registered algorithms' walks are the upper bound).
+    pub exact_max_n: usize,
     pub strategy: Strategy,
 }
 
@@ -168,6 +184,9 @@ pub struct Record {
     pub accepted: bool,
     /// Why the exact solve was skipped, or what went wrong; empty otherwise.
     pub note: String,
+    /// `--against best`: the best checked walk's value and where it came from.
+    pub best: Option<u64>,
+    pub best_source: String,
 }
 
 /// A region with its score and walks, kept among the worst or as a finding.
@@ -182,6 +201,9 @@ pub struct Found {
     pub evaluation: usize,
     /// For findings: what is wrong.
     pub what: String,
+    /// `--against best`: where the reference walk came from (`algorithm:objective` or
+    /// `exact:status`); empty otherwise.
+    pub best_source: String,
 }
 
 /// The outcome of a hunt.
@@ -220,9 +242,12 @@ enum Move {
     Mirror,
     Arm,
     Cut,
+    /// One of [`moves`]: a lattice of holes, a width-1 comb, a widened part, a copied motif or
+    /// band, on a random sub-rectangle.
+    Structural,
 }
 
-const MOVES: [(Move, u32); 9] = [
+const MOVES: [(Move, u32); 10] = [
     (Move::AddPixel, 24),
     (Move::RemovePixel, 24),
     (Move::Arm, 8),
@@ -232,6 +257,7 @@ const MOVES: [(Move, u32); 9] = [
     (Move::CloseHole, 6),
     (Move::Stretch, 10),
     (Move::Mirror, 6),
+    (Move::Structural, 26),
 ];
 
 fn pick_move(rng: &mut ChaCha8Rng) -> Move {
@@ -252,6 +278,7 @@ fn neighbour(r: &Region, rng: &mut ChaCha8Rng) -> Option<Region> {
     let any = |rng: &mut ChaCha8Rng| r.pixel(rng.random_range(0..r.len()));
     let mv = pick_move(rng);
     match mv {
+        Move::Structural => return moves::random(r, rng),
         Move::AddPixel => {
             let p = any(rng);
             set.insert(topology::ring(p)[2 * rng.random_range(0..4usize)]);
@@ -402,7 +429,10 @@ fn generated(
                 p.n = Some(n);
                 p.holes = Some(rng.random_range(1..=(n / 12).clamp(1, 4)));
             }
-            _ => p.n = Some(n),
+            // Any other registered family: its generator at the drawn size when it takes one,
+            // else its defaults.
+            f if f.info().params.contains(&crate::generate::Param::N) => p.n = Some(n),
+            _ => {}
         }
         if let Ok(g) = generate(&p) {
             let r = g.region.normalized();
@@ -425,6 +455,7 @@ type Solved = (Option<u64>, Option<crate::tour::CycleCover>, u64);
 /// The optimum of a region, cached by canonical form.
 struct OptCache {
     map: Mutex<HashMap<String, Solved>>,
+    best_map: Mutex<HashMap<String, BestKnown>>,
     solves: Mutex<(usize, usize)>,
 }
 
@@ -465,6 +496,50 @@ impl OptCache {
     }
 }
 
+/// What [`OptCache::best`] keeps per canonical region: the best walk's value and source,
+/// whether the exact solver proved it optimal, and whether the exact solver was consulted.
+type BestKnown = (Option<(u64, String, bool)>, bool);
+
+impl OptCache {
+    /// The best checked walk of `r` (value, source, the walk when computed here, proven
+    /// optimal): the registered algorithms' walks, and the exact incumbent when `with_exact`.
+    fn best(
+        &self,
+        r: &Region,
+        opts: &HuntOptions,
+        with_exact: bool,
+    ) -> Option<(u64, String, Option<crate::tour::CycleCover>, bool)> {
+        let key = canonical(r);
+        if let Some((known, exact_done)) = self.best_map.lock().expect("cache").get(&key).cloned()
+            && (exact_done || !with_exact)
+        {
+            self.solves.lock().expect("count").1 += 1;
+            return known.map(|(v, s, p)| (v, s, None, p));
+        }
+        let algos = best::best_of_algorithms(r, opts.objective, &opts.options);
+        let (walk, proven) = if with_exact {
+            let (incumbent, _lb, proven) =
+                best::exact_incumbent(r, opts.objective, &opts.options, opts.exact_time_limit);
+            self.solves.lock().expect("count").0 += 1;
+            let proven = proven
+                && incumbent
+                    .as_ref()
+                    .is_some_and(|e| algos.as_ref().is_none_or(|a| e.value <= a.value));
+            (best::better(algos, incumbent), proven)
+        } else {
+            (algos, false)
+        };
+        self.best_map.lock().expect("cache").insert(
+            key,
+            (
+                walk.as_ref().map(|w| (w.value, w.source.clone(), proven)),
+                with_exact,
+            ),
+        );
+        walk.map(|w| (w.value, w.source, Some(w.cover), proven))
+    }
+}
+
 /// One chain of the annealing.
 struct Chain {
     rng: ChaCha8Rng,
@@ -486,6 +561,8 @@ struct Outcome {
     optimal_walk: Option<crate::tour::CycleCover>,
     note: String,
     findings: Vec<String>,
+    best: Option<u64>,
+    best_source: String,
 }
 
 /// Evaluates one candidate: the algorithm through the pipeline, then the exact optimum when the
@@ -515,6 +592,8 @@ fn assess(
         optimal_walk: None,
         note: String::new(),
         findings: Vec::new(),
+        best: None,
+        best_source: String::new(),
     };
     if let Some(e) = &eval.error {
         out.note = format!("error: {e}");
@@ -553,6 +632,65 @@ fn assess(
             "guarantee violated against the bound: value {}",
             c.value
         ));
+    }
+    if opts.against == Against::Best {
+        // The exact incumbent is worth its time limit only where the screen lets the ratio
+        // matter; above `exact_max_n` the algorithms' walks are the upper bound alone.
+        let screened = out.ratio_bound.is_some_and(|rb| rb < threshold) && !undecided;
+        let with_exact = !screened && out.region.len() <= opts.exact_max_n;
+        let found = cache.best(&out.region, opts, with_exact);
+        if !with_exact {
+            out.note = if screened {
+                "screened: value/bound below the acceptance threshold; best of the algorithms"
+                    .into()
+            } else {
+                format!("N > {}: best of the algorithms", opts.exact_max_n)
+            };
+        }
+        let Some((mut best, mut source, walk, proven)) = found else {
+            out.note = "no checked walk carries the objective".into();
+            return out;
+        };
+        if best == 0 {
+            out.note = "best walk 0".into();
+            return out;
+        }
+        if c.value < best && proven {
+            out.findings.push(format!(
+                "value {} below the proven optimum {best}: the exact solver or the checker is \
+                 wrong",
+                c.value
+            ));
+        }
+        // The subject's own checked walk is a walk too (an outside program's may be the best).
+        out.optimal_walk = walk;
+        if c.value < best {
+            best = c.value;
+            source = subject.name().to_string();
+            out.optimal_walk = Some(c.cover.clone());
+        }
+        out.best = Some(best);
+        out.best_source = source.clone();
+        if proven {
+            out.opt = Some(best);
+        }
+        out.ratio = Some(c.value as f64 / best as f64);
+        // OPT ≤ best: a value above the bound at `best` is above it at OPT.
+        for g in subject.applicable(opts.objective, &out.region, &opts.options) {
+            if g.against == algorithms::Against::Opt
+                && g.quantity == algorithms::Quantity::Value
+                && g.scale == algorithms::Scale::One
+                && !g.holds(c.value, best)
+                && !violated
+            {
+                out.findings.push(format!(
+                    "guarantee {g} violated: value {} against the best known walk {best} \
+                     ({source}) >= OPT",
+                    c.value
+                ));
+            }
+        }
+        return out;
     }
     let exact_obj = exact_objective(opts.objective);
     let (Against::Opt, Some(exact_obj)) = (opts.against, exact_obj) else {
@@ -621,6 +759,7 @@ pub fn hunt(
     let shape = Shape::of(opts.family);
     let cache = OptCache {
         map: Mutex::new(HashMap::new()),
+        best_map: Mutex::new(HashMap::new()),
         solves: Mutex::new((0, 0)),
     };
     let chains_n = opts.chains.max(1);
@@ -767,11 +906,12 @@ pub fn hunt(
                         region: out.region.clone(),
                         ratio: out.ratio.unwrap_or(f64::NAN),
                         value: out.value.unwrap_or(0),
-                        reference: out.opt.or(out.lower_bound),
+                        reference: out.best.or(out.opt).or(out.lower_bound),
                         walk: out.walk.clone(),
                         optimal_walk: out.optimal_walk.clone(),
                         evaluation,
                         what: what.clone(),
+                        best_source: out.best_source.clone(),
                     });
                 }
             }
@@ -790,11 +930,13 @@ pub fn hunt(
                     reference: match opts.against {
                         Against::Opt => out.opt,
                         Against::Bound => out.lower_bound,
+                        Against::Best => out.best,
                     },
                     walk: out.walk.clone(),
                     optimal_walk: out.optimal_walk.clone(),
                     evaluation,
                     what: String::new(),
+                    best_source: out.best_source.clone(),
                 });
             }
             rep.records.push(Record {
@@ -811,6 +953,8 @@ pub fn hunt(
                 lower_bound: out.lower_bound,
                 accepted,
                 note: out.note,
+                best: out.best,
+                best_source: out.best_source,
             });
             // Restart a chain that has stalled: from the best region or a fresh one.
             if ch.since_best >= opts.patience {
@@ -837,7 +981,19 @@ pub fn hunt(
     // A cache hit has no walk of this very region: solve the kept ones again for their figure.
     if let Some(exact_obj) = exact_objective(opts.objective) {
         for f in rep.worst.iter_mut().chain(rep.findings.iter_mut()) {
-            if f.optimal_walk.is_none() {
+            if f.optimal_walk.is_none() && opts.against == Against::Best {
+                let exact = (f.region.len() <= opts.exact_max_n).then(|| {
+                    best::exact_incumbent(
+                        &f.region,
+                        opts.objective,
+                        &opts.options,
+                        opts.exact_time_limit,
+                    )
+                    .0
+                });
+                let algos = best::best_of_algorithms(&f.region, opts.objective, &opts.options);
+                f.optimal_walk = best::better(algos, exact.flatten()).map(|w| w.cover);
+            } else if f.optimal_walk.is_none() && f.region.len() <= opts.exact_max_n {
                 let res = exact::solve(
                     &f.region,
                     exact_obj,

@@ -16,7 +16,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 /// The columns of `hunt.csv` (a contract; the first six are the issue's).
-pub const COLUMNS: [&str; 13] = [
+pub const COLUMNS: [&str; 15] = [
     "evaluation",
     "elapsed",
     "ratio",
@@ -30,6 +30,8 @@ pub const COLUMNS: [&str; 13] = [
     "lower_bound",
     "accepted",
     "note",
+    "best",
+    "best_source",
 ];
 
 fn opt<T: ToString>(x: Option<T>) -> String {
@@ -59,6 +61,8 @@ pub fn write_csv(path: &Path, records: &[Record]) -> Result<()> {
             opt(r.lower_bound),
             r.accepted.to_string(),
             r.note.clone(),
+            opt(r.best),
+            r.best_source.clone(),
         ])
         .map_err(csv_err)?;
     }
@@ -131,6 +135,8 @@ fn save(
         ("reference", opt(f.reference)),
         ("evaluation", f.evaluation.to_string()),
         ("hunt_seed", opts.seed.to_string()),
+        ("against", opts.against.to_string()),
+        ("best_source", f.best_source.clone()),
     ];
     GridFile::with_meta(f.region.clone(), &meta).write(&dir.join(format!("{stem}.grid")))?;
     if let Some(w) = &f.walk {
@@ -150,6 +156,9 @@ fn save(
         &f.region,
         f.optimal_walk.as_ref(),
         match (f.optimal_walk.is_some(), f.reference) {
+            (true, Some(r)) if !f.best_source.is_empty() => {
+                format!("best known ({}): {} {r}", f.best_source, opts.objective)
+            }
             (true, Some(r)) => format!("optimal: {} {r}", opts.objective),
             _ => "no optimal walk".to_string(),
         },
@@ -207,13 +216,25 @@ pub fn write_all(out: &Path, report: &HuntReport, algo: &str, opts: &HuntOptions
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     write_csv(&out.join("hunt.csv"), &report.records)?;
     for (k, f) in report.worst.iter().enumerate() {
+        let note = if f.best_source.is_empty() {
+            String::new()
+        } else {
+            format!(
+                "ratio {:.6} = value {} / best known walk {} from {} (OPT <= {})",
+                f.ratio,
+                f.value,
+                opt(f.reference),
+                f.best_source,
+                opt(f.reference)
+            )
+        };
         save(
             &out.join("worst"),
             &format!("rank-{:02}", k + 1),
             f,
             algo,
             opts,
-            "",
+            &note,
         )?;
     }
     for (k, f) in report.findings.iter().enumerate() {
@@ -221,11 +242,16 @@ pub fn write_all(out: &Path, report: &HuntReport, algo: &str, opts: &HuntOptions
         let _ = writeln!(note, "{}", f.what);
         let _ = writeln!(
             note,
-            "algorithm {algo}, objective {}, evaluation {}, value {}, reference {}",
+            "algorithm {algo}, objective {}, evaluation {}, value {}, reference {}{}",
             opts.objective,
             f.evaluation,
             f.value,
-            opt(f.reference)
+            opt(f.reference),
+            if f.best_source.is_empty() {
+                String::new()
+            } else {
+                format!(" (best known walk, from {})", f.best_source)
+            }
         );
         save(
             &out.join("findings"),
