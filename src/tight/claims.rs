@@ -1325,11 +1325,26 @@ pub fn findings_markdown(table: &[ClaimRow]) -> String {
             .into_iter()
             .find(|p| p.title() == c.paper)
             .map_or(c.paper.as_str(), |p| p.short());
-        let _ = writeln!(
+        let witness = c
+            .violations_detail
+            .iter()
+            .find(|v| format!("{} {} {}", v.algorithm, v.objective, v.instance) == c.witness);
+        let _ = write!(
             out,
-            "- **{} ({paper} paper, {}) — {}.** {}",
-            c.claim, c.factor, c.verdict, c.note
+            "- **{} ({paper} paper, {}): {}.**",
+            c.claim, c.factor, c.verdict
         );
+        if let Some(w) = witness {
+            let _ = write!(
+                out,
+                " `{}` ({} {}, family {}, N = {}): {}.",
+                w.instance, w.algorithm, w.objective, w.family, w.n, w.detail
+            );
+            if w.registered_held == Some(true) {
+                out.push_str(" mowmill's own proven bound held there.");
+            }
+        }
+        let _ = writeln!(out, " {} violating rows.", c.violations);
     }
     if out.is_empty() {
         out.push_str("- No claim is violated in the committed table.\n");
