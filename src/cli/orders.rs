@@ -4,9 +4,7 @@
 use anyhow::Result;
 use clap::Args;
 use mowmill::discrete::Discrete;
-use mowmill::discrete::choices::{
-    self, ChoiceValue, EXHAUSTIVE_CAP, OrderSearch, SAMPLED_ORDERS,
-};
+use mowmill::discrete::choices::{self, ChoiceValue, EXHAUSTIVE_CAP, OrderSearch, SAMPLED_ORDERS};
 use mowmill::error::Error;
 use mowmill::instance::Instance;
 use std::path::PathBuf;
@@ -83,9 +81,8 @@ pub fn orders_command(a: OrdersArgs) -> Result<ExitCode> {
         )
         .into());
     }
-    let violates = |v: u64| {
-        above.is_some_and(|x| v as f64 > x) || below.is_some_and(|x| (v as f64) < x)
-    };
+    let violates =
+        |v: u64| above.is_some_and(|x| v as f64 > x) || below.is_some_and(|x| (v as f64) < x);
     let ev = choices::order_evidence_with(&a.algo, &inst, value, violates, search)
         .map_err(|e| Error::invalid(format!("{}: {e}", a.file.display())))?;
     if a.json {
@@ -107,7 +104,11 @@ pub fn orders_command(a: OrdersArgs) -> Result<ExitCode> {
             ev.min,
             ev.max,
             ev.default_value,
-            if ev.default_violates { " (violates)" } else { "" }
+            if ev.default_violates {
+                " (violates)"
+            } else {
+                ""
+            }
         );
         println!("{}", ev.summary());
     }

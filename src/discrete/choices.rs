@@ -49,10 +49,10 @@
 //! Exhaustive: O(|S-sets| · (n + |E|)) after an O(n²/64)-word attack matrix (only when at most
 //! [`EXHAUSTIVE_MAX_VERTICES`] vertices are candidates); sampled: O(k · (n + |E|)).
 
+use super::Discrete;
 use super::check::check;
 use super::merge::merge;
 use super::star_cover::{Channels, channels, channels_at, on_closed_channel, star_cover_of_rooks};
-use super::Discrete;
 use crate::algorithms::GreedyOrder;
 use crate::error::{Error, Result};
 use serde::Serialize;
@@ -407,7 +407,9 @@ fn bron_kerbosch(
         .chain(ones(&x))
         .min_by_key(|&u| and_count(&p, &nbhd[u]))
         .expect("P is not empty");
-    let branch: Vec<usize> = ones(&p).filter(|&v| nbhd[pivot][v / 64] >> (v % 64) & 1 == 1).collect();
+    let branch: Vec<usize> = ones(&p)
+        .filter(|&v| nbhd[pivot][v / 64] >> (v % 64) & 1 == 1)
+        .collect();
     for v in branch {
         let np: Vec<u64> = p.iter().zip(&nbhd[v]).map(|(a, b)| a & !b).collect();
         let nx: Vec<u64> = x.iter().zip(&nbhd[v]).map(|(a, b)| a & !b).collect();
@@ -463,4 +465,152 @@ pub fn hub_path_runs(p: usize, k: usize) -> Vec<u64> {
 pub fn hub_path_min_cc_turns(p: usize, k: usize) -> u64 {
     let runs = hub_path_runs(p, k);
     8 + 3 * (runs.iter().sum::<u64>() - runs.iter().copied().max().unwrap_or(0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::discrete::exact::{self, DiscreteOptions};
+    use crate::discrete::star_cover::{star_cover, star_cover_in};
+    use crate::exact::{Objective, Status};
+    use std::path::Path;
+
+    fn instance(name: &str) -> Discrete {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("instances/discrete")
+            .join(name);
+        crate::discrete::generate::read(&path).unwrap()
+    }
+
+    /// The proven optimum of `objective` (the solver must finish).
+    fn opt(inst: &Discrete, objective: Objective) -> u64 {
+        let r = exact::solve(inst, objective, &DiscreteOptions::default());
+        assert_eq!(r.status, Status::Optimal, "{:?}", r.message);
+        r.value.unwrap()
+    }
+
+    /// Theorem 5.1's averaged bound (ρ + 2δ)·OPT_cc.
+    fn averaged_bound(inst: &Discrete, opt_cc: u64) -> f64 {
+        let p = inst.params();
+        (p.rho + 2.0 * p.delta) * opt_cc as f64
+    }
+
+    #[test]
+    fn default_order_keeps_todays_values() {
+        let hub = instance("hub-first.dm");
+        let sc = star_cover(&hub);
+        assert_eq!(sc.rooks, vec![0, 1]);
+        assert_eq!(check(&hub, &sc.cycles).turns, 94);
+        assert_eq!(star_cover_in(&hub, &GreedyOrder::Index), sc);
+        let bridge = instance("bridge.dm");
+        let sc = star_cover(&bridge);
+        assert_eq!(sc.rooks, vec![0, 5]);
+        let rep = check(&bridge, &sc.cycles);
+        assert_eq!((rep.turns, rep.cycles), (8, 2));
+        // Another order: the path vertex 2 first is one star of 8 turns on hub-first.
+        let other = star_cover_in(&hub, &GreedyOrder::Sequence(vec![2]));
+        assert_eq!(other.rooks, vec![2]);
+        assert_eq!(check(&hub, &other.cycles).turns, 8);
+    }
+
+    #[test]
+    fn seeded_orders_are_deterministic_permutations() {
+        let a = GreedyOrder::Seeded(7).permutation(50);
+        assert_eq!(a, GreedyOrder::Seeded(7).permutation(50));
+        assert_ne!(a, GreedyOrder::Seeded(8).permutation(50));
+        let mut sorted = a.clone();
+        sorted.sort_unstable();
+        assert_eq!(sorted, (0..50).collect::<Vec<u32>>());
+        assert_eq!(
+            GreedyOrder::Sequence(vec![3, 3, 99, 1]).permutation(4),
+            vec![3, 1, 0, 2]
+        );
+    }
+
+    #[test]
+    fn hub_first_violation_depends_on_the_order() {
+        let hub = instance("hub-first.dm");
+        let opt_cc = opt(&hub, Objective::CcTurns);
+        assert_eq!(opt_cc, 7);
+        let bound = averaged_bound(&hub, opt_cc);
+        let ev = order_evidence("discrete-star-cover", &hub, ChoiceValue::CcTurns, |v| {
+            v as f64 > bound
+        })
+        .unwrap();
+        // 32 rook sets: the hub with a path end ({0, 1}, {0, 32}: 94 turns), or one inner
+        // path vertex alone (30 sets, 8 turns).
+        assert!(ev.exhaustive);
+        assert_eq!((ev.tried, ev.violated, ev.min, ev.max), (32, 2, 8, 94));
+        assert!(ev.default_violates && !ev.every_order_violates());
+        assert_eq!(ev.violating_rooks, Some(vec![0, 1]));
+        // Sampling agrees in kind: random orders rarely put the hub before every spoke end.
+        let sampled = order_evidence_with(
+            "discrete-star-cover",
+            &hub,
+            ChoiceValue::CcTurns,
+            |v| v as f64 > bound,
+            OrderSearch::Sampled {
+                orders: 200,
+                seed: 0,
+            },
+        )
+        .unwrap();
+        assert!(!sampled.exhaustive);
+        assert_eq!(sampled.tried, 200);
+        assert!(sampled.violated < 200 && sampled.min == 8);
+    }
+
+    #[test]
+    fn several_hubs_violate_theorem_5_1_for_every_order() {
+        // (P, K, OPT_cc, violating rook sets): below the threshold some orders meet the bound,
+        // from it on every order violates (all P rook sets, exhaustive).
+        for (p, k, opt_cc, violated) in [
+            (67, 2, 10, 34),
+            (68, 2, 10, 68),
+            (64, 3, 13, 22),
+            (65, 3, 13, 65),
+            (71, 4, 16, 53),
+            (72, 4, 16, 72),
+        ] {
+            let inst = hub_path(p, k).unwrap();
+            assert_eq!(opt(&inst, Objective::CcTurns), opt_cc, "P {p} K {k}");
+            let bound = averaged_bound(&inst, opt_cc);
+            let ev = order_evidence("discrete-star-cover", &inst, ChoiceValue::CcTurns, |v| {
+                v as f64 > bound
+            })
+            .unwrap();
+            assert!(ev.exhaustive);
+            assert_eq!((ev.tried, ev.violated), (p as u64, violated), "P {p} K {k}");
+            assert_eq!(ev.every_order_violates(), violated == p as u64);
+            // The proof's formula is the enumeration's minimum.
+            assert_eq!(ev.min, hub_path_min_cc_turns(p, k), "P {p} K {k}");
+        }
+    }
+
+    #[test]
+    fn bridge_defeats_theorem_4_2_whatever_the_merge() {
+        let bridge = instance("bridge.dm");
+        let opt_tour = opt(&bridge, Objective::TourTurns);
+        assert_eq!(opt_tour, 12);
+        // The default cover: t = 8, c = 2, budget t + 2c − 2 = 10 < 12 ≤ every tour.
+        let ev = order_evidence(
+            "discrete-star-cover",
+            &bridge,
+            ChoiceValue::MergeBudget,
+            |b| b < opt_tour,
+        )
+        .unwrap();
+        assert_eq!(ev.default_value, 10);
+        assert!(ev.default_violates);
+        // 24 rook sets (a vertex of each path, not both bridge ends): the 16 avoiding the
+        // bridge have budget 10, the 8 with a bridge end 12 + 2 = 14.
+        assert!(ev.exhaustive);
+        assert_eq!((ev.tried, ev.violated, ev.min, ev.max), (24, 16, 10, 14));
+    }
+
+    #[test]
+    fn unknown_algorithms_are_refused() {
+        let hub = instance("hub-first.dm");
+        assert!(order_evidence("strips-matching", &hub, ChoiceValue::CcTurns, |_| false).is_err());
+    }
 }

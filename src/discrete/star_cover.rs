@@ -297,7 +297,9 @@ pub fn greedy_rooks_in(inst: &Discrete, ch: &Channels, order: &[u32]) -> (Vec<u3
 /// The channels through each vertex, by channel id (for the attack relation: two vertices
 /// attack each other when they share a channel).
 pub fn channels_at(inst: &Discrete, ch: &Channels) -> Vec<Vec<u32>> {
-    (0..inst.len() as u32).map(|v| ch.through(inst, v)).collect()
+    (0..inst.len() as u32)
+        .map(|v| ch.through(inst, v))
+        .collect()
 }
 
 /// The turns the petal of a channel saves when cut open at position `i` of its sequence: the
@@ -1047,9 +1049,9 @@ pub(crate) mod tests {
             tested += 1;
             let (cc, tour, r) = assert_pipeline(&inst, &mut fig);
             let sc = star_cover(&inst);
-            let grid_rooks: Vec<u32> = greedy_rooks(&region).iter().map(|&i| i as u32).collect();
+            let grid_rooks: Vec<u32> = greedy_rooks(&region, &GreedyOrder::Index).iter().map(|&i| i as u32).collect();
             assert_eq!(sc.rooks, grid_rooks);
-            let (grid_cc, grid_r) = star_cycle_cover(&region);
+            let (grid_cc, grid_r) = star_cycle_cover(&region, &GreedyOrder::Index);
             assert_eq!(grid_r, r);
             let a = check_grid(&region, &grid_cc, Mode::Milling);
             let b = check(&inst, &sc.cycles);
