@@ -1049,7 +1049,10 @@ pub(crate) mod tests {
             tested += 1;
             let (cc, tour, r) = assert_pipeline(&inst, &mut fig);
             let sc = star_cover(&inst);
-            let grid_rooks: Vec<u32> = greedy_rooks(&region, &GreedyOrder::Index).iter().map(|&i| i as u32).collect();
+            let grid_rooks: Vec<u32> = greedy_rooks(&region, &GreedyOrder::Index)
+                .iter()
+                .map(|&i| i as u32)
+                .collect();
             assert_eq!(sc.rooks, grid_rooks);
             let (grid_cc, grid_r) = star_cycle_cover(&region, &GreedyOrder::Index);
             assert_eq!(grid_r, r);
