@@ -15,7 +15,8 @@ use std::process::ExitCode;
 
 mod cli;
 use cli::{
-    algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, sample::*, solve::*, tight::*,
+    algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, orders::*, sample::*, solve::*,
+    tight::*,
 };
 
 #[derive(Parser)]
@@ -63,6 +64,8 @@ enum Command {
     Algos(AlgosArgs),
     /// Solve an instance exactly (MILP with HiGHS) with a proven lower bound.
     Exact(ExactArgs),
+    /// The star cover over every order of its greedy choices: how many violate a bound.
+    Orders(OrdersArgs),
     /// Search for the instances where an algorithm is worst (largest ratio to the optimum).
     Hunt(HuntArgs),
     /// Run a benchmark suite: instances x algorithms x exact objectives -> CSV, stats, plots.
@@ -252,6 +255,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Sample(args) => sample_command(args),
         Command::Hunt(args) => hunt_command(args),
         Command::Exact(args) => exact_command(args),
+        Command::Orders(args) => orders_command(args),
         Command::Plot { dir } => {
             let rows = harness::rows::read_rows(&dir.join("results.csv"))?;
             harness::plots::draw_all(&dir, &rows)?;

@@ -729,6 +729,56 @@ impl std::str::FromStr for Merge {
     }
 }
 
+/// The order in which a greedy star cover scans the candidates for a rook (`star-cover` on
+/// pixels, `discrete-star-cover` on vertices).
+///
+/// The paper leaves it open: Lemma 4.5 places rooks "greedily", in no stated order and with no
+/// tie-break, so every scan order is the paper's algorithm; the rook *set* it yields is a
+/// maximal set of pairwise non-attacking rooks, and every such set is the outcome of some order
+/// (put it first). See [`crate::discrete::choices`] for the evidence over all orders.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub enum GreedyOrder {
+    /// Index order (pixel or vertex index): the default, and the order of every committed result.
+    #[default]
+    Index,
+    /// Scan these indices first, in this order, then the others in index order (out-of-range
+    /// and repeated indices are skipped).
+    Sequence(Vec<u32>),
+    /// A uniformly random permutation, shuffled by ChaCha8 from this seed.
+    Seeded(u64),
+}
+
+impl GreedyOrder {
+    /// The scan order over `0..n` as a permutation.
+    pub fn permutation(&self, n: usize) -> Vec<u32> {
+        match self {
+            GreedyOrder::Index => (0..n as u32).collect(),
+            GreedyOrder::Sequence(first) => {
+                let mut seen = vec![false; n];
+                let mut out = Vec::with_capacity(n);
+                for &v in first.iter().chain(&(0..n as u32).collect::<Vec<u32>>()) {
+                    if (v as usize) < n && !seen[v as usize] {
+                        seen[v as usize] = true;
+                        out.push(v);
+                    }
+                }
+                out
+            }
+            GreedyOrder::Seeded(seed) => {
+                use rand::{RngExt, SeedableRng};
+                // Fisher–Yates by hand, so that the permutation of a seed does not depend on
+                // the rand crate's shuffle.
+                let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(*seed);
+                let mut order: Vec<u32> = (0..n as u32).collect();
+                for i in (1..n).rev() {
+                    order.swap(i, rng.random_range(0..=i));
+                }
+                order
+            }
+        }
+    }
+}
+
 /// Options every algorithm receives; each uses the ones that concern it.
 #[derive(Clone, Debug, Default)]
 pub struct Options {
@@ -736,6 +786,9 @@ pub struct Options {
     pub cutter: Cutter,
     /// Post-process tours into ones covering each pixel at most 4 times (Theorem 5.6).
     pub coverage4: bool,
+    /// The scan order of the greedy rook placement of the star covers (a choice the paper
+    /// leaves open, [`GreedyOrder`]); other algorithms ignore it.
+    pub greedy_order: GreedyOrder,
 }
 
 /// One result of an algorithm: closed walks for one objective (of pixels, or of the vertices

@@ -353,6 +353,7 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
             cutter: a.cutter.parse().map_err(mowmill::Error::Invalid)?,
             coverage4: a.coverage4,
+            ..Options::default()
         },
         family: a.family.unwrap_or_else(|| default_family(&name)),
         min_n: a.min_n,

@@ -7,6 +7,7 @@ pub mod exact;
 pub mod export;
 pub mod generate;
 pub mod hunt;
+pub mod orders;
 pub mod ortho;
 pub mod sample;
 pub mod solve;

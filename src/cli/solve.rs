@@ -131,6 +131,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
         cutter: a.cutter.parse().map_err(mowmill::Error::Invalid)?,
         coverage4: a.coverage4,
+        ..Options::default()
     };
     let outside;
     let subject = match (&a.algo, &a.command) {

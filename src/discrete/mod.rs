@@ -18,6 +18,7 @@
 //! [`check::check`].
 
 pub mod check;
+pub mod choices;
 pub mod draw;
 pub mod exact;
 pub mod format;

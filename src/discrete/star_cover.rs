@@ -86,7 +86,8 @@ use super::format::DiscreteCover;
 use super::{Discrete, NONE, Params, VertexWalk};
 use crate::algorithms::theorems::{self, Claim};
 use crate::algorithms::{
-    Against, Algorithm, Guarantee, Objective, Options, Output, Param, Quantity, Solution, When,
+    Against, Algorithm, GreedyOrder, Guarantee, Objective, Options, Output, Param, Quantity,
+    Solution, When,
 };
 use crate::error::{Error, Result};
 use crate::region::Region;
@@ -233,8 +234,8 @@ pub fn channels(inst: &Discrete) -> Channels {
 /// The greedy star cover and its cycle cover.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct StarCover {
-    /// The rooks, in the order placed (index order); no two attack each other, none lies on a
-    /// closed channel.
+    /// The rooks, in index order (whatever the greedy scan order); no two attack each other,
+    /// none lies on a closed channel.
     pub rooks: Vec<u32>,
     /// One closed walk per rook (same order), then the ring cycles.
     pub cycles: Vec<VertexWalk>,
@@ -251,16 +252,34 @@ pub struct StarCover {
 /// # Complexity
 /// O(n + |E|) given the channels.
 pub fn greedy_rooks(inst: &Discrete, ch: &Channels) -> (Vec<u32>, Vec<bool>) {
+    let order: Vec<u32> = (0..inst.len() as u32).collect();
+    greedy_rooks_in(inst, ch, &order)
+}
+
+/// Whether each vertex lies on a closed channel (such vertices never become rooks).
+pub fn on_closed_channel(inst: &Discrete, ch: &Channels) -> Vec<bool> {
     let mut on_closed = vec![false; inst.len()];
     for c in ch.list.iter().filter(|c| c.closed) {
         for &v in &c.verts {
             on_closed[v as usize] = true;
         }
     }
+    on_closed
+}
+
+/// [`greedy_rooks`] scanning the vertices in `order` (a permutation of the vertices; the paper
+/// fixes no order, see [`GreedyOrder`]).
+///
+/// # Returns
+/// The rooks in index order (not in the order placed: the cover then depends only on the rook
+/// set), and for every channel whether it holds a rook.
+pub fn greedy_rooks_in(inst: &Discrete, ch: &Channels, order: &[u32]) -> (Vec<u32>, Vec<bool>) {
+    let on_closed = on_closed_channel(inst, ch);
     let mut taken = vec![false; ch.list.len()];
     let mut rooks = Vec::new();
-    for (v, &closed) in on_closed.iter().enumerate() {
-        if closed {
+    for &v in order {
+        let v = v as usize;
+        if on_closed[v] {
             continue;
         }
         let ports = inst.start[v] as usize..inst.start[v + 1] as usize;
@@ -271,7 +290,16 @@ pub fn greedy_rooks(inst: &Discrete, ch: &Channels) -> (Vec<u32>, Vec<bool>) {
             rooks.push(v as u32);
         }
     }
+    rooks.sort_unstable();
     (rooks, taken)
+}
+
+/// The channels through each vertex, by channel id (for the attack relation: two vertices
+/// attack each other when they share a channel).
+pub fn channels_at(inst: &Discrete, ch: &Channels) -> Vec<Vec<u32>> {
+    (0..inst.len() as u32)
+        .map(|v| ch.through(inst, v))
+        .collect()
 }
 
 /// The turns the petal of a channel saves when cut open at position `i` of its sequence: the
@@ -344,10 +372,36 @@ pub fn star_walk(inst: &Discrete, ch: &Channels, rook: u32) -> VertexWalk {
 /// length ≤ [`length_bound`] = δ·n ≤ δ·OPT_length (Theorem 5.1 of *Optimal covering tours with
 /// turn costs*, with maxima where the paper writes averages: see the module documentation).
 pub fn star_cover(inst: &Discrete) -> StarCover {
+    star_cover_in(inst, &GreedyOrder::Index)
+}
+
+/// [`star_cover`] with the rooks placed greedily in `order` (a choice the paper leaves open:
+/// Lemma 4.5 places rooks "greedily" in no stated order; [`GreedyOrder::Index`] is
+/// [`star_cover`]).
+///
+/// # Guarantee
+/// Those of [`star_cover`], for every order.
+pub fn star_cover_in(inst: &Discrete, order: &GreedyOrder) -> StarCover {
     let ch = channels(inst);
-    let (rooks, taken) = greedy_rooks(inst, &ch);
-    let mut cycles: Vec<VertexWalk> = rooks.iter().map(|&r| star_walk(inst, &ch, r)).collect();
-    let mut ring_taken = vec![false; ch.list.len()];
+    let (rooks, _) = greedy_rooks_in(inst, &ch, &order.permutation(inst.len()));
+    star_cover_of_rooks(inst, &ch, rooks)
+}
+
+/// Steps 2 and 3 of the construction for a given rook set: one star walk per rook (in the
+/// order given) and the rings no rook attacks.
+///
+/// # Arguments
+/// `rooks` must be a set the greedy rule can produce: pairwise non-attacking, off closed
+/// channels, and attacking every vertex on no closed channel (a maximal such set).
+pub fn star_cover_of_rooks(inst: &Discrete, ch: &Channels, rooks: Vec<u32>) -> StarCover {
+    let mut taken = vec![false; ch.list.len()];
+    for &r in &rooks {
+        let ports = inst.start[r as usize] as usize..inst.start[r as usize + 1] as usize;
+        for p in ports {
+            taken[ch.port_channel[p] as usize] = true;
+        }
+    }
+    let mut cycles: Vec<VertexWalk> = rooks.iter().map(|&r| star_walk(inst, ch, r)).collect();
     let mut on_ring = vec![false; inst.len()];
     for &r in &rooks {
         // An isolated rook has no channel to be attacked through.
@@ -360,11 +414,11 @@ pub fn star_cover(inst: &Discrete) -> StarCover {
         if attacked || on_ring[v] {
             continue;
         }
+        // Which ring of an unattacked vertex is taken is open too; it costs 0 turns either way.
         let ring = ports
             .map(|p| ch.port_channel[p])
             .find(|&c| ch.list[c as usize].closed)
             .expect("a vertex no rook attacks lies on a closed channel");
-        ring_taken[ring as usize] = true;
         let verts = &ch.list[ring as usize].verts;
         for &u in verts {
             on_ring[u as usize] = true;
@@ -603,14 +657,14 @@ pub const ALGORITHM: Algorithm = Algorithm {
 
 /// The star cover and its merged tour on a discrete instance, with the rook and merge counts
 /// as certificates (`sum_beta` is the proven bound on the cycle cover's turns).
-fn run_discrete(inst: &Discrete, _: &Options) -> Result<Solution<DiscreteCover>> {
+fn run_discrete(inst: &Discrete, options: &Options) -> Result<Solution<DiscreteCover>> {
     if inst.components() != 1 {
         return Err(Error::invalid(format!(
             "the instance has {} components: no covering tour exists",
             inst.components()
         )));
     }
-    let star = star_cover(inst);
+    let star = star_cover_in(inst, &options.greedy_order);
     let (tour, stats) = super::merge::merge(inst, &star.cycles);
     let mut certificates = BTreeMap::new();
     certificates.insert("rooks".to_string(), star.rooks.len() as i64);
@@ -995,9 +1049,12 @@ pub(crate) mod tests {
             tested += 1;
             let (cc, tour, r) = assert_pipeline(&inst, &mut fig);
             let sc = star_cover(&inst);
-            let grid_rooks: Vec<u32> = greedy_rooks(&region).iter().map(|&i| i as u32).collect();
+            let grid_rooks: Vec<u32> = greedy_rooks(&region, &GreedyOrder::Index)
+                .iter()
+                .map(|&i| i as u32)
+                .collect();
             assert_eq!(sc.rooks, grid_rooks);
-            let (grid_cc, grid_r) = star_cycle_cover(&region);
+            let (grid_cc, grid_r) = star_cycle_cover(&region, &GreedyOrder::Index);
             assert_eq!(grid_r, r);
             let a = check_grid(&region, &grid_cc, Mode::Milling);
             let b = check(&inst, &sc.cycles);

@@ -404,6 +404,7 @@ impl Config {
                         merge: m.parse().unwrap_or_default(),
                         cutter: c.parse().unwrap_or_default(),
                         coverage4,
+                        ..Options::default()
                     });
                 }
             }

@@ -42,17 +42,21 @@
 
 use crate::algorithms::merge::cover_and_tour;
 use crate::algorithms::walks::{close_walk, extend_walk, straight};
-use crate::algorithms::{Algorithm, Guarantee, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, GreedyOrder, Guarantee, Objective, Options, Solution};
 use crate::error::Result;
 use crate::region::{Dir, Pixel, Region};
 use crate::tour::{CycleCover, Walk};
 use std::collections::BTreeMap;
 
-/// The greedy rook placement of Lemma 4.5: rooks in pixel index order, none attacking another.
+/// The greedy rook placement of Lemma 4.5: rooks in the scan `order` (pixel index order by
+/// default; the paper fixes no order, see [`GreedyOrder`]), none attacking another.
+///
+/// # Returns
+/// The rooks in pixel index order, whatever the scan order.
 ///
 /// # Complexity
 /// O(N) time and space.
-pub(crate) fn greedy_rooks(region: &Region) -> Vec<usize> {
+pub(crate) fn greedy_rooks(region: &Region, order: &GreedyOrder) -> Vec<usize> {
     let n = region.len();
     // Strip ids: a pixel takes the id of its west (south) neighbour, or a new one.
     let mut row = vec![0u32; n];
@@ -77,7 +81,8 @@ pub(crate) fn greedy_rooks(region: &Region) -> Vec<usize> {
     let mut row_taken = vec![false; rows as usize];
     let mut col_taken = vec![false; cols as usize];
     let mut rooks = Vec::new();
-    for i in 0..n {
+    for i in order.permutation(n) {
+        let i = i as usize;
         let (r, c) = (row[i] as usize, col[i] as usize);
         if !row_taken[r] && !col_taken[c] {
             row_taken[r] = true;
@@ -85,6 +90,7 @@ pub(crate) fn greedy_rooks(region: &Region) -> Vec<usize> {
             rooks.push(i);
         }
     }
+    rooks.sort_unstable();
     rooks
 }
 
@@ -109,8 +115,8 @@ pub(crate) fn star_walk(region: &Region, i: usize) -> Walk {
 }
 
 /// The star cycle cover: one walk per greedy rook, and the number of rooks r.
-pub(crate) fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
-    let rooks = greedy_rooks(region);
+pub(crate) fn star_cycle_cover(region: &Region, order: &GreedyOrder) -> (CycleCover, usize) {
+    let rooks = greedy_rooks(region, order);
     (
         CycleCover::new(rooks.iter().map(|&i| star_walk(region, i)).collect()),
         rooks.len(),
@@ -119,7 +125,7 @@ pub(crate) fn star_cycle_cover(region: &Region) -> (CycleCover, usize) {
 
 /// Runs `star-cover`: the star cycle cover and its merged tour, certificate `rooks` = r.
 pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
-    let (cover, r) = star_cycle_cover(region);
+    let (cover, r) = star_cycle_cover(region, &opts.greedy_order);
     let mut certificates = BTreeMap::new();
     certificates.insert("rooks".to_string(), r as i64);
     cover_and_tour(region, cover, opts, certificates)
@@ -248,7 +254,7 @@ mod tests {
         let r = Region::from_ascii(".#.\n###\n.#.\n");
         // Rooks in index order: (1, 0) takes the column and its one-pixel row, then (0, 1)
         // takes the middle row (the minimum strip cover is 2 as well).
-        let (cover, rooks) = star_cycle_cover(&r);
+        let (cover, rooks) = star_cycle_cover(&r, &GreedyOrder::Index);
         let rep = check(&r, &cover, Mode::Milling);
         assert!(rep.valid, "{:?}", rep.error);
         assert_eq!(rooks, 2);
