@@ -159,6 +159,7 @@ pub fn claims_command(
         Vec::new()
     };
     let mut table = claims::table(&rows, &tight_rows);
+    claims::add_choice_evidence(&mut table, &sources);
     add_hunts(&mut table, hunt)?;
     let bad = match out {
         Some(out) => write_claims(&table, Path::new(from), out)?,

@@ -215,6 +215,10 @@ pub struct Violation {
     pub registered_held: Option<bool>,
     /// The row's registered guarantees (its `guarantee` column).
     pub guarantee: String,
+    /// The bound as broken on the row (resolved to constants) and what it multiplies (OPT, U,
+    /// N or 1), for re-deciding it under other choices of the algorithm; `None` for the
+    /// relative measures (merges, coverage rewrites).
+    pub bound: Option<(Bound, u64)>,
 }
 
 /// What the rows say about one claim.
@@ -262,6 +266,7 @@ impl<'a> Measured<'a> {
             ratio,
             registered_held: r.within_guarantee,
             guarantee: r.guarantee.clone(),
+            bound: None,
         });
     }
 }
@@ -468,6 +473,9 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Measured<'a> {
                                 Attribution::of(implementation)
                             };
                             m.violate(r, attribution, detail, ratio);
+                            if let Some(v) = m.violations.last_mut() {
+                                v.bound = Some((b, x));
+                            }
                         }
                     }
                     (None, lower, upper) => {
@@ -498,6 +506,9 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Measured<'a> {
                                 detail,
                                 q as f64 / u.max(1) as f64,
                             );
+                            if let Some(v) = m.violations.last_mut() {
+                                v.bound = Some((b, u));
+                            }
                         } else if lower.is_some_and(|lb| b.holds(q, lb)) {
                             m.decide(r);
                         }
@@ -1428,6 +1439,67 @@ impl Sources {
             .find(|(n, _)| n == run)
             .map(|(_, d)| (d.as_path(), name))
     }
+}
+
+/// Adds to each violated claim whose witness is a star cover (the greedy order of its rooks
+/// is a choice the paper leaves open, Lemma 4.5) whether the violation depends on that order
+/// or survives every one: [`crate::discrete::choices::order_evidence`] re-runs the star cover
+/// on the witness over every rook set (exhaustive up to its cap, else sampled orders) and
+/// re-decides the same bound. Merge orders are not enumerated: a violation of Theorem 4.2 that
+/// survives every merge order is the statement contradicted (a lower bound on every tour).
+pub fn add_choice_evidence(table: &mut [ClaimRow], sources: &Sources) {
+    use crate::discrete::choices::{ChoiceValue, order_evidence};
+    for c in table.iter_mut().filter(|c| is_violated(c)) {
+        let Some(w) = c
+            .violations_detail
+            .iter()
+            .find(|v| format!("{} {} {}", v.algorithm, v.objective, v.instance) == c.witness)
+            .cloned()
+        else {
+            continue;
+        };
+        if !matches!(w.algorithm.as_str(), "star-cover" | "discrete-star-cover") {
+            continue;
+        }
+        let Some((from, name)) = sources.locate(&w.instance) else {
+            continue;
+        };
+        let Some(inst) = load_as_discrete(from, name) else {
+            continue;
+        };
+        let evidence = match (w.bound, w.objective.as_str()) {
+            (Some((b, x)), "cc-turns") => {
+                order_evidence(&w.algorithm, &inst, ChoiceValue::CcTurns, |v| !b.holds(v, x))
+            }
+            (Some((b, x)), "turns") => {
+                order_evidence(&w.algorithm, &inst, ChoiceValue::TourTurns, |v| !b.holds(v, x))
+            }
+            _ => continue,
+        };
+        match evidence {
+            Ok(e) => {
+                let _ = write!(c.note, " Greedy order: {}.", e.summary());
+            }
+            Err(e) => {
+                let _ = write!(c.note, " Greedy order: not evaluated ({e}).");
+            }
+        }
+    }
+}
+
+/// The instance `name` of the results directory `from` as a discrete instance (a grid region
+/// through [`crate::discrete::Discrete::from_region`]); `None` when not saved there.
+fn load_as_discrete(from: &Path, name: &str) -> Option<crate::discrete::Discrete> {
+    let dir = from.join("instances");
+    for ext in ["dm", "vox", "hex"] {
+        let p = dir.join(format!("{name}.{ext}"));
+        if p.exists() {
+            return crate::discrete::generate::read(&p).ok();
+        }
+    }
+    let p = dir.join(format!("{name}.grid"));
+    let inst = crate::instance::Instance::read(&p).ok()?;
+    Some(crate::discrete::Discrete::from_region(&inst.region))
 }
 
 /// A claim's name in file names: lower-case letters and digits, anything else `-`.
