@@ -105,6 +105,9 @@ impl Shape {
             Family::Boundary => Shape::Boundary,
             Family::Eroded => Shape::Connected,
             Family::LawnScattered => Shape::Any,
+            // A family the hunt has no class for keeps connectivity only.
+            #[allow(unreachable_patterns)]
+            _ => Shape::Connected,
         }
     }
 
