@@ -178,7 +178,15 @@ fn registry_rows_match_the_enum_and_names_round_trip() {
             "boundary",
             "thin-arms",
             "pinholes",
-            "eroded"
+            "eroded",
+            "hole-lattice",
+            "comb",
+            "double-comb",
+            "spiral",
+            "windows",
+            "outlines",
+            "ring",
+            "corridor-star"
         ]
     );
     let e = "disc".parse::<Family>().unwrap_err().to_string();
