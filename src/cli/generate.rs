@@ -6,7 +6,9 @@ use anyhow::Result;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{ArgAction, ArgMatches, Args, FromArgMatches};
 use mowmill::error::Error;
-use mowmill::generate::{self, Family, GenParams, PARAMS, Param, ParamKind, ParamValue, Style};
+use mowmill::generate::{
+    self, Family, GenParams, PARAMS, Param, ParamKind, ParamValue, Pattern, Style,
+};
 use mowmill::topology;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -38,6 +40,10 @@ fn family_parser() -> PossibleValuesParser {
     )
 }
 
+fn pattern_parser() -> impl TypedValueParser<Value = Pattern> {
+    PossibleValuesParser::new(Pattern::NAMES).try_map(|s| s.parse::<Pattern>())
+}
+
 fn style_parser() -> impl TypedValueParser<Value = Style> {
     PossibleValuesParser::new(Style::NAMES).try_map(|s| s.parse::<Style>())
 }
@@ -60,6 +66,7 @@ impl Args for ParamArgs {
                 ParamKind::Flag => arg.action(ArgAction::SetTrue),
                 ParamKind::Style => arg.value_parser(style_parser()),
                 ParamKind::Fraction => arg.value_parser(clap::value_parser!(f64)),
+                ParamKind::Pattern => arg.value_parser(pattern_parser()),
             })
         });
         cmd.after_help(generate::families_help())
@@ -89,6 +96,10 @@ impl FromArgMatches for ParamArgs {
                         .get_one::<f64>(spec.name)
                         .copied()
                         .map(ParamValue::Fraction),
+                    ParamKind::Pattern => m
+                        .get_one::<Pattern>(spec.name)
+                        .copied()
+                        .map(ParamValue::Pattern),
                 };
                 value.map(|v| (spec.param, v))
             })

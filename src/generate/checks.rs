@@ -27,6 +27,8 @@ pub(super) struct Promise {
     pub(super) any_holes: bool,
     /// Every pixel a boundary pixel (`topology::is_boundary`).
     pub(super) boundary_only: bool,
+    /// Every pixel of even degree in the grid graph (an Eulerian region).
+    pub(super) even_degrees: bool,
 }
 
 /// Checks `promise`; returns the number of holes.
@@ -67,6 +69,14 @@ pub(super) fn verify(region: &Region, promise: &Promise) -> std::result::Result<
     {
         return Err(format!("inner pixel {}", region.pixel(i)));
     }
+    if promise.even_degrees
+        && let Some(&p) = region
+            .pixels()
+            .iter()
+            .find(|&&p| grid_degree(region, p) % 2 == 1)
+    {
+        return Err(format!("pixel {p} of odd degree"));
+    }
     if promise.separated {
         for (i, &p) in region.pixels().iter().enumerate() {
             for q in topology::ring(p) {
@@ -79,4 +89,16 @@ pub(super) fn verify(region: &Region, promise: &Promise) -> std::result::Result<
         }
     }
     Ok(holes)
+}
+
+/// The number of 4-neighbours of `p` in the region.
+pub(super) fn grid_degree(region: &Region, p: crate::region::Pixel) -> usize {
+    [(1, 0), (-1, 0), (0, 1), (0, -1)]
+        .iter()
+        .filter(|&&(dx, dy)| {
+            region
+                .index_of(crate::region::Pixel::new(p.x + dx, p.y + dy))
+                .is_some()
+        })
+        .count()
 }

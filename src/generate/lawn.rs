@@ -38,6 +38,7 @@ pub(super) fn lawn_part(size: usize, o: &ShapeOpts, rng: &mut Rng) -> Vec<Pixel>
         separated: false,
         any_holes: false,
         boundary_only: false,
+        even_degrees: false,
     };
     for _ in 0..MAX_ATTEMPTS {
         if let Some((c, _)) = simple_canvas(size, o, rng)

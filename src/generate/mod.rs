@@ -128,26 +128,36 @@ mod band;
 mod boundary;
 mod canvas;
 mod checks;
+mod comb;
+mod corridor_star;
 mod eroded;
 mod growth;
+mod hole_lattice;
 mod lawn;
+mod outlines;
 mod pinholes;
 mod random_holed;
 mod random_simple;
 mod rect;
 mod registry;
+mod ring;
 // Shared with the discrete generators (`crate::discrete::generate`).
 pub(crate) mod rng;
 mod spec;
+mod spiral;
 mod staircase;
 mod styles;
 mod thin;
 mod thin43;
 mod thin_arms;
+mod windows;
 
+#[cfg(test)]
+mod structured_tests;
 #[cfg(test)]
 mod tests;
 
+pub use hole_lattice::Pattern;
 pub use registry::{
     Family, FamilyInfo, PARAMS, Param, ParamKind, ParamSpec, ParamValue, families_help,
 };
@@ -179,6 +189,8 @@ pub struct GenParams {
     pub compactness: Option<f64>,
     /// The parameter s of `thin43`.
     pub s: Option<usize>,
+    /// The hole lattice of `hole-lattice`.
+    pub pattern: Option<Pattern>,
     pub seed: u64,
 }
 
@@ -198,6 +210,7 @@ impl GenParams {
             style: None,
             compactness: None,
             s: None,
+            pattern: None,
             seed,
         }
     }
@@ -217,6 +230,7 @@ impl GenParams {
             Param::Compactness => self.compactness.map(Fraction),
             Param::S => self.s.map(Count),
             Param::NoCut => self.no_cut.then_some(Flag(true)),
+            Param::Pattern => self.pattern.map(ParamValue::Pattern),
         }
     }
 
@@ -239,6 +253,7 @@ impl GenParams {
             (Param::Compactness, Fraction(v)) => self.compactness = Some(v),
             (Param::S, Count(v)) => self.s = Some(v),
             (Param::NoCut, Flag(v)) => self.no_cut = v,
+            (Param::Pattern, ParamValue::Pattern(v)) => self.pattern = Some(v),
             _ => {
                 return Err(crate::error::Error::invalid(format!(
                     "{}: expected {}, got {value}",

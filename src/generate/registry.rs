@@ -1,6 +1,7 @@
 //! The registry of families and parameters: every name `gen`, configs and the manifest use.
 
 use super::MAX_PIXELS;
+use super::hole_lattice::Pattern;
 use super::styles::Style;
 use crate::error::Error;
 use crate::error::Result;
@@ -22,6 +23,14 @@ pub enum Family {
     ThinArms,
     Pinholes,
     Eroded,
+    HoleLattice,
+    Comb,
+    DoubleComb,
+    Spiral,
+    Windows,
+    Outlines,
+    Ring,
+    CorridorStar,
 }
 
 /// A generator parameter (the field of [`GenParams`](super::GenParams) of the same name).
@@ -39,6 +48,7 @@ pub enum Param {
     Compactness,
     S,
     NoCut,
+    Pattern,
 }
 
 /// The type of a parameter's values.
@@ -52,6 +62,8 @@ pub enum ParamKind {
     Style,
     /// A number in [0, 1].
     Fraction,
+    /// A [`Pattern`] name.
+    Pattern,
 }
 
 impl ParamKind {
@@ -62,6 +74,7 @@ impl ParamKind {
             ParamKind::Flag => "true or false",
             ParamKind::Style => "a style name",
             ParamKind::Fraction => "a number between 0 and 1",
+            ParamKind::Pattern => "a pattern name",
         }
     }
 }
@@ -87,7 +100,7 @@ pub struct ParamSpec {
 
 /// Every parameter, indexed by `Param as usize`. The order is the order of the `params`
 /// column of benchmark results, from which instance seeds derive: append, never reorder.
-pub const PARAMS: [ParamSpec; 11] = [
+pub const PARAMS: [ParamSpec; 12] = [
     ParamSpec {
         param: Param::N,
         name: "n",
@@ -114,7 +127,7 @@ pub const PARAMS: [ParamSpec; 11] = [
         kind: ParamKind::Count,
         min: 1,
         max: MAX_PIXELS,
-        help: "Width of the rectangle",
+        help: "Width of the rectangle; corridor or bar width (1 or 2) of the structured families",
     },
     ParamSpec {
         param: Param::Height,
@@ -132,7 +145,7 @@ pub const PARAMS: [ParamSpec; 11] = [
         kind: ParamKind::Count,
         min: 1,
         max: MAX_PIXELS,
-        help: "Width of the annulus (donut), or the index of the band B_k (band)",
+        help: "Width of the annulus (donut), index of the band B_k (band), teeth (comb, double-comb), pane side (windows, default 2), rectangles (outlines), corridors 1-4 (corridor-star, default 4)",
     },
     ParamSpec {
         param: Param::Side,
@@ -190,6 +203,15 @@ pub const PARAMS: [ParamSpec; 11] = [
         max: 0,
         help: "No cut vertices (random-simple) or no local cut vertices (random-holed)",
     },
+    ParamSpec {
+        param: Param::Pattern,
+        name: "pattern",
+        flag: "pattern",
+        kind: ParamKind::Pattern,
+        min: 0,
+        max: 0,
+        help: "Lattice of one-pixel holes: staggered (default), square, diagonal or sparse",
+    },
 ];
 
 impl ParamSpec {
@@ -215,7 +237,8 @@ impl ParamSpec {
             (ParamKind::Count, ParamValue::Count(_))
             | (ParamKind::Fraction, ParamValue::Fraction(_))
             | (ParamKind::Flag, ParamValue::Flag(_))
-            | (ParamKind::Style, ParamValue::Style(_)) => return Ok(()),
+            | (ParamKind::Style, ParamValue::Style(_))
+            | (ParamKind::Pattern, ParamValue::Pattern(_)) => return Ok(()),
             _ => format!("{name}: expected {}, got {value}", self.kind.expected()),
         };
         Err(Error::invalid(message))
@@ -254,6 +277,7 @@ pub enum ParamValue {
     Flag(bool),
     Style(Style),
     Fraction(f64),
+    Pattern(Pattern),
 }
 
 impl fmt::Display for ParamValue {
@@ -263,6 +287,7 @@ impl fmt::Display for ParamValue {
             ParamValue::Flag(v) => write!(f, "{v}"),
             ParamValue::Style(v) => write!(f, "{v}"),
             ParamValue::Fraction(v) => write!(f, "{v}"),
+            ParamValue::Pattern(v) => write!(f, "{v}"),
         }
     }
 }
@@ -274,6 +299,7 @@ impl serde::Serialize for ParamValue {
             ParamValue::Flag(v) => s.serialize_bool(v),
             ParamValue::Style(v) => s.serialize_str(v.name()),
             ParamValue::Fraction(v) => s.serialize_f64(v),
+            ParamValue::Pattern(v) => s.serialize_str(v.name()),
         }
     }
 }
@@ -295,7 +321,7 @@ pub struct FamilyInfo {
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
 /// arm in `Spec::build`; `mowmill gen`, configs and the manifest read it from here.
-pub(super) const FAMILY_TABLE: [FamilyInfo; 12] = [
+pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
     FamilyInfo {
         family: Family::Rect,
         name: "rect",
@@ -398,6 +424,70 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 12] = [
         required: &[Param::N],
         random: true,
     },
+    FamilyInfo {
+        family: Family::HoleLattice,
+        name: "hole-lattice",
+        summary: "structured: odd square riddled with one-pixel holes in a lattice (staggered: Q = 0, h ~ N/3; milling25 -> 8/3)",
+        params: &[Param::N, Param::Pattern],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Comb,
+        name: "comb",
+        summary: "structured: a spine with k width-1 teeth at spacing 2 on one side, N = 2k - 1 + kL",
+        params: &[Param::N, Param::K],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::DoubleComb,
+        name: "double-comb",
+        summary: "structured: a spine with k width-1 teeth at spacing 2 on both sides, N = 2k - 1 + 2kL",
+        params: &[Param::N, Param::K],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Spiral,
+        name: "spiral",
+        summary: "structured: a corridor of width 1 or 2 wound as a rectangular spiral, windings one cell apart",
+        params: &[Param::N, Param::Width],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Windows,
+        name: "windows",
+        summary: "structured: a square with an m x m lattice of k x k panes (holes), bars of width 1 or 2",
+        params: &[Param::N, Param::Width, Param::K],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::Outlines,
+        name: "outlines",
+        summary: "structured: union of k crossing width-1 rectangle outlines, connected, thin, every pixel of even degree",
+        params: &[Param::N, Param::K],
+        required: &[Param::N],
+        random: true,
+    },
+    FamilyInfo {
+        family: Family::Ring,
+        name: "ring",
+        summary: "structured: a rectangular ring (annulus) of width 1 or 2, N = 2w(a + b) - 4w^2",
+        params: &[Param::N, Param::Width],
+        required: &[Param::N],
+        random: false,
+    },
+    FamilyInfo {
+        family: Family::CorridorStar,
+        name: "corridor-star",
+        summary: "structured: k = 1..4 straight corridors (axes, diagonals) of width 1 or 2 crossing at a centre",
+        params: &[Param::N, Param::K, Param::Width],
+        required: &[Param::N],
+        random: false,
+    },
 ];
 
 impl FamilyInfo {
@@ -436,7 +526,7 @@ impl FamilyInfo {
 }
 
 impl Family {
-    pub const ALL: [Family; 12] = [
+    pub const ALL: [Family; 20] = [
         Family::Rect,
         Family::RandomSimple,
         Family::RandomHoled,
@@ -449,6 +539,14 @@ impl Family {
         Family::ThinArms,
         Family::Pinholes,
         Family::Eroded,
+        Family::HoleLattice,
+        Family::Comb,
+        Family::DoubleComb,
+        Family::Spiral,
+        Family::Windows,
+        Family::Outlines,
+        Family::Ring,
+        Family::CorridorStar,
     ];
 
     /// The family's registry row.
@@ -519,9 +617,10 @@ pub fn families_help() -> String {
         .map(|f| f.name)
         .collect();
     out.push_str(&format!(
-        "\nStyles (--style): {} (eroded: {}, mixed draws one).\nDeterministic families (--seed optional, default 0): {}.",
+        "\nStyles (--style): {} (eroded: {}, mixed draws one).\nPatterns (--pattern, hole-lattice): {}.\nDeterministic families (--seed optional, default 0): {}.",
         styles.join(", "),
         eroded.join(", "),
+        Pattern::NAMES.join(", "),
         fixed.join(", ")
     ));
     out

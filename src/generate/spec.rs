@@ -4,19 +4,29 @@
 use super::band::band_pixels;
 use super::boundary::{boundary_canvas, two_rows_pixels};
 use super::checks::{CutRule, Promise, verify};
+use super::comb::{comb_count, comb_default_teeth, comb_length, comb_pixels};
+use super::corridor_star::{star_arm, star_count, star_pixels};
 use super::eroded::eroded_pixels;
+use super::hole_lattice::{Pattern, hole_lattice_pixels, lattice_half_side, lattice_pixels_count};
 use super::lawn::lawn_pixels;
+use super::outlines::{
+    Layout, crossings, outlines_default_k, outlines_layout, outlines_pixels, outlines_spacing,
+    slot_perimeter,
+};
 use super::pinholes::pinholes_canvas;
 use super::random_holed::holed_canvas;
 use super::random_simple::simple_canvas;
 use super::rect::{donut_pixels, rect_pixels};
 use super::registry::{Family, PARAMS, Param};
+use super::ring::{ring_count, ring_pixels, ring_sides};
 use super::rng::{Rng, below, between, rng_for};
+use super::spiral::{spiral_count, spiral_pixels, spiral_side};
 use super::staircase::{min_holed_pixels, rows_pixels, rows_plan};
 use super::styles::{ShapeOpts, Style};
 use super::thin::{min_thin_pixels, thin_pixels};
 use super::thin_arms::thin_arms_pixels;
 use super::thin43::{thin43_holes, thin43_pixels};
+use super::windows::{windows_count, windows_panes, windows_pixels};
 use super::{GenParams, MAX_PIXELS, Provenance};
 use crate::error::Error;
 use crate::error::Result;
@@ -67,7 +77,37 @@ pub(super) struct Spec {
     pub(super) style: Style,
     pub(super) compactness: f64,
     pub(super) s: usize,
+    pub(super) pattern: Pattern,
     pub(super) seed: u64,
+}
+
+/// What a structured family derives from n: its two dimensions (family-specific: the
+/// half-side m, tooth length and sides, spiral side, panes per side, spacing, ring sides, arm
+/// length) and the exact pixel count.
+#[derive(Clone, Copy, Debug)]
+struct Dims {
+    a: usize,
+    b: usize,
+    count: usize,
+}
+
+/// Stream tag of the `outlines` layout.
+const TAG_OUTLINES: u64 = 0x0u64;
+
+/// The structured families (modules `hole_lattice`, `comb`, `spiral`, `windows`, `outlines`,
+/// `ring`, `corridor_star`): deterministic shapes sized from n.
+pub(super) fn structured(family: Family) -> bool {
+    matches!(
+        family,
+        Family::HoleLattice
+            | Family::Comb
+            | Family::DoubleComb
+            | Family::Spiral
+            | Family::Windows
+            | Family::Outlines
+            | Family::Ring
+            | Family::CorridorStar
+    )
 }
 
 /// Tags of the seed-derived random streams.
@@ -98,6 +138,18 @@ impl Spec {
             (Style::Mixed, _) => drawn_style,
             (s, _) => s,
         };
+        // Structured families' defaults of k and width (0 = not taken).
+        let default_k = match p.family {
+            Family::Comb | Family::DoubleComb => comb_default_teeth(p.n.unwrap_or(0)),
+            Family::Windows => 2,
+            Family::Outlines => outlines_default_k(p.n.unwrap_or(0)),
+            Family::CorridorStar => 4,
+            _ => 0,
+        };
+        let default_width = match p.family {
+            Family::Spiral | Family::Windows | Family::Ring | Family::CorridorStar => 1,
+            _ => 0,
+        };
         let default_holes = if p.family == Family::RandomHoled {
             1
         } else {
@@ -107,15 +159,16 @@ impl Spec {
             family: p.family,
             n: p.n.unwrap_or(0),
             holes: p.holes.unwrap_or(default_holes),
-            width: p.width.unwrap_or(0),
+            width: p.width.unwrap_or(default_width),
             height: p.height.unwrap_or(0),
             side: p.side.unwrap_or(0),
-            k: p.k.unwrap_or(0),
+            k: p.k.unwrap_or(default_k),
             parts: p.parts.unwrap_or(3),
             no_cut: p.no_cut,
             style,
             compactness: p.compactness.unwrap_or(drawn_compactness),
             s: p.s.unwrap_or(0),
+            pattern: p.pattern.unwrap_or(Pattern::Staggered),
             seed: p.seed,
         })
     }
@@ -133,6 +186,7 @@ impl Spec {
             Param::Style => self.style.to_string(),
             Param::Compactness => self.compactness.to_string(),
             Param::S => self.s.to_string(),
+            Param::Pattern => self.pattern.to_string(),
         }
     }
 
@@ -166,12 +220,143 @@ impl Spec {
             }
             Family::Band => self.k.saturating_mul(5).saturating_add(4),
             Family::Thin43 => self.s.saturating_mul(77).saturating_add(222),
+            f if structured(f) => self.structured_dims().map_or(0, |d| d.count),
             _ => self.n,
         }
     }
 
+    /// The outlines layout of this seed and k.
+    fn layout(&self) -> Layout {
+        outlines_layout(self.k, &mut rng_for(self.seed, TAG_OUTLINES))
+    }
+
+    /// The shape dimensions a structured family derives from n, with the exact pixel count
+    /// (each module's formula); `None` outside the structured families or when a refusal of
+    /// [`Spec::check_structured`] applies.
+    fn structured_dims(&self) -> Option<Dims> {
+        let (n, k, w) = (self.n, self.k, self.width);
+        if self.check_structured().is_err() {
+            return None;
+        }
+        let d = match self.family {
+            Family::HoleLattice => {
+                let m = lattice_half_side(self.pattern, n);
+                Dims {
+                    a: m,
+                    b: 0,
+                    count: lattice_pixels_count(self.pattern, m),
+                }
+            }
+            Family::Comb | Family::DoubleComb => {
+                let sides = if self.family == Family::Comb { 1 } else { 2 };
+                let len = comb_length(n, k, sides);
+                Dims {
+                    a: len,
+                    b: sides,
+                    count: comb_count(k, len, sides),
+                }
+            }
+            Family::Spiral => {
+                let s = spiral_side(n, w);
+                Dims {
+                    a: s,
+                    b: 0,
+                    count: spiral_count(s, w),
+                }
+            }
+            Family::Windows => {
+                let m = windows_panes(n, k, w);
+                Dims {
+                    a: m,
+                    b: 0,
+                    count: windows_count(m, k, w),
+                }
+            }
+            Family::Outlines => {
+                let layout = self.layout();
+                let s = outlines_spacing(&layout, n);
+                Dims {
+                    a: s,
+                    b: 0,
+                    count: 2 * s * slot_perimeter(&layout) - crossings(&layout),
+                }
+            }
+            Family::Ring => {
+                let (a, b) = ring_sides(n, w);
+                Dims {
+                    a,
+                    b,
+                    count: ring_count(a, b, w),
+                }
+            }
+            Family::CorridorStar => {
+                let l = star_arm(n, k, w);
+                Dims {
+                    a: l,
+                    b: 0,
+                    count: star_count(k, l, w),
+                }
+            }
+            _ => return None,
+        };
+        Some(d)
+    }
+
+    /// The structured families' refusals of k and width, before sizing.
+    fn check_structured(&self) -> Result<()> {
+        let (name, n, k, w) = (self.family.name(), self.n, self.k, self.width);
+        let narrow = matches!(
+            self.family,
+            Family::Spiral | Family::Windows | Family::Ring | Family::CorridorStar
+        );
+        if narrow && !(1..=2).contains(&w) {
+            return Err(Error::invalid(format!(
+                "{name} needs width 1 or 2, got {w}"
+            )));
+        }
+        if n == 0 {
+            return Err(Error::invalid(format!("{name} needs n ≥ 1 pixels")));
+        }
+        let huge = |what: &str| {
+            Err(Error::invalid(format!(
+                "{name}: {what} is too large for n = {n} (more than the generator's limit of {MAX_PIXELS} pixels)"
+            )))
+        };
+        match self.family {
+            Family::Comb | Family::DoubleComb => {
+                let sides = if self.family == Family::Comb { 1 } else { 2 };
+                if n < comb_count(k, 1, sides) {
+                    return Err(Error::invalid(format!(
+                        "{name} with k = {k} teeth needs n ≥ {} (teeth of length 1), got {n}",
+                        comb_count(k, 1, sides)
+                    )));
+                }
+            }
+            Family::Windows if k > MAX_PIXELS.isqrt() => return huge("the pane side k"),
+            Family::Outlines if 8 * k > n => {
+                return Err(Error::invalid(format!(
+                    "outlines with k = {k} rectangles needs n ≥ {} (8 pixels per outline), got {n}",
+                    8 * k
+                )));
+            }
+            Family::CorridorStar if !(1..=4).contains(&k) => {
+                return Err(Error::invalid(format!(
+                    "corridor-star takes k = 1 to 4 corridors (horizontal, vertical, two diagonals), got {k}"
+                )));
+            }
+            _ => {}
+        }
+        if n > MAX_PIXELS {
+            return huge("n");
+        }
+        Ok(())
+    }
+
     pub(super) fn check_feasible(&self) -> Result<()> {
         let name = self.family.name();
+        if structured(self.family) {
+            self.check_structured()?;
+        }
         if self.family == Family::Eroded && self.n > MAX_ERODED {
             return Err(Error::invalid(format!(
                 "eroded: n = {} is more than this family's limit of {MAX_ERODED} pixels (it erodes a square of \
@@ -276,6 +461,9 @@ impl Spec {
             // Any number of holes (`any_holes`).
             Family::Eroded => (1, 0),
             Family::LawnScattered => (self.parts, 0),
+            Family::HoleLattice => (1, self.structured_holes()),
+            Family::Windows => (1, self.structured_dims().map_or(0, |d| d.a * d.a)),
+            Family::Ring => (1, 1),
             _ => (1, 0),
         };
         let cut = match self.family {
@@ -291,11 +479,36 @@ impl Spec {
             cut,
             thin: matches!(
                 self.family,
-                Family::Thin | Family::Thin43 | Family::ThinArms
-            ),
+                Family::Thin
+                    | Family::Thin43
+                    | Family::ThinArms
+                    | Family::Comb
+                    | Family::DoubleComb
+                    | Family::Outlines
+            ) || (self.family == Family::HoleLattice && self.pattern == Pattern::Staggered)
+                || (matches!(self.family, Family::Spiral | Family::Ring) && self.width == 1),
             separated: self.family == Family::LawnScattered,
-            any_holes: matches!(self.family, Family::Boundary | Family::Eroded),
+            any_holes: matches!(
+                self.family,
+                Family::Boundary | Family::Eroded | Family::Outlines | Family::CorridorStar
+            ),
             boundary_only: self.family == Family::Boundary,
+            even_degrees: self.family == Family::Outlines,
+        }
+    }
+
+    /// The holes of `hole-lattice` (module `hole_lattice`): h = missing cells minus notches.
+    fn structured_holes(&self) -> usize {
+        let Some(d) = self.structured_dims() else {
+            return 0;
+        };
+        let m = d.a;
+        let s = 2 * m + 1;
+        let missing = s * s - d.count;
+        match self.pattern {
+            // The staggered rows of the first kind lose x = 0 and x = 2m to the boundary.
+            Pattern::Staggered => missing - 2 * m.div_ceil(2),
+            _ => missing,
         }
     }
 
@@ -308,6 +521,29 @@ impl Spec {
             Family::Donut => (donut_pixels(self.side, self.k), Provenance::Direct),
             Family::Band => (band_pixels(self.k), Provenance::Direct),
             Family::Thin43 => (thin43_pixels(self.s), Provenance::Direct),
+            f @ (Family::HoleLattice
+            | Family::Comb
+            | Family::DoubleComb
+            | Family::Spiral
+            | Family::Windows
+            | Family::Outlines
+            | Family::Ring
+            | Family::CorridorStar) => {
+                let d = self
+                    .structured_dims()
+                    .ok_or_else(|| Error::invalid(format!("internal error: no {f} dimensions")))?;
+                let (k, w) = (self.k, self.width);
+                let pixels = match f {
+                    Family::HoleLattice => hole_lattice_pixels(self.pattern, d.a),
+                    Family::Comb | Family::DoubleComb => comb_pixels(k, d.a, d.b == 2),
+                    Family::Spiral => spiral_pixels(d.a, w),
+                    Family::Windows => windows_pixels(d.a, k, w),
+                    Family::Outlines => outlines_pixels(&self.layout(), d.a),
+                    Family::Ring => ring_pixels(d.a, d.b, w),
+                    _ => star_pixels(k, d.a, w),
+                };
+                (pixels, Provenance::Direct)
+            }
             Family::LawnScattered => {
                 let mut rng = rng_for(self.seed, 0);
                 (lawn_pixels(n, self.parts, &o, &mut rng), Provenance::Direct)

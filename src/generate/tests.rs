@@ -6,6 +6,7 @@ use super::random_holed::holed_canvas;
 use super::random_simple::simple_canvas;
 use super::registry::{FAMILY_TABLE, Family};
 use super::rng::rng_for;
+use super::spec::structured;
 use super::staircase::{min_holed_pixels, rows_pixels, rows_plan};
 use super::styles::{ShapeOpts, Style};
 use super::thin::{ceil_sqrt, min_thin_pixels, thin_capacity, thin_pixels};
@@ -64,7 +65,10 @@ fn assert_promises(f: &GridFile, p: &GenParams) {
     assert_eq!(f.meta("holes"), Some(s.holes.to_string().as_str()));
     assert_eq!(f.meta("family"), Some(p.family.name()));
     assert_eq!(f.meta("seed"), Some(p.seed.to_string().as_str()));
-    if let Some(n) = p.n {
+    // The structured families take n as an approximate size (`structured_tests`).
+    if let Some(n) = p.n
+        && !structured(p.family)
+    {
         assert_eq!(s.n, n, "exact n\n{r:?}");
     }
     match p.family {
@@ -118,6 +122,15 @@ fn assert_promises(f: &GridFile, p: &GenParams) {
         }
         Family::Eroded => assert_eq!(s.components, 1, "{r:?}"),
         Family::Rect | Family::Donut | Family::Band | Family::Thin43 => {}
+        // Checked with their formulas in `structured_tests`.
+        Family::HoleLattice
+        | Family::Comb
+        | Family::DoubleComb
+        | Family::Spiral
+        | Family::Windows
+        | Family::Outlines
+        | Family::Ring
+        | Family::CorridorStar => assert_eq!(s.components, 1, "{r:?}"),
     }
 }
 
@@ -165,7 +178,15 @@ fn registry_rows_match_the_enum_and_names_round_trip() {
             "boundary",
             "thin-arms",
             "pinholes",
-            "eroded"
+            "eroded",
+            "hole-lattice",
+            "comb",
+            "double-comb",
+            "spiral",
+            "windows",
+            "outlines",
+            "ring",
+            "corridor-star"
         ]
     );
     let e = "disc".parse::<Family>().unwrap_err().to_string();
@@ -497,6 +518,7 @@ fn staircases_keep_their_promises() {
                     separated: false,
                     any_holes: false,
                     boundary_only: false,
+                    even_degrees: false,
                 };
                 assert_eq!(
                     verify(&region, &promise),
@@ -545,6 +567,7 @@ fn thin_fallback_keeps_its_promises() {
                 separated: false,
                 any_holes: false,
                 boundary_only: false,
+                even_degrees: false,
             };
             assert_eq!(
                 verify(&region, &promise),
@@ -584,6 +607,7 @@ fn random_constructions_return_only_valid_regions() {
                         separated: false,
                         any_holes: false,
                         boundary_only: false,
+                        even_degrees: false,
                     };
                     match simple_canvas(n, &o, &mut rng) {
                         Some((c, _)) => {
@@ -636,6 +660,7 @@ fn random_constructions_return_only_valid_regions() {
                 separated: false,
                 any_holes: false,
                 boundary_only: false,
+                even_degrees: false,
             };
             assert_eq!(verify(&r, &promise), Ok(holes), "thin n {n}\n{r:?}");
         }

@@ -250,6 +250,15 @@ impl<'de> Deserialize<'de> for FamilySpec {
                                     .map_err(|e| {
                                         serde::de::Error::custom(format!("{}: {e}", param.name()))
                                     })?,
+                                ParamKind::Pattern => map
+                                    .next_value::<OneOrMany<String>>()?
+                                    .0
+                                    .iter()
+                                    .map(|s| s.parse().map(ParamValue::Pattern))
+                                    .collect::<Result<_>>()
+                                    .map_err(|e| {
+                                        serde::de::Error::custom(format!("{}: {e}", param.name()))
+                                    })?,
                             };
                             spec.params.insert(param, values);
                         }
