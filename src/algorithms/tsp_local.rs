@@ -22,9 +22,10 @@ pub(crate) trait Metric {
     }
 }
 
-/// Kicks of the iterated local search: `KICKS_PER_POINT` per point, at most `MAX_KICKS`.
-const KICKS_PER_POINT: usize = 30;
-const MAX_KICKS: usize = 20_000;
+/// The default number of kicks of the iterated local search: 30 per point, at most 20,000.
+pub(crate) fn default_kicks(n: usize) -> usize {
+    (30 * n).min(20_000)
+}
 
 /// Gains below this are treated as zero (lengths are sums of a few exact or rounded terms).
 const EPS: f64 = 1e-9;
@@ -234,9 +235,14 @@ impl<M: Metric> Tour<'_, M> {
 }
 
 /// 2-opt and Or-opt (segments of 1 to 3 points) on the neighbour lists `nbs` (each sorted
-/// nearest first) of each point with don't-look bits, then an iterated local search of local double-bridge
+/// nearest first) of each point with don't-look bits, then an iterated local search of `kicks` local double-bridge
 /// kicks (seeded, kept when the tour does not get longer). Never longer than `start`.
-pub(crate) fn improve<M: Metric>(p: &M, nbs: &[Vec<usize>], start: Vec<usize>) -> Vec<usize> {
+pub(crate) fn improve<M: Metric>(
+    p: &M,
+    nbs: &[Vec<usize>],
+    kicks: usize,
+    start: Vec<usize>,
+) -> Vec<usize> {
     let n = start.len();
     if n < 5 {
         return start;
@@ -258,11 +264,7 @@ pub(crate) fn improve<M: Metric>(p: &M, nbs: &[Vec<usize>], start: Vec<usize>) -
     let mut active = vec![true; n];
     t.optimise(nbs, &mut queue, &mut active);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x1a_e2_0b_7e);
-    let kicks = if n < 8 {
-        0
-    } else {
-        (KICKS_PER_POINT * n).min(MAX_KICKS)
-    };
+    let kicks = if n < 8 { 0 } else { kicks };
     let span = 50.min(n / 3);
     for _ in 0..kicks {
         // A double bridge A B C D → A C B D on two short consecutive segments B, C from a

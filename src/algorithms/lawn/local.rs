@@ -92,5 +92,6 @@ pub(super) fn improve(p: &Points, start: Vec<usize>) -> Vec<usize> {
     if start.len() < 5 {
         return start;
     }
-    tsp_local::improve(p, &nearest_neighbours(p, NEIGHBOURS), start)
+    let kicks = tsp_local::default_kicks(start.len());
+    tsp_local::improve(p, &nearest_neighbours(p, NEIGHBOURS), kicks, start)
 }
