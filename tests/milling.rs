@@ -644,3 +644,82 @@ fn cli_solves_lawns_with_every_cutter() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `milling-2opt` on one region: a checked tour no longer than 2N − 2 (its guarantee) and no
+/// shorter than N.
+fn run_two_opt(region: &Region) -> (Solution, checker::Report) {
+    let (sol, rep) = run("milling-2opt", region);
+    let n = region.len() as u64;
+    assert!(
+        rep.length + 2 <= 2 * n.max(1),
+        "length {} > 2N - 2, N = {n}\n{}",
+        rep.length,
+        region.to_ascii()
+    );
+    assert!(n < 2 || rep.length >= n, "{}", region.to_ascii());
+    let g = algorithms::find("milling-2opt").unwrap().guarantees[0];
+    assert!(g.holds(rep.length, n));
+    (sol, rep)
+}
+
+#[test]
+fn milling_2opt_tours_pass_the_checker_on_every_family() {
+    use mowmill::generate::{Family, GenParams, generate};
+    let mut count = 0;
+    for family in Family::ALL {
+        for seed in 1..=3u64 {
+            let mut p = GenParams::new(family, seed);
+            p.n = Some(150);
+            let Ok(g) = generate(&p) else { continue };
+            let region = g.region;
+            if region.is_empty() || topology::components(&region).count != 1 {
+                continue;
+            }
+            run_two_opt(&region);
+            count += 1;
+        }
+    }
+    for seed in 0..60 {
+        let region = random_region(900 + seed, 5 + seed as usize * 3, seed % 2 == 0);
+        run_two_opt(&region);
+        count += 1;
+    }
+    // 6 families take `--n` alone (18 regions), plus the 60 random polyominoes.
+    assert!(count >= 75, "{count} regions");
+}
+
+#[test]
+fn milling_2opt_finds_hamiltonian_cycles() {
+    // 4 x 6: a Hamiltonian cycle of 24 moves, the optimum.
+    let (_, rep) = run_two_opt(&Region::rectangle(6, 4));
+    assert_eq!(rep.length, 24);
+    // A 5 x 5 ring around a 3 x 3 hole: 16 pixels, 16 moves.
+    let ring = Region::from_ascii("#####\n#...#\n#...#\n#...#\n#####\n");
+    assert_eq!(run_two_opt(&ring).1.length, 16);
+    // An 8 x 4 rectangle (even area): Hamiltonian.
+    assert_eq!(run_two_opt(&Region::rectangle(8, 4)).1.length, 32);
+    // Tiny regions: one pixel (no move), a domino (there and back).
+    assert_eq!(run_two_opt(&Region::rectangle(1, 1)).1.length, 0);
+    assert_eq!(run_two_opt(&Region::rectangle(2, 1)).1.length, 2);
+    // A path of 5 pixels: every tour walks it twice, 2N - 2 = 8.
+    assert_eq!(run_two_opt(&Region::rectangle(5, 1)).1.length, 8);
+}
+
+#[test]
+fn milling_2opt_is_deterministic() {
+    let region = random_region(77, 300, false);
+    let algo = algorithms::find("milling-2opt").unwrap();
+    let a = (algo.run)(&region, &Options::default()).unwrap();
+    let b = (algo.run)(&region, &Options::default()).unwrap();
+    assert_eq!(a.outputs[0].cover, b.outputs[0].cover);
+    assert_eq!(a.certificates, b.certificates);
+}
+
+#[test]
+fn milling_2opt_above_the_matrix_limit_walks_the_doubled_tree() {
+    // 6,400 pixels: no distance matrix, the depth-first tree walked around, 2N - 2 moves.
+    let region = Region::rectangle(80, 80);
+    let (sol, rep) = run_two_opt(&region);
+    assert_eq!(sol.certificates["local_search"], 0);
+    assert_eq!(rep.length, 2 * 6400 - 2);
+}

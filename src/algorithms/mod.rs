@@ -35,13 +35,14 @@ use theorems::{Claim, Paper, Theorem};
 // Shared pieces (no algorithm of their own): implementation detail.
 pub(crate) mod euler;
 pub(crate) mod precondition;
+pub(crate) mod tsp_local;
 pub(crate) mod walks;
 // The algorithms are run through the registry and `evaluate`, so their modules are crate-private;
 // the few entry points the integration tests drive directly are re-exported, hidden from docs.
 // Lawn mowing and milling (Arkin, Fekete, Mitchell).
 pub(crate) mod lawn;
 mod milling;
-pub(crate) use milling::{holes1325, milling25, tsp65};
+pub(crate) use milling::{holes1325, milling25, tsp65, two_opt as milling_two_opt};
 // Optimal covering tours with turn costs (issue 5).
 #[doc(hidden)]
 pub mod matching;
@@ -887,6 +888,7 @@ pub static REGISTRY: &[Algorithm] = &[
     milling25::ALGORITHM,
     tsp65::ALGORITHM,
     holes1325::ALGORITHM,
+    milling_two_opt::ALGORITHM,
     lawn::LAWN_MST,
     lawn::LAWN_CHRISTOFIDES,
     lawn::LAWN_TWO_OPT,

@@ -1,24 +1,14 @@
-//! `lawn-2opt`'s local search: 2-opt and Or-opt on neighbour lists with don't-look bits, on
-//! an array tour with segment reversal of the shorter side, then a short iterated local
-//! search (local double-bridge kicks, fixed seed, undone when they do not pay).
-//!
-//! Every applied move has a positive gain (or, for a kick that is kept, the tour is not
-//! longer afterwards), so the result is never longer than the start.
+//! `lawn-2opt`'s local search: the shared 2-opt / Or-opt / double-bridge search of
+//! [`crate::algorithms::tsp_local`] on the cell centres in the motion's metric, with
+//! neighbour lists from a bucket grid.
 
 use super::Points;
+use crate::algorithms::tsp_local::{self, Metric};
 use crate::lawn_check::centre;
-use rand::{RngExt, SeedableRng};
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
 
 /// Neighbours per point in the candidate lists.
 pub(super) const NEIGHBOURS: usize = 10;
-
-/// Kicks of the iterated local search: `KICKS_PER_POINT` per point, at most `MAX_KICKS`.
-const KICKS_PER_POINT: usize = 30;
-const MAX_KICKS: usize = 20_000;
-
-/// Gains below this are treated as zero (lengths are sums of a few exact or rounded terms).
-const EPS: f64 = 1e-9;
 
 /// The `k` nearest other points of every point in the motion's metric, sorted by (distance,
 /// id): a bucket grid of about 2 points per bucket, searched ring by ring until the next
@@ -86,282 +76,22 @@ pub(super) fn nearest_neighbours(p: &Points, k: usize) -> Vec<Vec<usize>> {
     out
 }
 
-/// An array tour with positions, reversals of the shorter side and an optional journal of
-/// the reversals (to undo a kick).
-struct Tour<'a> {
-    p: &'a Points,
-    order: Vec<usize>,
-    pos: Vec<usize>,
-    journal: Option<Vec<(usize, usize)>>,
-    /// The sum of the gains of the moves applied so far.
-    gained: f64,
-}
-
-impl Tour<'_> {
-    fn n(&self) -> usize {
-        self.order.len()
+impl Metric for Points {
+    fn dist(&self, a: usize, b: usize) -> f64 {
+        Points::dist(self, a, b)
     }
 
-    fn next(&self, v: usize) -> usize {
-        self.order[(self.pos[v] + 1) % self.n()]
-    }
-
-    fn prev(&self, v: usize) -> usize {
-        self.order[(self.pos[v] + self.n() - 1) % self.n()]
-    }
-
-    /// The neighbour of `v` along direction `forward`.
-    fn succ(&self, v: usize, forward: bool) -> usize {
-        if forward { self.next(v) } else { self.prev(v) }
-    }
-
-    /// Reverses the array positions i..=j (cyclically), or the complement when shorter (the
-    /// same cycle).
-    fn reverse_positions(&mut self, i: usize, j: usize) {
-        let n = self.n();
-        let len = (j + n - i) % n + 1;
-        let (lo, hi, len) = if 2 * len > n {
-            ((j + 1) % n, (i + n - 1) % n, n - len)
-        } else {
-            (i, j, len)
-        };
-        if len < 2 {
-            return;
-        }
-        if let Some(journal) = self.journal.as_mut() {
-            journal.push((lo, hi));
-        }
-        self.swap_ends(lo, hi, len);
-    }
-
-    /// Reverses the `len` positions from `lo` to `hi` (cyclically), keeping `pos` in step.
-    fn swap_ends(&mut self, mut lo: usize, mut hi: usize, len: usize) {
-        let n = self.n();
-        for _ in 0..len / 2 {
-            self.order.swap(lo, hi);
-            self.pos[self.order[lo]] = lo;
-            self.pos[self.order[hi]] = hi;
-            lo = (lo + 1) % n;
-            hi = (hi + n - 1) % n;
-        }
-    }
-
-    /// Replaces the tour edges (a, b) and (c, d), met in the order a, b, …, c, d along one
-    /// direction of the tour, by (a, c) and (b, d): reverses the path b … c.
-    fn move2(&mut self, a: usize, b: usize, c: usize) {
-        if self.next(a) == b {
-            self.reverse_positions(self.pos[b], self.pos[c]);
-        } else {
-            self.reverse_positions(self.pos[c], self.pos[b]);
-        }
-    }
-
-    fn undo(&mut self, journal: &[(usize, usize)]) {
-        let n = self.n();
-        for &(i, j) in journal.iter().rev() {
-            self.swap_ends(i, j, (j + n - i) % n + 1);
-        }
-    }
-
-    fn d(&self, a: usize, b: usize) -> f64 {
-        self.p.dist(a, b)
-    }
-
-    /// Tries a 2-opt move on the edge leaving `a` along `forward`; returns the touched nodes.
-    fn try_two_opt(&mut self, nb: &[usize], a: usize, forward: bool) -> Option<[usize; 4]> {
-        let an = self.succ(a, forward);
-        let d_an = self.d(a, an);
-        for &c in nb {
-            let g1 = d_an - self.d(a, c);
-            if g1 <= EPS {
-                break;
-            }
-            let cn = self.succ(c, forward);
-            if c == an || cn == a {
-                continue;
-            }
-            let gain = g1 + self.d(c, cn) - self.d(an, cn);
-            if gain > EPS {
-                self.gained += gain;
-                self.move2(a, an, c);
-                return Some([a, an, c, cn]);
-            }
-        }
-        None
-    }
-
-    /// Tries to move the segment of `len` points starting at `a` along `forward` between a
-    /// neighbour c of its ends and c's successor or predecessor, either way round.
-    fn try_or_opt(
-        &mut self,
-        nbs: &[Vec<usize>],
-        a: usize,
-        len: usize,
-        forward: bool,
-    ) -> Option<[usize; 6]> {
-        let n = self.n();
-        if n < len + 3 {
-            return None;
-        }
-        let s0 = a;
-        let mut s1 = a;
-        for _ in 1..len {
-            s1 = self.succ(s1, forward);
-        }
-        let p = self.succ(s0, !forward);
-        let nx = self.succ(s1, forward);
-        let removal = self.d(p, s0) + self.d(s1, nx) - self.d(p, nx);
-        if removal <= EPS {
-            return None;
-        }
-        let in_seg = |t: &Self, v: usize| {
-            let off = if forward {
-                (t.pos[v] + n - t.pos[s0]) % n
-            } else {
-                (t.pos[s0] + n - t.pos[v]) % n
-            };
-            off < len
-        };
-        for &end in &[s0, s1] {
-            for &c in &nbs[end] {
-                if removal - self.d(end, c) <= EPS {
-                    break;
-                }
-                if c == p || in_seg(self, c) {
-                    // c = p: only (p, s0) or (pp, p) edges; the latter is (c's pred, c).
-                    if c != p {
-                        continue;
-                    }
-                }
-                for side in [true, false] {
-                    // Insert between x and y = succ(x) (along `forward`).
-                    let (x, y) = if side {
-                        (c, self.succ(c, forward))
-                    } else {
-                        (self.succ(c, !forward), c)
-                    };
-                    if x == p || in_seg(self, x) || in_seg(self, y) {
-                        continue;
-                    }
-                    // Reversed: x s1 … s0 y; kept: x s0 … s1 y.
-                    let rev = self.d(x, s1) + self.d(s0, y);
-                    let keep = self.d(x, s0) + self.d(s1, y);
-                    let insert = rev.min(keep) - self.d(x, y);
-                    if removal - insert > EPS {
-                        self.gained += removal - insert;
-                        // p S nx … x y  →  p x … nx S^R y  →  p nx … x S^R y.
-                        self.move2(p, s0, x);
-                        self.move2(p, x, nx);
-                        if keep < rev {
-                            self.move2(x, s1, s0);
-                        }
-                        return Some([p, nx, s0, s1, x, y]);
-                    }
-                }
-            }
-        }
-        None
-    }
-
-    /// Local search until no node is active.
-    fn optimise(&mut self, nbs: &[Vec<usize>], queue: &mut VecDeque<usize>, active: &mut [bool]) {
-        while let Some(a) = queue.pop_front() {
-            active[a] = false;
-            let mut touched: Vec<usize> = Vec::new();
-            'moves: for forward in [true, false] {
-                if let Some(t) = self.try_two_opt(&nbs[a], a, forward) {
-                    touched.extend_from_slice(&t);
-                    break 'moves;
-                }
-                for len in 1..=3 {
-                    if let Some(t) = self.try_or_opt(nbs, a, len, forward) {
-                        touched.extend_from_slice(&t);
-                        break 'moves;
-                    }
-                }
-            }
-            for v in touched {
-                if !active[v] {
-                    active[v] = true;
-                    queue.push_back(v);
-                }
-            }
-        }
+    fn tour_length(&self, tour: &[usize]) -> f64 {
+        Points::tour_length(self, tour)
     }
 }
 
-/// 2-opt and Or-opt (segments of 1 to 3 points) on the [`NEIGHBOURS`] nearest neighbours of
-/// each point with don't-look bits, then an iterated local search of local double-bridge
-/// kicks (seeded, kept when the tour does not get longer). Never longer than `start`.
+/// The shared local search ([`tsp_local::improve`]) on the [`NEIGHBOURS`] nearest neighbours
+/// of each point. Never longer than `start`.
 pub(super) fn improve(p: &Points, start: Vec<usize>) -> Vec<usize> {
-    let n = start.len();
-    if n < 5 {
+    if start.len() < 5 {
         return start;
     }
-    let nbs = nearest_neighbours(p, NEIGHBOURS);
-    let start_length = p.tour_length(&start);
-    let start_copy = start.clone();
-    let mut pos = vec![0usize; n];
-    for (k, &v) in start.iter().enumerate() {
-        pos[v] = k;
-    }
-    let mut t = Tour {
-        p,
-        order: start,
-        pos,
-        journal: None,
-        gained: 0.0,
-    };
-    let mut queue: VecDeque<usize> = t.order.iter().copied().collect();
-    let mut active = vec![true; n];
-    t.optimise(&nbs, &mut queue, &mut active);
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x1a_e2_0b_7e);
-    let kicks = if n < 8 {
-        0
-    } else {
-        (KICKS_PER_POINT * n).min(MAX_KICKS)
-    };
-    let span = 50.min(n / 3);
-    for _ in 0..kicks {
-        // A double bridge A B C D → A C B D on two short consecutive segments B, C from a
-        // random position: B C becomes C B by three reversals, (B^R C^R)^R.
-        let i = rng.random_range(0..n);
-        let lb = rng.random_range(1..=span);
-        let lc = rng.random_range(1..=span);
-        let (b0, b1) = (i, (i + lb - 1) % n);
-        let (c0, c1) = ((i + lb) % n, (i + lb + lc - 1) % n);
-        let ends = [
-            t.order[(i + n - 1) % n],
-            t.order[b0],
-            t.order[b1],
-            t.order[c0],
-            t.order[c1],
-            t.order[(c1 + 1) % n],
-        ];
-        let [a, x0, x1, y0, y1, z] = ends;
-        let before = t.d(a, x0) + t.d(x1, y0) + t.d(y1, z);
-        let after = t.d(a, y0) + t.d(y1, x0) + t.d(x1, z);
-        t.journal = Some(Vec::new());
-        t.gained = before - after;
-        t.reverse_positions(b0, b1);
-        t.reverse_positions(c0, c1);
-        t.reverse_positions(b0, c1);
-        for &v in &ends {
-            if !active[v] {
-                active[v] = true;
-                queue.push_back(v);
-            }
-        }
-        t.optimise(&nbs, &mut queue, &mut active);
-        let journal = t.journal.take().unwrap_or_default();
-        // Kept when the tour is not longer (ties let it drift across plateaus).
-        if t.gained < -EPS {
-            t.undo(&journal);
-        }
-    }
-    // The gains are summed in floating point: a final exact comparison keeps the promise.
-    if p.tour_length(&t.order) > start_length {
-        return start_copy;
-    }
-    t.order
+    let kicks = tsp_local::default_kicks(start.len());
+    tsp_local::improve(p, &nearest_neighbours(p, NEIGHBOURS), kicks, start)
 }

@@ -7,3 +7,4 @@ pub(crate) mod contour;
 pub(crate) mod holes1325;
 pub(crate) mod milling25;
 pub(crate) mod tsp65;
+pub(crate) mod two_opt;
