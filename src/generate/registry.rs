@@ -317,6 +317,9 @@ pub struct FamilyInfo {
     pub required: &'static [Param],
     /// Whether the instance depends on the seed (`mowmill gen` then requires `--seed`).
     pub random: bool,
+    /// A structured family (issue 29): a shape the papers' proofs find hardest, built to stress
+    /// them; a claim "holds" only with decided instances of one (docs/claims.md).
+    pub structured: bool,
 }
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
@@ -329,6 +332,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::Width, Param::Height],
         required: &[Param::Width, Param::Height],
         random: false,
+        structured: false,
     },
     FamilyInfo {
         family: Family::RandomSimple,
@@ -337,6 +341,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::NoCut, Param::Style, Param::Compactness],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::RandomHoled,
@@ -351,6 +356,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         ],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Thin,
@@ -359,6 +365,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Holes, Param::Compactness],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::LawnScattered,
@@ -367,6 +374,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Parts, Param::Style, Param::Compactness],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Donut,
@@ -375,6 +383,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::Side, Param::K],
         required: &[Param::Side, Param::K],
         random: false,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Band,
@@ -383,6 +392,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::K],
         required: &[Param::K],
         random: false,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Thin43,
@@ -391,6 +401,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::S],
         required: &[Param::S],
         random: false,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Boundary,
@@ -399,6 +410,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Style, Param::Compactness],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::ThinArms,
@@ -407,6 +419,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Holes, Param::Compactness],
         required: &[Param::N],
         random: true,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Pinholes,
@@ -415,6 +428,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Holes, Param::Style, Param::Compactness],
         required: &[Param::N, Param::Holes],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::Eroded,
@@ -423,6 +437,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Style],
         required: &[Param::N],
         random: true,
+        structured: false,
     },
     FamilyInfo {
         family: Family::HoleLattice,
@@ -431,6 +446,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Pattern],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Comb,
@@ -439,6 +455,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::K],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::DoubleComb,
@@ -447,6 +464,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::K],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Spiral,
@@ -455,6 +473,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Width],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Windows,
@@ -463,6 +482,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Width, Param::K],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Outlines,
@@ -471,6 +491,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::K],
         required: &[Param::N],
         random: true,
+        structured: true,
     },
     FamilyInfo {
         family: Family::Ring,
@@ -479,6 +500,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::Width],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
     FamilyInfo {
         family: Family::CorridorStar,
@@ -487,6 +509,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         params: &[Param::N, Param::K, Param::Width],
         required: &[Param::N],
         random: false,
+        structured: true,
     },
 ];
 
