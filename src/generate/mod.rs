@@ -328,14 +328,11 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
 /// issue 29: the shapes the papers' proofs find hardest, built to stress them (docs/claims.md,
 /// "Structured families"). A claim "holds" only when some of its decided instances are of one.
 /// Grid families say so in the registry ([`FamilyInfo::structured`]); the discrete and
-/// orthogonal ones are the families built for a proof's hard case: hubs on a path and bridges
-/// between collinear paths (Theorems 5.1 and 4.2), slivers and narrow features of polygons.
+/// orthogonal ones are the families built for a proof's hard case: slivers and narrow features
+/// of polygons.
 pub fn is_structured(family: &str) -> bool {
     if let Ok(f) = family.parse::<Family>() {
         return f.info().structured;
     }
-    matches!(
-        family,
-        "hub-path" | "collinear-bridges" | "ortho-sliver" | "ortho-narrow"
-    )
+    matches!(family, "ortho-sliver" | "ortho-narrow")
 }

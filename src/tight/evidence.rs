@@ -59,10 +59,10 @@ impl Attribution {
                 "a proven lower bound on every walk the theorem speaks of exceeds the claimed bound"
             }
             Attribution::PaperAlgorithm => {
-                "the paper's algorithm, checked, exceeds the bound against a valid upper bound on OPT (the best checked walk known)"
+                "the paper's algorithm, checked, exceeds the bound (against OPT, a valid upper bound on OPT (the best checked walk known), N or a constant)"
             }
             Attribution::Reading => {
-                "our reading of the proof, checked, exceeds the bound against a valid upper bound on OPT; the implementation note names the departure"
+                "our reading of the proof, checked, exceeds the bound (against OPT, a valid upper bound on OPT, N or a constant); the implementation note names the departure"
             }
         }
     }
@@ -123,6 +123,14 @@ pub struct Best {
     pub objective: String,
 }
 
+/// The rows whose walks can be compared: the same instance in the same model and length unit
+/// (an orthogonal polygon's lengths are in units of 1/`unit`; a grid region run through the
+/// orthogonal model is another scale, never mixed with its pixel rows).
+fn scale_key(r: &Row) -> String {
+    let model = if r.model.is_empty() { "grid" } else { &r.model };
+    format!("{}\u{0}{model}\u{0}{}", r.instance, r.unit.unwrap_or(1))
+}
+
 /// Upper and lower bounds per (instance, cost), from every row of a table's sources.
 #[derive(Default)]
 pub struct Evidence {
@@ -140,7 +148,7 @@ impl Evidence {
             if r.valid == Some(true) {
                 for cost in [Cost::TourLength, Cost::TourTurns, Cost::CoverTurns] {
                     let Some(v) = cost.of_row(r) else { continue };
-                    let key = (r.instance.clone(), cost);
+                    let key = (scale_key(r), cost);
                     let better = e.best.get(&key).is_none_or(|b| v < b.value);
                     if better {
                         e.best.insert(
@@ -158,7 +166,7 @@ impl Evidence {
                 && let Some(cost) = Cost::of_objective(&r.objective)
                 && let Some(lb) = r.opt.or(r.lower_bound)
             {
-                let slot = e.lower.entry((r.instance.clone(), cost)).or_insert(0);
+                let slot = e.lower.entry((scale_key(r), cost)).or_insert(0);
                 *slot = (*slot).max(lb);
             }
         }
@@ -176,14 +184,14 @@ impl Evidence {
         e
     }
 
-    /// The best checked walk of `instance` for `cost`.
-    pub fn best(&self, instance: &str, cost: Cost) -> Option<&Best> {
-        self.best.get(&(instance.to_string(), cost))
+    /// The best checked walk for `cost` of the instance of row `r` (same model and unit).
+    pub fn best(&self, r: &Row, cost: Cost) -> Option<&Best> {
+        self.best.get(&(scale_key(r), cost))
     }
 
-    /// The largest proven lower bound on OPT of `instance` for `cost`.
-    pub fn lower(&self, instance: &str, cost: Cost) -> Option<u64> {
-        self.lower.get(&(instance.to_string(), cost)).copied()
+    /// The largest proven lower bound on OPT for `cost` of the instance of row `r`.
+    pub fn lower(&self, r: &Row, cost: Cost) -> Option<u64> {
+        self.lower.get(&(scale_key(r), cost)).copied()
     }
 }
 
@@ -226,11 +234,20 @@ mod tests {
             invalid,
         ];
         let e = Evidence::from_rows(&rows);
-        let b = e.best("a", Cost::TourLength).unwrap();
+        let a = &rows[0];
+        let b = e.best(a, Cost::TourLength).unwrap();
         assert_eq!((b.value, b.algorithm.as_str()), (36, "strips-matching"));
-        assert_eq!(e.best("a", Cost::TourTurns).unwrap().value, 12);
-        assert_eq!(e.best("a", Cost::CoverTurns).unwrap().value, 10);
-        assert!(e.best("b", Cost::TourLength).is_none());
+        assert_eq!(e.best(a, Cost::TourTurns).unwrap().value, 12);
+        assert_eq!(e.best(a, Cost::CoverTurns).unwrap().value, 10);
+        assert!(e.best(&row("b", "x", "length", 1, 1, 1), Cost::TourLength).is_none());
+        // The same instance in another length unit (an orthogonal run) is another scale.
+        let mut ortho = row("a", "strips-contour", "turns", 1, 72, 12);
+        ortho.model = "ortho".into();
+        ortho.unit = Some(2);
+        assert!(e.best(&ortho, Cost::TourLength).is_none());
+        let with_ortho = Evidence::from_rows(&[rows.clone(), vec![ortho.clone()]].concat());
+        assert_eq!(with_ortho.best(&ortho, Cost::TourLength).unwrap().value, 72);
+        assert_eq!(with_ortho.best(a, Cost::TourLength).unwrap().value, 36);
     }
 
     #[test]
@@ -242,10 +259,11 @@ mod tests {
         t.lower_bound = Some(11);
         let mut other = row("b", EXACT, "cc-turns", 2, 20, 8);
         other.lower_bound = Some(6);
+        let (a, b) = (cc.clone(), other.clone());
         let e = Evidence::from_rows(&[cc, t, other]);
-        assert_eq!(e.lower("a", Cost::CoverTurns), Some(8));
-        assert_eq!(e.lower("a", Cost::TourTurns), Some(11));
-        assert_eq!(e.lower("b", Cost::TourTurns), Some(6));
-        assert_eq!(e.lower("c", Cost::TourTurns), None);
+        assert_eq!(e.lower(&a, Cost::CoverTurns), Some(8));
+        assert_eq!(e.lower(&a, Cost::TourTurns), Some(11));
+        assert_eq!(e.lower(&b, Cost::TourTurns), Some(6));
+        assert_eq!(e.lower(&row("c", EXACT, "turns", 1, 1, 1), Cost::TourTurns), None);
     }
 }
