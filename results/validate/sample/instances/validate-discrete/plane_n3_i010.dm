@@ -1,0 +1,10 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 1 3
+e 2 3
+p 0 -0.1186999219742055 -0.1563725067673902
+p 1 0.9984238112155832 -0.17629271879001937
+p 2 0.06075886339818442 0.8055810299019431
+p 3 1.0419171040924047 1.1737615763162796

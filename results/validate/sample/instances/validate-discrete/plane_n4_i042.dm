@@ -1,0 +1,10 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 1 3
+e 2 3
+p 0 -0.13241247068735248 0.06129317741659808
+p 1 1.1487427321584815 0.05567515917378607
+p 2 0.09185658426194632 0.9742163015192711
+p 3 0.8390984805035008 0.9577526390540805

@@ -1,0 +1,11 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 1 2
+e 1 3
+e 2 3
+p 0 0.10334924891931352 0.14561776527809642
+p 1 1.1625041982225348 0.036361721815660844
+p 2 0.12678799201944552 1.0020429166555265
+p 3 0.8086234565374216 0.9806771560069865
