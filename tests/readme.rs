@@ -10,8 +10,14 @@ fn readme_findings_are_the_committed_claims_tables() {
         .expect("results/validate/findings.md (scripts/validate.sh writes it)");
     let begin = "<!-- findings:begin -->\n";
     let end = "<!-- findings:end -->";
-    let a = readme.find(begin).expect("README has a findings:begin marker") + begin.len();
-    let b = readme[a..].find(end).expect("README has a findings:end marker") + a;
+    let a = readme
+        .find(begin)
+        .expect("README has a findings:begin marker")
+        + begin.len();
+    let b = readme[a..]
+        .find(end)
+        .expect("README has a findings:end marker")
+        + a;
     assert_eq!(
         &readme[a..b],
         findings,
@@ -21,6 +27,9 @@ fn readme_findings_are_the_committed_claims_tables() {
     let claims = std::fs::read_to_string("results/validate/claims.csv").unwrap();
     for line in findings.lines().filter(|l| l.starts_with("- **")) {
         let claim = line[4..].split(" (").next().unwrap();
-        assert!(claims.contains(&format!(",{claim},")), "{claim} not in claims.csv");
+        assert!(
+            claims.contains(&format!(",{claim},")),
+            "{claim} not in claims.csv"
+        );
     }
 }

@@ -427,8 +427,7 @@ fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Measured<'a> {
                     ),
                     (Against::Opt, _) => (
                         r.opt,
-                        r.lower_bound
-                            .max(cost.and_then(|c| ev.lower(r, c))),
+                        r.lower_bound.max(cost.and_then(|c| ev.lower(r, c))),
                         cost.and_then(|c| ev.best(r, c)).map(|w| w.value),
                     ),
                 };
@@ -1458,7 +1457,9 @@ pub fn add_choice_evidence(table: &mut [ClaimRow], sources: &Sources) {
             .filter(|v| matches!(v.algorithm.as_str(), "star-cover" | "discrete-star-cover"))
             .cloned()
             .collect();
-        rows.sort_by_key(|v| format!("{} {} {}", v.algorithm, v.objective, v.instance) != c.witness);
+        rows.sort_by_key(|v| {
+            format!("{} {} {}", v.algorithm, v.objective, v.instance) != c.witness
+        });
         rows.dedup_by(|a, b| a.instance == b.instance && a.objective == b.objective);
         rows.truncate(FINDINGS_LISTED);
         let mut every_order = Vec::new();
@@ -1470,18 +1471,16 @@ pub fn add_choice_evidence(table: &mut [ClaimRow], sources: &Sources) {
                 continue;
             };
             let evidence = match (w.bound, w.objective.as_str()) {
-                (Some((b, x)), "cc-turns") => order_evidence(
-                    &w.algorithm,
-                    &inst,
-                    ChoiceValue::CcTurns,
-                    |v| !b.holds(v, x),
-                ),
-                (Some((b, x)), "turns") => order_evidence(
-                    &w.algorithm,
-                    &inst,
-                    ChoiceValue::TourTurns,
-                    |v| !b.holds(v, x),
-                ),
+                (Some((b, x)), "cc-turns") => {
+                    order_evidence(&w.algorithm, &inst, ChoiceValue::CcTurns, |v| {
+                        !b.holds(v, x)
+                    })
+                }
+                (Some((b, x)), "turns") => {
+                    order_evidence(&w.algorithm, &inst, ChoiceValue::TourTurns, |v| {
+                        !b.holds(v, x)
+                    })
+                }
                 _ => continue,
             };
             match evidence {

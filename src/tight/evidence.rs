@@ -239,7 +239,10 @@ mod tests {
         assert_eq!((b.value, b.algorithm.as_str()), (36, "strips-matching"));
         assert_eq!(e.best(a, Cost::TourTurns).unwrap().value, 12);
         assert_eq!(e.best(a, Cost::CoverTurns).unwrap().value, 10);
-        assert!(e.best(&row("b", "x", "length", 1, 1, 1), Cost::TourLength).is_none());
+        assert!(
+            e.best(&row("b", "x", "length", 1, 1, 1), Cost::TourLength)
+                .is_none()
+        );
         // The same instance in another length unit (an orthogonal run) is another scale.
         let mut ortho = row("a", "strips-contour", "turns", 1, 72, 12);
         ortho.model = "ortho".into();
@@ -264,6 +267,9 @@ mod tests {
         assert_eq!(e.lower(&a, Cost::CoverTurns), Some(8));
         assert_eq!(e.lower(&a, Cost::TourTurns), Some(11));
         assert_eq!(e.lower(&b, Cost::TourTurns), Some(6));
-        assert_eq!(e.lower(&row("c", EXACT, "turns", 1, 1, 1), Cost::TourTurns), None);
+        assert_eq!(
+            e.lower(&row("c", EXACT, "turns", 1, 1, 1), Cost::TourTurns),
+            None
+        );
     }
 }
