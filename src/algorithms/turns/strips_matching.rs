@@ -173,16 +173,8 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
             &crate::algorithms::theorems::TURNS_THM_5_5_TOUR,
             &[crate::algorithms::Objective::Turns],
         ),
-        crate::algorithms::theorems::Claim::reading(
-            &crate::algorithms::theorems::TURNS_THM_5_6,
-            &[crate::algorithms::Objective::Turns],
-            crate::algorithms::theorems::COVERAGE4_NOTE,
-        ),
-        crate::algorithms::theorems::Claim::reading(
-            &crate::algorithms::theorems::TURNS_TABLE_1,
-            &[crate::algorithms::Objective::Turns],
-            crate::algorithms::theorems::COVERAGE4_NOTE,
-        ),
+        crate::algorithms::theorems::COVERAGE4_CLAIMS[0],
+        crate::algorithms::theorems::COVERAGE4_CLAIMS[1],
     ],
     requires: "a connected region",
     precondition: crate::algorithms::precondition::connected,
