@@ -253,7 +253,8 @@ fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
         .lines()
         .find(|l| l.contains("| Theorem 5.2 |"))
         .expect("a Theorem 5.2 row");
-    assert!(row.contains("**holds**"), "{row}");
+    // Ten decided instances are far below the 1000 a plain "holds" needs (docs/claims.md).
+    assert!(row.contains("**holds on few instances (10)**"), "{row}");
     // 2 voxel + 1 hex + 1 grid + 1 export per run, decided in both runs: 10 instances.
     let cells: Vec<&str> = row.split('|').map(str::trim).collect();
     assert_eq!(cells[6], "10", "{row}");

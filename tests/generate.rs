@@ -538,6 +538,7 @@ fn config_keys_are_the_registry_parameters() {
             mowmill::generate::ParamKind::Flag => "false",
             mowmill::generate::ParamKind::Style => "\"blob\"",
             mowmill::generate::ParamKind::Fraction => "0.5",
+            mowmill::generate::ParamKind::Pattern => "\"staggered\"",
         };
         let text = format!(
             "name = \"t\"\n[[family]]\nfamily = \"rect\"\n{} = {value}\n",

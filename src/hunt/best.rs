@@ -156,8 +156,9 @@ mod tests {
         );
         let best = best_of_algorithms(&ring, Objective::Length, &opts).unwrap();
         assert_eq!(best.value, 16);
-        // thin-cc, thin-merge and thin-euler tie; the first in registry order is kept.
-        assert_eq!(best.source, "thin-cc:turns");
+        // milling-2opt, thin-cc, thin-merge and thin-euler tie; the first in registry order
+        // (milling-2opt) is kept.
+        assert_eq!(best.source, "milling-2opt:length");
         assert_eq!(
             checked_value(&ring, &best.cover, Objective::Length, &opts),
             Some(16)
