@@ -276,7 +276,13 @@ fn pick_move(rng: &mut ChaCha8Rng) -> Move {
 fn neighbour(r: &Region, rng: &mut ChaCha8Rng) -> Option<Region> {
     let mut set: BTreeSet<Pixel> = r.pixels().iter().copied().collect();
     let any = |rng: &mut ChaCha8Rng| r.pixel(rng.random_range(0..r.len()));
-    let mv = pick_move(rng);
+    // A local move changes a large region's ratio little: from N = 500 on, the structural
+    // moves get a further half of the proposals.
+    let mv = if r.len() >= 500 && rng.random_bool(0.5) {
+        Move::Structural
+    } else {
+        pick_move(rng)
+    };
     match mv {
         Move::Structural => return moves::random(r, rng),
         Move::AddPixel => {

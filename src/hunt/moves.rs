@@ -86,6 +86,43 @@ pub fn hole_lattice(r: &Region, rect: Rect, lattice: Lattice) -> Option<Region> 
     region_of(set)
 }
 
+/// Makes `rect` exactly the lattice's pattern: every cell of `rect` becomes a pixel except the
+/// lattice's holes (cells outside `rect` stay as they are). Unlike [`hole_lattice`], which only
+/// removes, this fills a ragged part first, so a lattice over most of a random region stays
+/// connected.
+pub fn lattice_fill(r: &Region, rect: Rect, lattice: Lattice) -> Option<Region> {
+    let mut set = set_of(r);
+    for (i, j) in rect.cells() {
+        if lattice.hole(i, j) {
+            set.remove(&rect.at(i, j));
+        } else {
+            set.insert(rect.at(i, j));
+        }
+    }
+    region_of(set)
+}
+
+/// Keeps only the part of `r` inside `rect`, and of it the largest 4-connected piece (ties: the
+/// one with the smallest pixel), so that a region's ragged border can be cut away.
+pub fn crop(r: &Region, rect: Rect) -> Option<Region> {
+    let inside = |p: &Pixel| {
+        (rect.x0..rect.x0 + rect.w).contains(&p.x) && (rect.y0..rect.y0 + rect.h).contains(&p.y)
+    };
+    let kept = Region::from_pixels(r.pixels().iter().copied().filter(inside)).ok()?;
+    let comps = crate::topology::components(&kept);
+    let mut size = vec![0usize; comps.count];
+    for &c in &comps.label {
+        size[c as usize] += 1;
+    }
+    let best = (0..comps.count).max_by_key(|&c| (size[c], std::cmp::Reverse(c)))?;
+    region_of(
+        (0..kept.len())
+            .filter(|&i| comps.label[i] as usize == best)
+            .map(|i| kept.pixel(i))
+            .collect(),
+    )
+}
+
 /// Thins the part of `r` inside `rect` to width 1: a comb whose spine is the rectangle's left
 /// column and whose teeth are its even rows (offset j even); the other cells are removed.
 pub fn thin_comb(r: &Region, rect: Rect) -> Option<Region> {
@@ -157,10 +194,20 @@ pub fn copy_band(r: &Region, at: i32, k: i32, vertical: bool) -> Option<Region> 
     region_of(set)
 }
 
-/// A random sub-rectangle of `r`'s bounding box, of each side at least 2 (when it fits).
+/// A random sub-rectangle of `r`'s bounding box, of each side at least 2 (when it fits); a
+/// quarter of the time the whole bounding box, so that a move's scale grows with the region (a
+/// lattice over all of it, a copy of all of it).
 fn random_rect(r: &Region, rng: &mut ChaCha8Rng) -> Rect {
     let b = r.bbox();
     let (bw, bh) = (b.width() as i32, b.height() as i32);
+    if rng.random_bool(0.25) {
+        return Rect {
+            x0: b.min_x,
+            y0: b.min_y,
+            w: bw,
+            h: bh,
+        };
+    }
     let w = rng.random_range(1..=bw).max(2.min(bw));
     let h = rng.random_range(1..=bh).max(2.min(bh));
     Rect {
@@ -174,11 +221,11 @@ fn random_rect(r: &Region, rng: &mut ChaCha8Rng) -> Rect {
 /// One structural move drawn at random (its kind, lattice, rectangle and direction).
 pub fn random(r: &Region, rng: &mut ChaCha8Rng) -> Option<Region> {
     let rect = random_rect(r, rng);
-    match rng.random_range(0..5u32) {
-        0 => {
-            let lattice = Lattice::ALL[rng.random_range(0..Lattice::ALL.len())];
-            hole_lattice(r, rect, lattice)
-        }
+    let lattice = Lattice::ALL[rng.random_range(0..Lattice::ALL.len())];
+    match rng.random_range(0..7u32) {
+        0 => hole_lattice(r, rect, lattice),
+        5 => lattice_fill(r, rect, lattice),
+        6 => crop(r, rect),
         1 => thin_comb(r, rect),
         2 => {
             let d = [(1, 0), (-1, 0), (0, 1), (0, -1)][rng.random_range(0..4usize)];
@@ -238,6 +285,48 @@ mod tests {
         )
         .unwrap();
         assert!(topology::summary(&c).thin);
+    }
+
+    /// A lattice fill over a ragged region's whole bounding box makes the box exactly the
+    /// lattice (a 7×7 staggered fill of an L: every lattice cell empty, the inner ones holes,
+    /// connected); a crop keeps
+    /// the largest piece inside the rectangle.
+    #[test]
+    fn lattice_fill_and_crop_do_as_documented() {
+        let l =
+            Region::from_ascii("#......\n#......\n#......\n#......\n#......\n#......\n#######\n");
+        let all = Rect {
+            x0: 0,
+            y0: 0,
+            w: 7,
+            h: 7,
+        };
+        let r = lattice_fill(&l, all, Lattice::Staggered).unwrap();
+        let holes = (0..7)
+            .flat_map(|j| (0..7).map(move |i| (i, j)))
+            .filter(|&(i, j)| Lattice::Staggered.hole(i, j))
+            .count();
+        let inner = (0..7)
+            .flat_map(|j| (0..7).map(move |i| (i, j)))
+            .filter(|&(i, j)| Lattice::Staggered.hole(i, j) && (1..6).contains(&i))
+            .count();
+        assert_eq!(r.len(), 49 - holes);
+        assert_eq!(topology::holes(&r).count, inner);
+        assert!(connected(&r));
+        // Cropping a U to its top two rows leaves two pieces; the larger one is kept.
+        let u = Region::from_ascii("#.##\n#..#\n####\n");
+        let r = crop(
+            &u,
+            Rect {
+                x0: 0,
+                y0: 1,
+                w: 4,
+                h: 2,
+            },
+        )
+        .unwrap();
+        assert_eq!(r.len(), 3);
+        assert!(connected(&r));
     }
 
     /// The comb keeps the left column and the even rows: 5 + 2 · 4 + ... = 17 of 25 pixels,
