@@ -11,6 +11,9 @@
 #   OUT-structured            experiments/validate-structured.toml: the structured families
 #                             (hole lattices, combs, spirals, windows, crossing outlines, rings,
 #                             corridor stars) from tens to thousands of pixels
+#   OUT-structured-discrete   experiments/validate-structured-discrete.toml: the structured
+#                             discrete families (hubs on a path, bridges between straight paths)
+#                             from tens to tens of thousands of vertices
 #   OUT-coverage4             experiments/validate-coverage4.toml: Theorem 5.6 and Table 1's
 #                             length-4 / coverage-4 cell (--coverage4 with and without)
 # Then the one claims table over all parts, OUT/claims.{csv,md} and OUT/findings.md (README's
@@ -42,6 +45,7 @@ parts=(
   "$out-discrete:experiments/validate-discrete.toml"
   "$out-ortho:experiments/validate-ortho.toml"
   "$out-structured:experiments/validate-structured.toml"
+  "$out-structured-discrete:experiments/validate-structured-discrete.toml"
   "$out-coverage4:experiments/validate-coverage4.toml"
 )
 from=()

@@ -130,6 +130,25 @@ fn out_of_range_parameters_are_refused_at_their_key_before_any_job() {
             "2:1",
             &["family[0]", "k=2 side=4", "side ≥ 2k + 1"],
         ),
+        // The structured discrete families take `k`, checked as `gen` checks it; others not.
+        (
+            "family = \"hub-path\"\nn = 10\nk = [2, 0]\n".into(),
+            "2:1",
+            &["family[0]", "n=10 k=0", "need k >= 1 hubs"],
+        ),
+        (
+            "family = \"collinear-bridges\"\nn = 10\n".into(),
+            "2:1",
+            &["family[0]", "family collinear-bridges needs k"],
+        ),
+        (
+            "family = \"hex\"\nn = 10\nk = 2\n".into(),
+            "5:1",
+            &[
+                "family[0].k",
+                "`k` does not apply to family hex (it takes: n)",
+            ],
+        ),
         // The whole suite is bounded, not only each count.
         (
             format!(

@@ -128,6 +128,73 @@ fn a_grid_region_gives_the_same_optima_and_star_cover_through_both_models() {
     assert_eq!(a["length"], b["cc"]["length"]);
 }
 
+/// The structured families (issue 29): `gen` writes them without a seed (one given changes
+/// nothing), the star cover solves them, and bad parameters exit 2.
+#[test]
+fn structured_families_generate_without_a_seed_solve_and_refuse_bad_k() {
+    let dir = temp_dir("discrete-structured");
+    for (family, n, k, bad_k, vertices) in [
+        ("hub-path", "30", "3", "29", 33),
+        ("collinear-bridges", "9", "3", "1", 27),
+    ] {
+        let a = dir.join(format!("{family}-a.dm"));
+        let b = dir.join(format!("{family}-b.dm"));
+        ok(&["gen", family, "--n", n, "--k", k, "--out", s(&a)]);
+        ok(&[
+            "gen",
+            family,
+            "--n",
+            n,
+            "--k",
+            k,
+            "--seed",
+            "9",
+            "--out",
+            s(&b),
+        ]);
+        assert_eq!(
+            std::fs::read(&a).unwrap(),
+            std::fs::read(&b).unwrap(),
+            "{family}"
+        );
+        let info = json(&ok(&["info", s(&a), "--json"]));
+        assert_eq!(info["components"], 1, "{family}: connected");
+        assert_eq!(info["n"], vertices, "{family}");
+        let solved = json(&ok(&[
+            "solve",
+            s(&a),
+            "--algo",
+            "discrete-star-cover",
+            "--json",
+        ]));
+        assert_eq!(solved["valid"], true, "{family}");
+        assert_eq!(solved["tour"]["cycles"], 1, "{family}: one tour");
+        for bad in [&["--k", "0"][..], &["--k", bad_k][..], &[][..]] {
+            let f = dir.join("bad.dm");
+            let mut args = vec!["gen", family, "--n", n, "--out", s(&f)];
+            args.extend_from_slice(bad);
+            let out = mowmill(&args);
+            assert_eq!(out.status.code(), Some(2), "{family} {bad:?}");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains(family) && !err.contains("panick"), "{err}");
+        }
+    }
+    // `k` belongs to the structured families only.
+    let out = mowmill(&[
+        "gen",
+        "hex",
+        "--n",
+        "9",
+        "--k",
+        "2",
+        "--seed",
+        "1",
+        "--out",
+        s(&dir.join("h.dm")),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
 #[test]
 fn bad_discrete_input_is_refused_with_its_line_and_exit_2() {
     let dir = temp_dir("discrete-bad");

@@ -6,6 +6,7 @@
 
 use anyhow::Result;
 use mowmill::algorithms::{self, Objective, Options};
+use mowmill::discrete::Discrete;
 use mowmill::discrete::check;
 use mowmill::discrete::exact::{self as dexact, DiscreteOptions};
 use mowmill::discrete::format::{self, DiscreteCover};
@@ -298,37 +299,49 @@ pub fn solve(
 }
 
 /// `gen FAMILY` for the discrete families: `voxel` (`--n`, `--holes` enclosed cavities),
-/// `hex` and `honeycomb` (`--n` cells or vertices), `plane` (`--n` vertices). The output
-/// format follows the extension: `.vox` (voxel), `.hex` (hex), `.json`, else `.dm`.
+/// `hex` and `honeycomb` (`--n` cells or vertices), `plane` (`--n` vertices), and the
+/// structured `hub-path` and `collinear-bridges` (`--n` path vertices, `--k` hubs or paths;
+/// deterministic, a `--seed` is ignored). The output format follows the extension: `.vox`
+/// (voxel), `.hex` (hex), `.json`, else `.dm`.
 pub fn generate(
     family: &str,
     n: Option<usize>,
     holes: Option<usize>,
+    k: Option<usize>,
     seed: Option<u64>,
     out: &Path,
 ) -> Result<ExitCode> {
     let n = n.ok_or_else(|| Error::invalid(format!("family {family} needs --n")))?;
-    let seed = seed.ok_or_else(|| {
-        Error::invalid(format!(
-            "family {family} is random: give --seed S (the same seed gives the same instance)"
-        ))
-    })?;
     if holes.is_some() && family != "voxel" {
         return Err(Error::invalid(format!(
             "parameter `holes` does not apply to family {family} (voxel takes it: enclosed cavities)"
         ))
         .into());
     }
+    if dgen::STRUCTURED.contains(&family) {
+        dgen::check(family, Some(n), None, k)?;
+        let inst = match family {
+            "hub-path" => dgen::hub_path(n, k.unwrap_or(0))?,
+            _ => dgen::collinear_bridges(n, k.unwrap_or(0))?,
+        };
+        return write_generated(&inst, family, out);
+    }
+    if k.is_some() {
+        return Err(Error::invalid(format!(
+            "parameter `k` does not apply to family {family} (it takes: {})",
+            dgen::takes(family)
+        ))
+        .into());
+    }
+    let seed = seed.ok_or_else(|| {
+        Error::invalid(format!(
+            "family {family} is random: give --seed S (the same seed gives the same instance)"
+        ))
+    })?;
     let ext = out
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let wrong_ext = |ext: &str, holds: &str| {
-        Error::invalid(format!(
-            "{}: a .{ext} file holds {holds}; write {family} as .dm or .json",
-            out.display()
-        ))
-    };
     let inst = match family {
         "voxel" => {
             let region = dgen::random_voxels(n, seed, holes.unwrap_or(0))?;
@@ -353,12 +366,28 @@ pub fn generate(
         "plane" => dgen::random_plane_graph(n, seed, &PlaneParams::default())?,
         other => return Err(Error::invalid(format!("unknown discrete family {other}")).into()),
     };
+    write_generated(&inst, family, out)
+}
+
+/// Writes a generated discrete instance as `.dm` or `.json` (by the extension of `out`;
+/// `.vox` and `.hex` are refused: those families write them themselves).
+fn write_generated(inst: &Discrete, family: &str, out: &Path) -> Result<ExitCode> {
+    let ext = out
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let wrong_ext = |ext: &str, holds: &str| {
+        Error::invalid(format!(
+            "{}: a .{ext} file holds {holds}; write {family} as .dm or .json",
+            out.display()
+        ))
+    };
     match ext.as_deref() {
         Some("vox") => return Err(wrong_ext("vox", "a voxel region (family voxel)").into()),
         Some("hex") => return Err(wrong_ext("hex", "hexagonal cells (family hex)").into()),
         _ => {}
     }
-    format::write_discrete(&inst, out)?;
+    format::write_discrete(inst, out)?;
     eprintln!(
         "wrote {}: {} vertices, {} edges",
         out.display(),

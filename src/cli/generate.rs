@@ -15,8 +15,9 @@ use std::process::ExitCode;
 
 #[derive(Args)]
 pub struct GenArgs {
-    /// Instance family (see the list below; `voxel`, `hex`, `honeycomb` and `plane` are
-    /// discrete-milling instances, written as `.dm`, `.json`, `.vox` or `.hex`).
+    /// Instance family (see the list below; `voxel`, `hex`, `honeycomb`, `plane`, `hub-path`
+    /// and `collinear-bridges` are discrete-milling instances, written as `.dm`, `.json`,
+    /// `.vox` or `.hex`).
     #[arg(value_parser = family_parser())]
     pub family: String,
     #[command(flatten)]
@@ -69,7 +70,11 @@ impl Args for ParamArgs {
                 ParamKind::Pattern => arg.value_parser(pattern_parser()),
             })
         });
-        cmd.after_help(generate::families_help())
+        cmd.after_help(format!(
+            "{}\n\n{}",
+            generate::families_help(),
+            mowmill::discrete::generate::families_help()
+        ))
     }
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
@@ -115,23 +120,24 @@ impl FromArgMatches for ParamArgs {
 
 pub fn gen_command(a: GenArgs) -> Result<ExitCode> {
     if super::discrete::FAMILIES.contains(&a.family.as_str()) {
-        let (mut n, mut holes) = (None, None);
+        let (mut n, mut holes, mut k) = (None, None, None);
         for &(param, value) in &a.params.0 {
             match (param, value) {
                 (Param::N, ParamValue::Count(v)) => n = Some(v),
                 (Param::Holes, ParamValue::Count(v)) => holes = Some(v),
+                (Param::K, ParamValue::Count(v)) => k = Some(v),
                 _ => {
                     return Err(Error::invalid(format!(
-                        "parameter `{}` does not apply to family {} (it takes: n{})",
+                        "parameter `{}` does not apply to family {} (it takes: {})",
                         param.name(),
                         a.family,
-                        if a.family == "voxel" { ", holes" } else { "" }
+                        mowmill::discrete::generate::takes(&a.family)
                     ))
                     .into());
                 }
             }
         }
-        return super::discrete::generate(&a.family, n, holes, a.seed, &a.out);
+        return super::discrete::generate(&a.family, n, holes, k, a.seed, &a.out);
     }
     if mowmill::ortho::FAMILIES.contains(&a.family.as_str()) {
         return super::ortho::generate(&a.family, &a.params.0, a.seed, &a.out);

@@ -425,32 +425,10 @@ fn bron_kerbosch(
     true
 }
 
-/// The hub-path instance of the module docs: path vertices 0..P (collinear at every inner
-/// vertex), then K hubs P..P+K; the P − 2 inner path vertices are cut into K consecutive runs
-/// as equal as possible (the first runs one longer), and hub j is joined by unmatched edges to
-/// every vertex of run j.
-///
-/// # Errors
-/// K = 0 or P − 2 < K (a run would be empty).
-pub fn hub_path(p: usize, k: usize) -> Result<Discrete> {
-    if k == 0 || p < k + 2 {
-        return Err(Error::invalid(format!(
-            "hub path: need K >= 1 hubs and P >= K + 2 path vertices (P = {p}, K = {k})"
-        )));
-    }
-    let inner = p - 2;
-    let mut edges: Vec<(u32, u32)> = (0..p as u32 - 1).map(|i| (i, i + 1)).collect();
-    let collinear: Vec<(u32, u32, u32)> = (1..p as u32 - 1).map(|i| (i, i - 1, i + 1)).collect();
-    let mut next = 1u32;
-    for j in 0..k {
-        let len = inner / k + usize::from(j < inner % k);
-        for _ in 0..len {
-            edges.push(((p + j) as u32, next));
-            next += 1;
-        }
-    }
-    Discrete::new(p + k, &edges, &collinear, None)
-}
+/// The hub-path instance of the module docs: the `gen` family `hub-path`, built in
+/// [`crate::discrete::generate::hub_path`] (path vertices 0..P, then K hubs P..P+K, hub j
+/// joined to the j-th of K consecutive runs of inner path vertices).
+pub use crate::discrete::generate::hub_path;
 
 /// The run sizes p_j of [`hub_path`] (P − 2 inner vertices in K runs).
 pub fn hub_path_runs(p: usize, k: usize) -> Vec<u64> {

@@ -1,5 +1,8 @@
 //! Deterministic random discrete instances: voxel regions (with or without cavities),
-//! hexagonal-cell and honeycomb regions, and plane graphs with nearly straight pairs.
+//! hexagonal-cell and honeycomb regions, and plane graphs with nearly straight pairs; and two
+//! structured families without randomness, the shapes of the paper's failing statements
+//! (issue 29): hubs on a straight path ([`hub_path`], Theorem 5.1's averaged bound) and
+//! straight paths joined by bridges ([`collinear_bridges`], Theorem 4.2's t + 2c − 2).
 //!
 //! Every generator is a function of its size, its seed and its parameters only: the same
 //! arguments give the same instance, vertex for vertex, on every platform (ChaCha8 streams
@@ -21,8 +24,42 @@ use std::collections::VecDeque;
 use crate::generate::rng::{Rng, below, rng_for, unit};
 
 /// The discrete families of `mowmill gen` and of configs' `[[family]]` tables: random voxel
-/// regions (`n`, `holes` enclosed cavities), hexagonal cells, honeycomb vertices, plane graphs.
-pub const FAMILIES: &[&str] = &["voxel", "hex", "honeycomb", "plane"];
+/// regions (`n`, `holes` enclosed cavities), hexagonal cells, honeycomb vertices, plane graphs;
+/// the structured [`STRUCTURED`] ones (`n`, `k`).
+pub const FAMILIES: &[&str] = &[
+    "voxel",
+    "hex",
+    "honeycomb",
+    "plane",
+    "hub-path",
+    "collinear-bridges",
+];
+
+/// The structured discrete families (issue 29): deterministic, parameters `n` and `k`, no seed
+/// (one given is ignored). [`crate::generate::is_structured`] counts them as structured.
+pub const STRUCTURED: &[&str] = &["hub-path", "collinear-bridges"];
+
+/// What `mowmill gen --help` says of the discrete families (after the grid families).
+pub fn families_help() -> String {
+    [
+        "Discrete families (written as .dm or .json; voxel also .vox, hex also .hex):",
+        "  voxel           --n [--holes] --seed",
+        "                    random connected voxel region of about n voxels, `holes` enclosed cavities",
+        "  hex             --n --seed",
+        "                    random connected region of n hexagonal cells",
+        "  honeycomb       --n --seed",
+        "                    random connected region of n honeycomb vertices",
+        "  plane           --n --seed",
+        "                    random connected plane graph of about n vertices, nearly straight pairs collinear",
+        "  hub-path        --n --k",
+        "                    structured: a straight path of n vertices, its n - 2 inner vertices cut into k runs,",
+        "                    hub j joined to run j by edges collinear with nothing (n + k vertices; k >= 1, n >= k + 2)",
+        "  collinear-bridges --n --k",
+        "                    structured: k >= 2 parallel straight paths of n >= 5 vertices, neighbouring paths",
+        "                    joined every 4 columns by bridge edges collinear with nothing (n k vertices)",
+    ]
+    .join("\n")
+}
 
 /// A generated discrete instance with the text of its file: `.vox` for voxel regions, `.hex`
 /// for hexagonal cells, else the `.dm` text form.
@@ -33,12 +70,23 @@ pub struct Generated {
     pub ext: &'static str,
 }
 
+/// The parameters a discrete family takes, as `gen` and configs name them.
+pub fn takes(family: &str) -> &'static str {
+    match family {
+        "voxel" => "n, holes",
+        f if STRUCTURED.contains(&f) => "n, k",
+        _ => "n",
+    }
+}
+
 /// Refuses what [`generate`] refuses, without generating: an unknown family, a missing `n`,
-/// `holes` off the voxel family, n outside 1..=[`MAX_VERTICES`].
+/// `holes` off the voxel family, `k` off (or missing from) the structured families, sizes
+/// outside 1..=[`MAX_VERTICES`] vertices, and the structured families' own limits
+/// ([`check_hub_path`], [`check_collinear_bridges`]).
 ///
 /// # Errors
 /// [`Error::Invalid`] naming the parameter.
-pub fn check(family: &str, n: Option<usize>, holes: Option<usize>) -> Result<()> {
+pub fn check(family: &str, n: Option<usize>, holes: Option<usize>, k: Option<usize>) -> Result<()> {
     if !FAMILIES.contains(&family) {
         return Err(Error::invalid(format!(
             "unknown discrete family {family}: expected one of {}",
@@ -46,25 +94,42 @@ pub fn check(family: &str, n: Option<usize>, holes: Option<usize>) -> Result<()>
         )));
     }
     let n = n.ok_or_else(|| Error::invalid(format!("family {family} needs n")))?;
+    let off = |param: &str| {
+        Error::invalid(format!(
+            "parameter `{param}` does not apply to family {family} (it takes: {})",
+            takes(family)
+        ))
+    };
     if holes.is_some() && family != "voxel" {
-        return Err(Error::invalid(format!(
-            "parameter `holes` does not apply to family {family} (it takes: n)"
-        )));
+        return Err(off("holes"));
     }
-    if n == 0 || n > MAX_VERTICES {
-        return Err(Error::invalid(format!(
-            "n = {n}; expected from 1 to {MAX_VERTICES}"
-        )));
+    let structured = STRUCTURED.contains(&family);
+    if k.is_some() && !structured {
+        return Err(off("k"));
     }
-    Ok(())
+    if structured {
+        let k = k.ok_or_else(|| Error::invalid(format!("family {family} needs k")))?;
+        return match family {
+            "hub-path" => check_hub_path(n, k),
+            _ => check_collinear_bridges(n, k),
+        };
+    }
+    check_size(n)
 }
 
-/// Generates one instance of a discrete family (deterministic in `seed`).
+/// Generates one instance of a discrete family (deterministic in `seed`; the structured
+/// families ignore it).
 ///
 /// # Errors
 /// As [`check`], and the generators' own refusals (too many cavities for n voxels).
-pub fn generate(family: &str, n: usize, holes: Option<usize>, seed: u64) -> Result<Generated> {
-    check(family, Some(n), holes)?;
+pub fn generate(
+    family: &str,
+    n: usize,
+    holes: Option<usize>,
+    k: Option<usize>,
+    seed: u64,
+) -> Result<Generated> {
+    check(family, Some(n), holes, k)?;
     let with_text = |instance: Discrete| Generated {
         text: super::format::to_text(&instance),
         instance,
@@ -88,6 +153,8 @@ pub fn generate(family: &str, n: usize, holes: Option<usize>, seed: u64) -> Resu
             }
         }
         "honeycomb" => with_text(random_honeycomb(n, seed)?.to_discrete()),
+        "hub-path" => with_text(hub_path(n, k.unwrap_or(0))?),
+        "collinear-bridges" => with_text(collinear_bridges(n, k.unwrap_or(0))?),
         _ => with_text(random_plane_graph(n, seed, &PlaneParams::default())?),
     })
 }
@@ -440,6 +507,109 @@ pub fn random_plane_graph(n: usize, seed: u64, params: &PlaneParams) -> Result<D
     super::lattice::geometric(&points, &edges, p.straightness)
 }
 
+/// Refuses the parameters [`hub_path`] refuses: K = 0, P < K + 2 (a run would be empty), or
+/// more than [`MAX_VERTICES`] vertices (P + K).
+///
+/// # Errors
+/// [`Error::Invalid`] naming `n` (P) and `k` (K).
+pub fn check_hub_path(p: usize, k: usize) -> Result<()> {
+    if k == 0 || p < k.saturating_add(2) {
+        return Err(Error::invalid(format!(
+            "hub-path: need k >= 1 hubs and n >= k + 2 path vertices (n = {p}, k = {k})"
+        )));
+    }
+    if p.saturating_add(k) > MAX_VERTICES {
+        return Err(Error::invalid(format!(
+            "hub-path: n + k = {} vertices; expected at most {MAX_VERTICES}",
+            p.saturating_add(k)
+        )));
+    }
+    Ok(())
+}
+
+/// Hubs on a straight path (the family of [`super::choices`]' proof for every order): path
+/// vertices 0..P (collinear at every inner vertex), then K hubs P..P+K; the P − 2 inner path
+/// vertices are cut into K consecutive runs as equal as possible (the first runs one longer),
+/// and hub j is joined by unmatched edges (collinear with nothing) to every vertex of run j.
+/// P + K vertices, 2P − 3 edges, no coordinates.
+///
+/// On it the greedy star cover violates Theorem 5.1's averaged bound (ρ + 2δ)·OPT_cc for every
+/// scan order from P ≈ 70 (K = 2..4): docs/discrete.md, Findings 2.
+///
+/// # Errors
+/// As [`check_hub_path`].
+pub fn hub_path(p: usize, k: usize) -> Result<Discrete> {
+    check_hub_path(p, k)?;
+    let inner = p - 2;
+    let mut edges: Vec<(u32, u32)> = (0..p as u32 - 1).map(|i| (i, i + 1)).collect();
+    let collinear: Vec<(u32, u32, u32)> = (1..p as u32 - 1).map(|i| (i, i - 1, i + 1)).collect();
+    let mut next = 1u32;
+    for j in 0..k {
+        let len = inner / k + usize::from(j < inner % k);
+        for _ in 0..len {
+            edges.push(((p + j) as u32, next));
+            next += 1;
+        }
+    }
+    Discrete::new(p + k, &edges, &collinear, None)
+}
+
+/// Refuses the parameters [`collinear_bridges`] refuses: K < 2 paths, P < 5 vertices a path
+/// (the odd pairs' first bridge is at column 3, which must be at most P − 2), or more than
+/// [`MAX_VERTICES`] vertices (P·K).
+///
+/// # Errors
+/// [`Error::Invalid`] naming `n` (P) and `k` (K).
+pub fn check_collinear_bridges(p: usize, k: usize) -> Result<()> {
+    if k < 2 || p < 5 {
+        return Err(Error::invalid(format!(
+            "collinear-bridges: need k >= 2 paths of n >= 5 vertices (n = {p}, k = {k})"
+        )));
+    }
+    match p.checked_mul(k) {
+        Some(total) if total <= MAX_VERTICES => Ok(()),
+        _ => Err(Error::invalid(format!(
+            "collinear-bridges: n k = {p} x {k} vertices; expected at most {MAX_VERTICES}"
+        ))),
+    }
+}
+
+/// Straight paths joined by bridges, `instances/discrete/bridge.dm` scaled: K straight paths of
+/// P vertices side by side, path i the vertices iP..iP+P (collinear at every inner vertex),
+/// and between paths i and i + 1 bridge edges iP + j — (i+1)P + j, collinear with nothing, at
+/// the columns j = 2, 6, 10, … ≤ P − 2 for even i and j = 3, 7, 11, … ≤ P − 2 for odd i (so no
+/// vertex has two bridges, and the path ends none). P·K vertices, no coordinates.
+/// (P, K) = (5, 2) is bridge.dm, vertex for vertex.
+///
+/// Why Theorem 4.2 fails on it: the greedy star cover (index order) puts one rook at the start
+/// of each path and doubles each path, t = 4K turns in c = K cycles, budget t + 2c − 2 = 6K − 2.
+/// Every tour U-turns at each of the 2K path ends (degree 1: 2 turns each), and crosses each
+/// of the K − 1 cuts between neighbouring paths at least twice; at a bridge's end it turns at
+/// least once (no vertex has two bridges: it goes on along the path, 1 turn, or back over the
+/// same bridge, 2 turns for two bridge ends). So every tour has at least 4K + 4(K − 1) = 8K − 4
+/// turns, above the budget for every K ≥ 2.
+///
+/// # Errors
+/// As [`check_collinear_bridges`].
+pub fn collinear_bridges(p: usize, k: usize) -> Result<Discrete> {
+    check_collinear_bridges(p, k)?;
+    let v = |i: usize, j: usize| (i * p + j) as u32;
+    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(k * p + (k - 1) * (p / 4 + 1));
+    let mut collinear: Vec<(u32, u32, u32)> = Vec::with_capacity(k * (p - 2));
+    for i in 0..k {
+        edges.extend((0..p - 1).map(|j| (v(i, j), v(i, j + 1))));
+        collinear.extend((1..p - 1).map(|j| (v(i, j), v(i, j - 1), v(i, j + 1))));
+    }
+    for i in 0..k - 1 {
+        edges.extend(
+            (2 + i % 2..=p - 2)
+                .step_by(4)
+                .map(|j| (v(i, j), v(i + 1, j))),
+        );
+    }
+    Discrete::new(p * k, &edges, &collinear, None)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -498,6 +668,76 @@ mod tests {
         }
         // Cell 0 is in the padding: its component is the outside.
         components as usize - 1
+    }
+
+    /// Every collinear pair `c v a b` is two distinct edges at v, and each edge end is in at
+    /// most one pair (a matching).
+    fn collinear_pairs_valid(g: &Discrete) {
+        let edges: std::collections::BTreeSet<(u32, u32)> =
+            g.edges().map(|(a, b)| (a.min(b), a.max(b))).collect();
+        let has = |a: u32, b: u32| edges.contains(&(a.min(b), a.max(b)));
+        let mut used = std::collections::BTreeSet::new();
+        let text = to_text(g);
+        for line in text.lines().filter(|l| l.starts_with("c ")) {
+            let f: Vec<u32> = line[2..].split(' ').map(|x| x.parse().unwrap()).collect();
+            let (v, a, b) = (f[0], f[1], f[2]);
+            assert!(a != b && has(v, a) && has(v, b), "{line}");
+            assert!(
+                used.insert((v, a)) && used.insert((v, b)),
+                "{line}: not a matching"
+            );
+        }
+    }
+
+    #[test]
+    fn hub_paths_are_connected_deterministic_and_as_promised() {
+        for (p, k) in [(3, 1), (20, 1), (20, 4), (68, 2), (2000, 3)] {
+            let g = hub_path(p, k).unwrap();
+            assert_eq!(g.len(), p + k);
+            assert_eq!(g.edge_count(), 2 * p - 3);
+            assert!(connected(&g));
+            collinear_pairs_valid(&g);
+            assert_eq!(to_text(&g), to_text(&hub_path(p, k).unwrap()));
+            let made = generate("hub-path", p, None, Some(k), 7).unwrap();
+            assert_eq!(made.text, to_text(&g), "the seed is ignored");
+            assert_eq!(made.ext, "dm");
+        }
+        for (p, k) in [(10, 0), (3, 2), (2, 1), (MAX_VERTICES, 1), (usize::MAX, 3)] {
+            assert!(hub_path(p, k).is_err(), "{p} {k}");
+            assert!(
+                check("hub-path", Some(p), None, Some(k)).is_err(),
+                "{p} {k}"
+            );
+        }
+        assert!(check("hub-path", Some(10), None, None).is_err());
+        assert!(check("hub-path", Some(10), Some(1), Some(2)).is_err());
+        assert!(check("hex", Some(10), None, Some(2)).is_err());
+    }
+
+    #[test]
+    fn collinear_bridges_are_connected_deterministic_and_as_promised() {
+        for (p, k) in [(5, 2), (5, 5), (6, 3), (9, 2), (101, 4), (5000, 4)] {
+            let g = collinear_bridges(p, k).unwrap();
+            assert_eq!(g.len(), p * k);
+            let bridges = |i: usize| (2 + i % 2..=p - 2).step_by(4).count();
+            let b: usize = (0..k - 1).map(bridges).sum();
+            assert!((0..k - 1).all(|i| bridges(i) >= 1));
+            assert_eq!(g.edge_count(), k * (p - 1) + b);
+            assert!(connected(&g));
+            collinear_pairs_valid(&g);
+            assert_eq!(g.params().mu, 3);
+            let made = generate("collinear-bridges", p, None, Some(k), 3).unwrap();
+            assert_eq!(made.text, to_text(&g));
+        }
+        // (5, 2) is instances/discrete/bridge.dm.
+        let bridge = read(
+            &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("instances/discrete/bridge.dm"),
+        )
+        .unwrap();
+        assert_eq!(to_text(&collinear_bridges(5, 2).unwrap()), to_text(&bridge));
+        for (p, k) in [(4, 2), (10, 1), (10, 0), (MAX_VERTICES, 2), (usize::MAX, 2)] {
+            assert!(collinear_bridges(p, k).is_err(), "{p} {k}");
+        }
     }
 
     #[test]

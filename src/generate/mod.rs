@@ -329,10 +329,14 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
 /// "Structured families"). A claim "holds" only when some of its decided instances are of one.
 /// Grid families say so in the registry ([`FamilyInfo::structured`]); the discrete and
 /// orthogonal ones are the families built for a proof's hard case: slivers and narrow features
-/// of polygons.
+/// of polygons, hubs on a path and bridges between straight paths
+/// ([`crate::discrete::generate::STRUCTURED`]).
 pub fn is_structured(family: &str) -> bool {
     if let Ok(f) = family.parse::<Family>() {
         return f.info().structured;
     }
-    matches!(family, "ortho-sliver" | "ortho-narrow")
+    matches!(
+        family,
+        "ortho-sliver" | "ortho-narrow" | "hub-path" | "collinear-bridges"
+    )
 }

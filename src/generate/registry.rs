@@ -145,7 +145,7 @@ pub const PARAMS: [ParamSpec; 12] = [
         kind: ParamKind::Count,
         min: 1,
         max: MAX_PIXELS,
-        help: "Width of the annulus (donut), index of the band B_k (band), teeth (comb, double-comb), pane side (windows, default 2), rectangles (outlines), corridors 1-4 (corridor-star, default 4)",
+        help: "Width of the annulus (donut), index of the band B_k (band), teeth (comb, double-comb), pane side (windows, default 2), rectangles (outlines), corridors 1-4 (corridor-star, default 4); hubs (hub-path) and paths (collinear-bridges) of the discrete families",
     },
     ParamSpec {
         param: Param::Side,

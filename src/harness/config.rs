@@ -373,6 +373,9 @@ pub enum Source {
         family: String,
         n: usize,
         holes: Option<usize>,
+        /// The structured families' second parameter (`hub-path`: hubs, `collinear-bridges`:
+        /// paths).
+        k: Option<usize>,
     },
     /// A family of orthogonal polygons with arbitrary coordinates ([`crate::ortho::FAMILIES`]);
     /// the seed is the spec's.
@@ -646,11 +649,12 @@ impl Config {
                 for index in 0..f.count {
                     let seed = derive_seed(self.seed, &f.family, &params, index);
                     let source = if discrete {
-                        let (n, holes) = discrete_params(&combo);
+                        let (n, holes, k) = discrete_params(&combo);
                         Source::Discrete {
                             family: f.family.clone(),
                             n: n.unwrap_or(0),
                             holes,
+                            k,
                         }
                     } else if ortho {
                         Source::Ortho {
@@ -787,20 +791,21 @@ fn is_ortho_family(family: &str) -> bool {
     crate::ortho::FAMILIES.contains(&family)
 }
 
-/// The `n` and `holes` of a discrete (or ortho) family's parameter combination.
-fn discrete_params(combo: &[(Param, ParamValue)]) -> (Option<usize>, Option<usize>) {
+/// The `n`, `holes` and `k` of a discrete (or ortho) family's parameter combination.
+fn discrete_params(combo: &[(Param, ParamValue)]) -> (Option<usize>, Option<usize>, Option<usize>) {
     let get = |p: Param| {
         combo.iter().find_map(|&(k, v)| match (k == p, v) {
             (true, ParamValue::Count(c)) => Some(c),
             _ => None,
         })
     };
-    (get(Param::N), get(Param::Holes))
+    (get(Param::N), get(Param::Holes), get(Param::K))
 }
 
 impl Config {
     /// The checks of a `[[family]]` table of a discrete or ortho family: it takes `n`
-    /// (required) and, for `voxel`, `holes`; counts and combinations as for the grid families.
+    /// (required) and, for `voxel`, `holes`, for the structured discrete families `k`
+    /// (required); counts and combinations as for the grid families.
     /// Returns the new instance total.
     fn validate_model_family(
         &self,
@@ -811,15 +816,22 @@ impl Config {
     ) -> std::result::Result<usize, Problem> {
         for (&param, values) in &f.params {
             let key = format!("{at}.{}", param.name());
-            let takes = param == Param::N || (param == Param::Holes && f.family == "voxel");
+            let structured = crate::discrete::generate::STRUCTURED.contains(&f.family.as_str());
+            let takes = param == Param::N
+                || (param == Param::Holes && f.family == "voxel")
+                || (param == Param::K && structured);
             if !takes && !values.is_empty() {
+                let takes = if is_discrete_family(&f.family) {
+                    crate::discrete::generate::takes(&f.family)
+                } else {
+                    "n"
+                };
                 return Err(Problem::key(
                     &key,
                     Error::invalid(format!(
-                        "parameter `{}` does not apply to family {} (it takes: n{})",
+                        "parameter `{}` does not apply to family {} (it takes: {takes})",
                         param.name(),
                         f.family,
-                        if f.family == "voxel" { ", holes" } else { "" }
                     )),
                 ));
             }
@@ -832,7 +844,7 @@ impl Config {
             .unwrap_or(0);
         for combo in expand(f) {
             let params = params_string(&combo);
-            let (n, holes) = discrete_params(&combo);
+            let (n, holes, k) = discrete_params(&combo);
             if is_ortho_family(&f.family) {
                 match n {
                     Some(1..=10_000) => {}
@@ -844,7 +856,7 @@ impl Config {
                     }
                 }
             } else {
-                crate::discrete::generate::check(&f.family, n, holes)
+                crate::discrete::generate::check(&f.family, n, holes, k)
                     .map_err(|e| Problem::value(at, format!("{params}: {e}")))?;
             }
             record_combination(combinations, &f.family, &params, index, at)?;

@@ -351,8 +351,13 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Loaded, String)> {
             let text = file.to_text()?;
             (text.into_bytes(), "grid", Loaded::Grid(file.region))
         }
-        Source::Discrete { family, n, holes } => {
-            let g = crate::discrete::generate::generate(family, *n, *holes, spec.seed)?;
+        Source::Discrete {
+            family,
+            n,
+            holes,
+            k,
+        } => {
+            let g = crate::discrete::generate::generate(family, *n, *holes, *k, spec.seed)?;
             (g.text.into_bytes(), g.ext, Loaded::Discrete(g.instance))
         }
         Source::Ortho { family, n } => {
