@@ -15,8 +15,9 @@ use std::process::ExitCode;
 /// How a long run continues, shown by `mowmill bench --help`.
 const CONTINUING: &str = "\
 Continuing a run: `--resume DIR` skips the rows already in DIR/results.csv and continues with
-the config recorded in DIR/manifest.json (its TOML text, `config_toml`) and its shard. With
---config as well, the file must be the recorded one (same sha256), else the resume is refused;
+the config recorded in DIR/manifest.json (its TOML text, `config_toml`) and its shard; a
+recorded config with outside algorithms ([[algorithm]] commands) is refused: pass it with
+--config. With --config, the file must be the recorded one (same sha256), else the resume is refused;
 a --shard (or SLURM_ARRAY_TASK_*) other than the recorded one is refused too. Only one run at
 a time may use a directory (DIR/.lock names the holder's pid; a lock whose holder is gone is
 taken over).
@@ -133,7 +134,7 @@ fn slurm_requeued() -> Result<bool, Error> {
 
 /// Reads a config file, keeping its text for the manifest.
 fn read_config(path: &Path) -> Result<(Config, ConfigRecord), Error> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    let text = harness::config::read_text(path)?;
     let file = path.display().to_string();
     // The config's folder: outside algorithms run there and `[[files]]` folders are resolved
     // (and checked, with the key's line and column) against it, as `Config::read` does.
@@ -143,6 +144,25 @@ fn read_config(path: &Path) -> Result<(Config, ConfigRecord), Error> {
     };
     let config = Config::parse_in(&text, &file, Some(&dir))?;
     Ok((config, ConfigRecord::given(&text, &file)))
+}
+
+/// A results folder is data: whoever can write one must not be able to make `bench --resume`
+/// run a program. A recorded config with outside algorithms (`[[algorithm]]` commands) is
+/// therefore never run from the manifest; the user passes the config file, whose digest must
+/// then equal the recorded one.
+fn refuse_recorded_commands(config: &Config, rec: &Recorded) -> Result<(), Error> {
+    if config.algorithm.is_empty() {
+        return Ok(());
+    }
+    let names: Vec<&str> = config.algorithm.iter().map(|a| a.name.as_str()).collect();
+    Err(Error::invalid(format!(
+        "{}: the recorded config runs outside programs ([[algorithm]] {}): a resume never runs \
+         a command taken from a results folder; pass your own config file with --config FILE \
+         (its sha256 must equal the recorded config_sha256 {})",
+        rec.path.display(),
+        names.join(", "),
+        rec.sha256().unwrap_or("(not recorded)")
+    )))
 }
 
 pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
@@ -178,6 +198,7 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
             if let Some(d) = rec.config_dir() {
                 config.dir = d;
             }
+            refuse_recorded_commands(&config, rec)?;
             let record = ConfigRecord::given(&text, rec.config_file());
             (config, record)
         }

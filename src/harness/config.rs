@@ -105,6 +105,37 @@ pub const MAX_INSTANCES: usize = 1_000_000;
 /// Anything longer is a typo, and near 1.8·10^19 s the timers themselves overflow.
 pub const MAX_TIME_LIMIT: f64 = 2_592_000.0;
 
+/// The largest config file accepted (bytes): the shipped suites are a few kB; a config is
+/// copied into every manifest, so a huge one would be copied into every output too.
+pub const MAX_CONFIG_BYTES: usize = 1 << 20;
+
+/// The longest suite `name` or `[[files]]` family (characters): each becomes part of file and
+/// folder names, run ids and every row of `results.csv`.
+pub const MAX_NAME_CHARS: usize = 200;
+
+/// Reads a config file of at most [`MAX_CONFIG_BYTES`]; a larger one (or one that is not a
+/// regular file and gives more) is refused naming the file, before it is read whole.
+pub fn read_text(path: &Path) -> Result<String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_CONFIG_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::io(path, e))?;
+    if bytes.len() > MAX_CONFIG_BYTES {
+        return Err(Error::invalid(format!(
+            "{}: config larger than {MAX_CONFIG_BYTES} bytes: expected a suite config (a few kB)",
+            path.display()
+        )));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        Error::invalid(format!(
+            "{}: expected a UTF-8 TOML config: {e}",
+            path.display()
+        ))
+    })
+}
+
 /// A whole benchmark configuration.
 #[derive(Clone, Debug, Deserialize, Serialize)]
 #[serde(deny_unknown_fields)]
@@ -391,7 +422,7 @@ impl Config {
     /// algorithms' commands are resolved against the file's folder, and the folders must hold
     /// instances. Errors name the file, line, column and the offending key.
     pub fn read(path: &Path) -> Result<Config> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = read_text(path)?;
         let dir = match path.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
@@ -442,6 +473,11 @@ impl Config {
     /// [`Config::parse`] for a config whose folder `dir` is known (then also checked: the
     /// `[[files]]` folders).
     pub fn parse_in(text: &str, file: &str, dir: Option<&Path>) -> Result<Config> {
+        if text.len() > MAX_CONFIG_BYTES {
+            return Err(Error::invalid(format!(
+                "{file}: config larger than {MAX_CONFIG_BYTES} bytes: expected a suite config (a few kB)"
+            )));
+        }
         let mut config: Config = toml::from_str(text).map_err(|e| {
             let (line, column) = e.span().map_or((1, 1), |s| line_column(text, s.start));
             Error::parse(file, line, column, e.message().to_string())
@@ -589,6 +625,19 @@ impl Config {
                     _ => Problem::value(format!("{at}.name"), e),
                 }
             })?;
+            let mut objectives_seen: Vec<crate::algorithms::Objective> = Vec::new();
+            for (j, o) in a.objectives.iter().enumerate() {
+                let Ok(objective) = o.parse::<crate::algorithms::Objective>() else {
+                    continue;
+                };
+                if objectives_seen.contains(&objective) {
+                    return Err(Problem::value(
+                        format!("{at}.objectives[{j}]"),
+                        format!("objective {o:?} is listed twice: its rows would be written twice"),
+                    ));
+                }
+                objectives_seen.push(objective);
+            }
             if !outside_names.insert(a.name.clone()) {
                 return Err(Problem::value(
                     format!("{at}.name"),
@@ -871,7 +920,17 @@ fn check_algorithms(
     outside: &[&str],
     at: &str,
 ) -> std::result::Result<(), Problem> {
+    let mut seen: Vec<&str> = Vec::new();
     for (j, a) in algos.iter().flatten().enumerate() {
+        // A registered algorithm by its registered name (aliases resolve to it).
+        let canonical = crate::algorithms::find(a).map_or(a.as_str(), |r| r.name);
+        if seen.contains(&canonical) {
+            return Err(Problem::value(
+                format!("{at}.algorithms[{j}]"),
+                format!("algorithm {a:?} is listed twice: its rows would be written twice"),
+            ));
+        }
+        seen.push(canonical);
         if crate::algorithms::find(a).is_none() && !outside.contains(&a.as_str()) {
             let mut known = crate::algorithms::names();
             known.extend_from_slice(outside);
@@ -887,6 +946,12 @@ fn check_algorithms(
 /// Refuses a name that becomes part of a file or folder name (the suite name in the run id,
 /// a `[[files]]` family in instance names) and would leave or break that folder.
 fn check_file_name(name: &str) -> std::result::Result<(), String> {
+    let chars = name.chars().count();
+    if chars > MAX_NAME_CHARS {
+        return Err(format!(
+            "a name of {chars} characters: expected at most {MAX_NAME_CHARS} (it becomes part of file names and of every row)"
+        ));
+    }
     if name.is_empty()
         || name.starts_with('.')
         || name.contains(['/', '\\'])
@@ -930,6 +995,30 @@ fn instance_files(dir: &Path) -> std::result::Result<Vec<PathBuf>, String> {
                 })
         })
         .collect();
+    // Only regular files (or links to them) are read: opening a FIFO would block for ever, a
+    // device could give endless bytes.
+    for p in &files {
+        let meta = std::fs::metadata(p).map_err(|e| format!("cannot read {}: {e}", p.display()))?;
+        if !meta.is_file() {
+            let ft = meta.file_type();
+            use std::os::unix::fs::FileTypeExt;
+            let kind = if ft.is_fifo() {
+                "a FIFO"
+            } else if ft.is_dir() {
+                "a folder"
+            } else if ft.is_socket() {
+                "a socket"
+            } else if ft.is_block_device() || ft.is_char_device() {
+                "a device"
+            } else {
+                "not a regular file"
+            };
+            return Err(format!(
+                "{} is {kind}: expected a regular instance file (remove it or rename it)",
+                p.display()
+            ));
+        }
+    }
     if files.is_empty() {
         return Err(format!(
             "no instance file (.{}) in {}",

@@ -7,7 +7,8 @@
 //! For resuming and merging it also records the config as given (`config_toml`, the TOML text,
 //! with `config_file` naming where it came from and `config_sha256` its digest), the `shard`
 //! as `"I/N"` (null for an unsharded run), and once the run has finished (`end` set) the number
-//! of `instances` of its slice and of `rows` in its `results.csv`.
+//! of `instances` of its slice and of `rows` in its `results.csv`; `files_sha256` pins the
+//! sha256 of every `[[files]]` instance of the slice (by instance name).
 
 use super::config::Config;
 use super::run::RunOptions;
@@ -105,6 +106,7 @@ pub fn write(
     opts: &RunOptions,
     start: &str,
     finished: Option<Finished<'_>>,
+    files: &std::collections::BTreeMap<String, String>,
 ) -> Result<()> {
     let manifest = json!({
         "run_id": opts.run_id,
@@ -126,6 +128,9 @@ pub fn write(
         "config_dir": std::fs::canonicalize(&config.dir).unwrap_or_else(|_| config.dir.clone()),
         "jobs": opts.jobs,
         "shard": opts.shard.map(|(i, n)| format!("{i}/{n}")),
+        // The sha256 of each `[[files]]` instance of the slice, by instance name: a resume
+        // refuses a folder whose files changed.
+        "files_sha256": files,
         "start": start,
         "end": finished.map(|f| f.end),
         "instances": finished.map(|f| f.instances),

@@ -5,7 +5,10 @@
 //! one run: every manifest records the same config digest and the same shard count N, every
 //! shard index 0..N appears exactly once, every shard has finished (`end` set), and every
 //! `results.csv` ends on a complete line and holds the number of rows its manifest recorded.
-//! Otherwise the merge is refused with the list of what is wrong or missing.
+//! Then the rows themselves: each shard must hold exactly the rows its shard index of the
+//! recorded config prescribes (instances, sha256, algorithms, objectives, options).
+//! Otherwise the merge is refused with the list of what is wrong or missing. The output folder
+//! must be new (or empty) and not one of the shards.
 
 use super::manifest::Recorded;
 use super::rows::{Row, read_rows, write_sorted};
@@ -156,13 +159,147 @@ fn check_complete(dirs: &[PathBuf]) -> Result<Vec<Shard>> {
     }
 }
 
+/// Refuses an `out` that is one of the shards (same canonical path) or an existing folder
+/// that is not empty: a merge never overwrites a run, as `bench --out` does not.
+fn check_out(shards: &[PathBuf], out: &Path) -> Result<()> {
+    if let Ok(out_c) = std::fs::canonicalize(out) {
+        for d in shards {
+            if std::fs::canonicalize(d).is_ok_and(|c| c == out_c) {
+                return Err(Error::invalid(format!(
+                    "merge refused: --out {} is the input shard {}: choose a new folder",
+                    out.display(),
+                    d.display()
+                )));
+            }
+        }
+    }
+    match std::fs::read_dir(out) {
+        Ok(mut entries) => match entries.next() {
+            Some(_) => Err(Error::invalid(format!(
+                "merge refused: --out {} already exists and is not empty: merge never \
+                 overwrites a run; choose a new folder",
+                out.display()
+            ))),
+            None => Ok(()),
+        },
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(()),
+        Err(e) if out.exists() && !out.is_dir() => Err(Error::invalid(format!(
+            "merge refused: --out {} exists and is not a folder ({e})",
+            out.display()
+        ))),
+        Err(e) => Err(Error::io(out, e)),
+    }
+}
+
+/// The most problems listed per shard by [`check_rows`].
+const MAX_LISTED: usize = 10;
+
+/// Checks that every shard holds exactly the rows its shard index of the recorded config
+/// prescribes: the config is recomputed from the first shard's `config_toml` (the digests are
+/// equal, [`check_complete`]), its instance list sliced as the shard was, and each instance
+/// generated (or read) again for its sha256 and the (algorithm, objective) rows a run writes
+/// for it ([`super::run::expected_keys`]). A row of another config, of another instance or
+/// with another sha256, family, parameters or seed, and a missing row are refused, naming the
+/// shard and the row.
+fn check_rows(shards: &[Shard]) -> Result<()> {
+    let first = &shards[0].manifest;
+    let text = first.config_toml()?;
+    let mut config =
+        super::config::Config::parse(&text, &format!("{} (config_toml)", first.path.display()))?;
+    if let Some(d) = first.config_dir() {
+        config.dir = d;
+    }
+    let instances = config.instances().map_err(|e| {
+        Error::invalid(format!(
+            "merge refused: cannot recompute the instance list of {} to check the shards' rows: {e}",
+            first.path.display()
+        ))
+    })?;
+    let mut problems = Vec::new();
+    for shard in shards {
+        let mut listed = Vec::new();
+        let rows = read_rows(&shard.dir.join("results.csv"))?;
+        let specs = super::run::shard_of(instances.clone(), Some((shard.index, shard.count)));
+        let mut by_instance: BTreeMap<&str, Vec<&Row>> = BTreeMap::new();
+        for r in &rows {
+            by_instance.entry(r.instance.as_str()).or_default().push(r);
+        }
+        for spec in &specs {
+            let got = by_instance.remove(spec.name.as_str()).unwrap_or_default();
+            let (sha, expected) = super::run::expected_keys(spec, &config);
+            for r in &got {
+                let key = (r.algorithm.clone(), r.objective.clone());
+                let bad = if !expected.contains(&key) {
+                    Some("is not a row the config prescribes for this instance".to_string())
+                } else if r.family != spec.family || r.params != spec.params || r.seed != spec.seed
+                {
+                    Some(format!(
+                        "has family {:?}, params {:?}, seed {}, but the config gives {:?}, {:?}, {}",
+                        r.family, r.params, r.seed, spec.family, spec.params, spec.seed
+                    ))
+                } else {
+                    match &sha {
+                        Some(sha) if !r.sha256.is_empty() && &r.sha256 != sha => Some(format!(
+                            "has sha256 {}, but the config's instance has {sha}",
+                            r.sha256
+                        )),
+                        _ => None,
+                    }
+                };
+                if let Some(why) = bad {
+                    listed.push(format!(
+                        "row ({}, {}, {}) {why}",
+                        r.instance, r.algorithm, r.objective
+                    ));
+                }
+            }
+            let have: std::collections::BTreeSet<(String, String)> = got
+                .iter()
+                .map(|r| (r.algorithm.clone(), r.objective.clone()))
+                .collect();
+            for (a, o) in expected.difference(&have) {
+                listed.push(format!("missing row ({}, {a}, {o})", spec.name));
+            }
+        }
+        for (instance, rs) in by_instance {
+            for r in rs {
+                listed.push(format!(
+                    "row ({instance}, {}, {}): instance {instance} is not in shard {}/{} of the config",
+                    r.algorithm, r.objective, shard.index, shard.count
+                ));
+            }
+        }
+        let total = listed.len();
+        for l in listed.into_iter().take(MAX_LISTED) {
+            problems.push(format!("{}: {l}", shard.dir.display()));
+        }
+        if total > MAX_LISTED {
+            problems.push(format!(
+                "{}: and {} more row problem(s)",
+                shard.dir.display(),
+                total - MAX_LISTED
+            ));
+        }
+    }
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::invalid(format!(
+            "merge refused: shard rows differ from what their config prescribes:\n  {}",
+            problems.join("\n  ")
+        )))
+    }
+}
+
 /// Merges shard directories into `out`. Rows are keyed by (instance, algorithm, objective); a
 /// key present in two shards must agree apart from timing, else the merge is refused.
 pub fn merge(shards: &[PathBuf], out: &Path) -> Result<usize> {
     if shards.is_empty() {
         return Err(Error::invalid("merge needs at least one shard directory"));
     }
+    check_out(shards, out)?;
     let checked = check_complete(shards)?;
+    check_rows(&checked)?;
     let run_id = checked[0]
         .manifest
         .run_id()

@@ -12,6 +12,37 @@ use std::path::Path;
 /// The `algorithm` column of exact-solver rows.
 pub const EXACT: &str = "exact";
 
+/// The prefix of the `error` of a row whose failure came from the machine, not the instance
+/// (an I/O error such as a full disk, a kill by a signal, memory exhausted): `bench --resume`
+/// runs such rows again.
+pub const MACHINE_ERROR: &str = "machine: ";
+
+/// What in an error message says that the machine failed rather than the instance: the
+/// messages of ENOSPC, EDQUOT, EIO, ENOMEM, an allocation failure and a kill by SIGKILL or
+/// SIGTERM (the OOM killer, a preempting scheduler).
+const MACHINE_CAUSES: &[&str] = &[
+    "No space left on device",
+    "(os error 28)",
+    "Disk quota exceeded",
+    "(os error 122)",
+    "Input/output error",
+    "(os error 5)",
+    "Cannot allocate memory",
+    "(os error 12)",
+    "memory allocation of",
+    "out of memory",
+    "signal: 9",
+    "signal: 15",
+    "SIGKILL",
+    "SIGTERM",
+];
+
+/// Whether an error message was caused by the machine (see [`MACHINE_ERROR`]): marked with
+/// the prefix, or, in rows written before the prefix existed, one of the known messages.
+pub fn machine_caused(error: &str) -> bool {
+    error.starts_with(MACHINE_ERROR) || MACHINE_CAUSES.iter().any(|c| error.contains(c))
+}
+
 /// One row of `results.csv`; the field order is the column order (a contract).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Row {

@@ -101,6 +101,7 @@ pub fn run_recorded(
         check_jobs(jobs).map_err(Error::invalid)?;
     }
     let instances = shard_of(config.instances()?, opts.shard);
+    let files = file_digests(&instances)?;
     let out = &opts.out;
     std::fs::create_dir_all(out.join("instances")).map_err(|e| Error::io(out, e))?;
     let _lock = super::lock::acquire(out)?;
@@ -111,18 +112,22 @@ pub fn run_recorded(
             results.display()
         )));
     }
+    if opts.resume {
+        check_same_run(out, config, record, opts, &files)?;
+    }
     let existing: Vec<Row> = if opts.resume && results.exists() {
-        check_same_run(out, config, record, opts)?;
         super::rows::truncate_partial_line(&results)?;
         upgrade_header(&results)?;
-        read_rows(&results)?
+        let rows = read_rows(&results)?;
+        check_same_files(out, &instances, &rows)?;
+        drop_machine_errors(&results, rows)?
     } else {
         Vec::new()
     };
     let done: HashMap<(String, String, String), Row> =
         existing.into_iter().map(|r| (r.key(), r)).collect();
     let started = super::manifest::now();
-    super::manifest::write(out, config, record, opts, &started, None)?;
+    super::manifest::write(out, config, record, opts, &started, None, &files)?;
 
     let writer = Mutex::new(RowWriter::open(&results)?);
     let progress = super::progress::bar(instances.len() as u64);
@@ -159,7 +164,7 @@ pub fn run_recorded(
         instances: instances.len(),
         rows,
     };
-    super::manifest::write(out, config, record, opts, &started, Some(finished))?;
+    super::manifest::write(out, config, record, opts, &started, Some(finished), &files)?;
     Ok(RunSummary {
         instances: instances.len(),
         rows_written,
@@ -178,17 +183,112 @@ pub fn finish(out: &Path) -> Result<usize> {
     Ok(rows.len())
 }
 
+/// The sha256 of every `[[files]]` instance among `instances`, by instance name (pinned in the
+/// manifest). A file that cannot be read is left out: its instance becomes an error row.
+fn file_digests(instances: &[InstanceSpec]) -> Result<std::collections::BTreeMap<String, String>> {
+    let mut files = std::collections::BTreeMap::new();
+    for spec in instances {
+        if let Source::File(path) = &spec.source {
+            if let Ok(bytes) = std::fs::read(path) {
+                files.insert(spec.name.clone(), sha256_hex(&bytes));
+            }
+        }
+    }
+    Ok(files)
+}
+
+/// Refuses to resume a run whose `[[files]]` instances changed since the rows were written: a
+/// row whose `sha256` differs from its file's today (an edited file). The manifest's pins
+/// ([`check_same_run`]) also catch added and removed files; this catches edits in runs
+/// recorded before the pins.
+fn check_same_files(out: &Path, instances: &[InstanceSpec], rows: &[Row]) -> Result<()> {
+    let files: HashMap<&str, &Path> = instances
+        .iter()
+        .filter_map(|s| match &s.source {
+            Source::File(p) => Some((s.name.as_str(), p.as_path())),
+            _ => None,
+        })
+        .collect();
+    let mut changed = std::collections::BTreeSet::new();
+    let mut digests: HashMap<&str, Option<String>> = HashMap::new();
+    for r in rows.iter().filter(|r| !r.sha256.is_empty()) {
+        let Some(path) = files.get(r.instance.as_str()) else {
+            continue;
+        };
+        let now = digests
+            .entry(r.instance.as_str())
+            .or_insert_with(|| std::fs::read(path).ok().map(|b| sha256_hex(&b)));
+        if now.as_deref().is_some_and(|sha| sha != r.sha256) {
+            changed.insert(format!("{} (edited: {})", r.instance, path.display()));
+        }
+    }
+    if changed.is_empty() {
+        return Ok(());
+    }
+    Err(Error::invalid(format!(
+        "cannot resume {}: [[files]] instances changed since their rows were written: {}; \
+         their rows would sit beside rows of other instances: start a new run with another --out",
+        out.display(),
+        changed.into_iter().collect::<Vec<_>>().join(", ")
+    )))
+}
+
+/// Drops from `results.csv` the rows whose error the machine caused ([`machine_caused`]: a
+/// full disk, a kill, memory), rewriting it without them, so that the resume runs them again;
+/// returns the rows kept.
+fn drop_machine_errors(results: &Path, rows: Vec<Row>) -> Result<Vec<Row>> {
+    let (mut kept, retried): (Vec<Row>, Vec<Row>) = rows
+        .into_iter()
+        .partition(|r| r.error.is_empty() || !super::rows::machine_caused(&r.error));
+    if retried.is_empty() {
+        return Ok(kept);
+    }
+    write_sorted(results, &mut kept)?;
+    eprintln!(
+        "mowmill: {} row(s) of {} failed because of the machine (I/O error, signal, memory), \
+         not the instance: running them again",
+        retried.len(),
+        results.display()
+    );
+    Ok(kept)
+}
+
 /// Refuses to resume `out` with another config or another shard than the run recorded in
-/// `out/manifest.json` (a directory without a manifest has nothing to compare).
+/// `out/manifest.json` (a directory without a manifest has nothing to compare), or when the
+/// `[[files]]` instances pinned there changed (edited, added or removed).
 fn check_same_run(
     out: &Path,
     config: &Config,
     record: &ConfigRecord,
     opts: &RunOptions,
+    files: &std::collections::BTreeMap<String, String>,
 ) -> Result<()> {
     let Some(recorded) = Recorded::read_if_exists(out)? else {
         return Ok(());
     };
+    if let Some(pinned) = recorded.json["files_sha256"].as_object() {
+        let mut changes = Vec::new();
+        for (name, sha) in files {
+            match pinned.get(name).and_then(|v| v.as_str()) {
+                None => changes.push(format!("added {name}")),
+                Some(old) if old != sha => changes.push(format!("edited {name}")),
+                Some(_) => {}
+            }
+        }
+        for name in pinned.keys().filter(|n| !files.contains_key(*n)) {
+            changes.push(format!("removed {name}"));
+        }
+        if !changes.is_empty() {
+            return Err(Error::invalid(format!(
+                "cannot resume {}: the [[files]] instances changed since {} pinned their sha256: \
+                 {}; the old rows would sit beside the new instances: start a new run with \
+                 another --out",
+                out.display(),
+                recorded.path.display(),
+                changes.join(", ")
+            )));
+        }
+    }
     let same_config = match recorded.sha256() {
         Some(sha) => sha == record.sha256,
         // Manifests from before the digest: compare the resolved configs.
@@ -272,6 +372,25 @@ fn run_instance(
     opts: &RunOptions,
     done: &HashMap<(String, String, String), Row>,
 ) -> Vec<Row> {
+    let mut rows = run_instance_unmarked(spec, config, opts, done);
+    for r in &mut rows {
+        if !r.error.is_empty()
+            && !r.error.starts_with(super::rows::MACHINE_ERROR)
+            && super::rows::machine_caused(&r.error)
+        {
+            r.error = format!("{}{}", super::rows::MACHINE_ERROR, r.error);
+        }
+    }
+    rows
+}
+
+/// [`run_instance`] before errors the machine caused are marked.
+fn run_instance_unmarked(
+    spec: &InstanceSpec,
+    config: &Config,
+    opts: &RunOptions,
+    done: &HashMap<(String, String, String), Row>,
+) -> Vec<Row> {
     let base = Row {
         run_id: opts.run_id.clone(),
         instance: spec.name.clone(),
@@ -345,7 +464,15 @@ pub(crate) enum Loaded {
 /// Generates or reads the instance, saves it under `out/instances/` and returns it with the
 /// sha256 of the saved bytes.
 fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Loaded, String)> {
-    let (bytes, ext, loaded) = match &spec.source {
+    let (bytes, ext, loaded) = load(spec)?;
+    let path = out.join("instances").join(format!("{}.{ext}", spec.name));
+    std::fs::write(&path, &bytes).map_err(|e| Error::io(&path, e))?;
+    Ok((loaded, sha256_hex(&bytes)))
+}
+
+/// Generates or reads the instance: its file's bytes, the file's extension and the instance.
+fn load(spec: &InstanceSpec) -> Result<(Vec<u8>, &'static str, Loaded)> {
+    Ok(match &spec.source {
         Source::Generate(params) => {
             let file = crate::generate::generate(params)?;
             let text = file.to_text()?;
@@ -394,10 +521,130 @@ fn materialize(spec: &InstanceSpec, out: &Path) -> Result<(Loaded, String)> {
             };
             (bytes, ext, Loaded::Grid(inst.region))
         }
+    })
+}
+
+/// The rows a run of `config` writes for instance `spec`, as (algorithm, objective) keys, and
+/// the sha256 of its file (`None` when it cannot be generated or read: then its one row is the
+/// `instance` error row). `merge` checks shards against it; it follows [`run_on_region`],
+/// [`run_on_discrete`] and [`run_on_ortho`] key by key.
+pub(crate) fn expected_keys(
+    spec: &InstanceSpec,
+    config: &Config,
+) -> (Option<String>, std::collections::BTreeSet<(String, String)>) {
+    let mut keys = std::collections::BTreeSet::new();
+    let (bytes, loaded) = match load(spec) {
+        Ok((bytes, _, loaded)) => (bytes, loaded),
+        Err(_) => {
+            keys.insert(("instance".to_string(), "-".to_string()));
+            return (None, keys);
+        }
     };
-    let path = out.join("instances").join(format!("{}.{ext}", spec.name));
-    std::fs::write(&path, &bytes).map_err(|e| Error::io(&path, e))?;
-    Ok((loaded, sha256_hex(&bytes)))
+    let mut exact_keys = |n: usize, lawn_applies: bool| {
+        for e in &config.exact {
+            let lawn = exact::Objective::parse(&e.objective, e.turn_cost)
+                .is_ok_and(|o| o == exact::Objective::LawnTsp);
+            if n <= e.max_n && (lawn_applies || !lawn) {
+                keys.insert((EXACT.to_string(), exact_objective_name(e)));
+            }
+        }
+    };
+    match &loaded {
+        Loaded::Grid(region) => {
+            exact_keys(region.len(), true);
+            let weighted: Vec<Objective> = config
+                .exact
+                .iter()
+                .filter_map(|e| exact_objective_name(e).parse::<Objective>().ok())
+                .filter(|o| o.turn_cost().is_some())
+                .collect();
+            let outside = config.outside_algorithms();
+            let mut subjects: Vec<Subject<'_>> = match &spec.algorithms {
+                Some(names) => names
+                    .iter()
+                    .filter_map(|n| algorithms::find(n).map(Subject::Registered))
+                    .collect(),
+                None => algorithms::REGISTRY
+                    .iter()
+                    .filter(|a| (a.precondition)(region).is_ok())
+                    .map(Subject::Registered)
+                    .collect(),
+            };
+            subjects.extend(
+                outside
+                    .iter()
+                    .filter(|o| {
+                        spec.algorithms
+                            .as_ref()
+                            .is_none_or(|names| names.contains(&o.name))
+                    })
+                    .map(Subject::Outside),
+            );
+            for subject in subjects {
+                for options in config.option_sets() {
+                    let name =
+                        evaluate::variant_name(subject.name(), subject.objectives(), &options);
+                    for o in subject
+                        .objectives()
+                        .iter()
+                        .copied()
+                        .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
+                    {
+                        keys.insert((name.clone(), o.to_string()));
+                    }
+                }
+            }
+        }
+        Loaded::Discrete(inst) => {
+            exact_keys(inst.len(), false);
+            let names: Vec<String> = match &spec.algorithms {
+                Some(names) => names.clone(),
+                None => algorithms::REGISTRY
+                    .iter()
+                    .filter(|a| a.discrete.is_some())
+                    .map(|a| a.name.to_string())
+                    .collect(),
+            };
+            for algo_name in names {
+                match algorithms::find(&algo_name).filter(|a| a.discrete.is_some()) {
+                    None => {
+                        keys.insert((algo_name.clone(), "-".to_string()));
+                    }
+                    Some(a) => {
+                        for options in config.option_sets() {
+                            let name = evaluate::variant_name(a.name, a.objectives, &options);
+                            for o in a.objectives {
+                                keys.insert((name.clone(), o.to_string()));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        Loaded::Ortho(_) => {
+            let names: Vec<String> = match &spec.algorithms {
+                Some(names) => names.clone(),
+                None => algorithms::REGISTRY
+                    .iter()
+                    .filter(|a| a.ortho.is_some())
+                    .map(|a| a.name.to_string())
+                    .collect(),
+            };
+            for algo_name in names {
+                match algorithms::find(&algo_name).filter(|a| a.ortho.is_some()) {
+                    None => {
+                        keys.insert((algo_name.clone(), "-".to_string()));
+                    }
+                    Some(a) => {
+                        for o in a.objectives {
+                            keys.insert((a.name.to_string(), o.to_string()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    (Some(sha256_hex(&bytes)), keys)
 }
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
