@@ -1355,7 +1355,18 @@ pub fn findings_markdown(table: &[ClaimRow]) -> String {
                 out.push_str(" mowmill's own proven bound held there.");
             }
         }
-        let _ = writeln!(out, " {} violating rows.", c.violations);
+        let _ = write!(out, " {} violating rows.", c.violations);
+        // Whether the violation depends on a choice the paper leaves open (add_choice_evidence).
+        for key in [
+            "Greedy order on the witness:",
+            "Violated by every order of the greedy",
+        ] {
+            if let Some(k) = c.note.find(key) {
+                let sentence = c.note[k..].split(". ").next().unwrap_or_default();
+                let _ = write!(out, " {}.", sentence.trim_end_matches('.'));
+            }
+        }
+        out.push('\n');
     }
     if out.is_empty() {
         out.push_str("- No claim is violated in the committed table.\n");

@@ -1,0 +1,10 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 1 3
+e 2 3
+p 0 -0.19425050476340036 0.04248068220733106
+p 1 1.1560108687028812 -0.06445128054526612
+p 2 0.0022756235563178074 0.8402542471102955
+p 3 1.0226095289283017 0.8613658722400315

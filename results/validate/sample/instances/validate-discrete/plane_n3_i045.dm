@@ -1,0 +1,11 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 0 3
+e 1 3
+e 2 3
+p 0 0.07601853740298244 0.09655775143486181
+p 1 0.8708719547378586 0.05152972437848247
+p 2 0.08560594641411474 0.9946798062249828
+p 3 0.8926948616589612 0.8846340956096591

@@ -1,0 +1,10 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 1 3
+e 2 3
+p 0 -0.13458969443458657 0.1783329875341378
+p 1 0.8958763299617549 0.18277280773891952
+p 2 0.16722084916880475 0.9160133696523474
+p 3 1.0883116337539789 0.9551507481876829
