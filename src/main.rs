@@ -257,7 +257,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Exact(args) => exact_command(args),
         Command::Orders(args) => orders_command(args),
         Command::Plot { dir } => {
-            let rows = harness::rows::read_rows(&dir.join("results.csv"))?;
+            let rows = harness::rows::read_results(&dir.join("results.csv"))?;
             harness::plots::draw_all(&dir, &rows)?;
             eprintln!("plots redrawn in {}", dir.join("plots").display());
             Ok(ExitCode::SUCCESS)
