@@ -552,7 +552,14 @@ pub fn gate(baseline: &Path, current: &Path, tolerance: f64) -> Result<GateRepor
         })
         .collect();
     let now = stats::compute(&rows);
-    compare_groups(&base, &now, tolerance, &mut report);
+    // A group holding an inconsistent row has no improvement to report: its ratios fell
+    // because a row went below what is provable.
+    let tainted: BTreeSet<(String, String, String)> = rows
+        .iter()
+        .filter(|r| r.consistency_error().is_some())
+        .map(|r| (r.family.clone(), r.algorithm.clone(), r.objective.clone()))
+        .collect();
+    compare_groups(&base, &now, tolerance, &tainted, &mut report);
     report.findings.sort_by_key(|f| f.verdict);
     Ok(report)
 }
@@ -684,7 +691,13 @@ fn compare_instances(
 
 /// The group summary: per (family, algorithm, objective) of bin `all`, error rows, row counts
 /// and the mean and max of each ratio against the baseline's, within the tolerance.
-fn compare_groups(base: &[StatRow], now: &[StatRow], tolerance: f64, report: &mut GateReport) {
+fn compare_groups(
+    base: &[StatRow],
+    now: &[StatRow],
+    tolerance: f64,
+    tainted: &BTreeSet<(String, String, String)>,
+    report: &mut GateReport,
+) {
     let fail = |what: String, b: Option<f64>, c: Option<f64>| Finding {
         verdict: Verdict::Fail,
         what,
@@ -755,7 +768,9 @@ fn compare_groups(base: &[StatRow], now: &[StatRow], tolerance: f64, report: &mu
                     (Some(bv), Some(cv)) if !at_most(cv, bv * (1.0 + tolerance) + 1e-12) => {
                         report.findings.push(fail(what, Some(bv), Some(cv)))
                     }
-                    (Some(bv), Some(cv)) if cv < bv * (1.0 - tolerance) - 1e-12 => {
+                    (Some(bv), Some(cv))
+                        if cv < bv * (1.0 - tolerance) - 1e-12 && !tainted.contains(&key(b)) =>
+                    {
                         report.findings.push(Finding {
                             verdict: Verdict::Improved,
                             what,
