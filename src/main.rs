@@ -90,7 +90,8 @@ enum Command {
     },
     /// Regression gate: compare a run with a baseline (exit 1 on regression).
     Gate {
-        /// Baseline stats.csv (or a run directory holding one).
+        /// Baseline stats.csv (or a run directory holding one); the results.csv and
+        /// manifest.json of the same run must be beside it.
         #[arg(long)]
         baseline: PathBuf,
         /// Run directory to check (holding results.csv).

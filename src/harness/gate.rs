@@ -6,6 +6,14 @@
 //! [`Row::compute_ratios`] defines them) and builds the current statistics from the recomputed
 //! ratios. Ratios are all of minimization objectives, so larger is worse.
 //!
+//! The baseline is a run directory: beside its `stats.csv` the gate reads that run's
+//! `results.csv` and `manifest.json`, and compares **per instance** (rows keyed by sha256,
+//! instance name up to whitespace and case, algorithm, objective and variant columns; this
+//! decides) and per group (a summary). Only runs of the baseline's suite (its config digest)
+//! compare, and every row is checked with [`Row::consistency_error`]: a value below a proven
+//! bound is an invalid result, never an improvement. `docs/outputs.md` lists every rule; the
+//! list below is the group summary's.
+//!
 //! It **refuses** (an error, exit 2) when
 //! - the tolerance is not a finite number in `[0, 1)` (NaN, negative, infinite, or so large
 //!   that a doubled ratio would pass);
