@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 cargo build --release --quiet
 rm -rf results/baseline
 target/release/mowmill bench --config experiments/ci.toml --out results/baseline --jobs 2
-# The gate reads stats.csv; results.csv and manifest.json document it. Plots and instance files
-# are not needed in git.
+# The gate reads all three: results.csv (compared instance by instance), manifest.json (the
+# config digest and row count) and stats.csv (checked against results.csv, the group summary).
+# Plots and instance files are not needed in git.
 rm -rf results/baseline/plots results/baseline/instances
 target/release/mowmill gate --baseline results/baseline/stats.csv --current results/baseline

@@ -90,7 +90,8 @@ enum Command {
     },
     /// Regression gate: compare a run with a baseline (exit 1 on regression).
     Gate {
-        /// Baseline stats.csv (or a run directory holding one).
+        /// Baseline stats.csv (or a run directory holding one); the results.csv and
+        /// manifest.json of the same run must be beside it.
         #[arg(long)]
         baseline: PathBuf,
         /// Run directory to check (holding results.csv).
@@ -257,7 +258,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
         Command::Exact(args) => exact_command(args),
         Command::Orders(args) => orders_command(args),
         Command::Plot { dir } => {
-            let rows = harness::rows::read_rows(&dir.join("results.csv"))?;
+            let rows = harness::rows::read_results(&dir.join("results.csv"))?;
             harness::plots::draw_all(&dir, &rows)?;
             eprintln!("plots redrawn in {}", dir.join("plots").display());
             Ok(ExitCode::SUCCESS)

@@ -111,22 +111,43 @@ impl Csv {
     }
 }
 
-/// A copy of the fixture's `results.csv`, mutated, in a fresh run directory.
+/// A copy of the fixture's `results.csv`, mutated, in a fresh run directory (with the
+/// fixture's manifest, so that the run is of the baseline's suite).
 fn current(tag: &str, mutate: impl FnOnce(&mut Csv)) -> PathBuf {
     let dir = temp_dir(tag);
     let mut csv = Csv::read(&fixture().join("results.csv"));
     mutate(&mut csv);
     csv.write(&dir.join("results.csv"));
+    std::fs::copy(fixture().join("manifest.json"), dir.join("manifest.json")).unwrap();
     dir
 }
 
-/// A mutated copy of the fixture's `stats.csv`.
+/// A mutated copy of the fixture's `stats.csv`, beside the fixture's `results.csv` and
+/// `manifest.json` (the per-instance baseline the gate reads next to it).
 fn baseline(tag: &str, mutate: impl FnOnce(&mut Csv)) -> PathBuf {
-    let file = temp_dir(tag).join("stats.csv");
+    baseline_run(tag, mutate, |_| {}, |_| {})
+}
+
+/// A baseline run directory from the fixture's three files, each mutated; returns its
+/// `stats.csv`.
+fn baseline_run(
+    tag: &str,
+    stats: impl FnOnce(&mut Csv),
+    results: impl FnOnce(&mut Csv),
+    manifest: impl FnOnce(&mut serde_json::Value),
+) -> PathBuf {
+    let dir = temp_dir(tag);
     let mut csv = Csv::read(&fixture().join("stats.csv"));
-    mutate(&mut csv);
-    csv.write(&file);
-    file
+    stats(&mut csv);
+    csv.write(&dir.join("stats.csv"));
+    let mut csv = Csv::read(&fixture().join("results.csv"));
+    results(&mut csv);
+    csv.write(&dir.join("results.csv"));
+    let text = std::fs::read_to_string(fixture().join("manifest.json")).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    manifest(&mut json);
+    std::fs::write(dir.join("manifest.json"), json.to_string()).unwrap();
+    dir.join("stats.csv")
 }
 
 fn run_gate(baseline: &Path, current: &Path, extra: &[&str]) -> Output {
@@ -479,4 +500,304 @@ fn duplicated_rows_and_blanked_verdicts_fail() {
     });
     let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
     assert_fails(&out, &["result without a validity verdict"]);
+}
+
+/// Sets `value` and the column its objective counts (`length` or `turns`), and the ratios, so
+/// that the row agrees with itself.
+fn set_counted_value(csv: &Csv, row: &mut [String], value: u64) {
+    let column = match csv.get(row, "objective") {
+        "turns" | "cc-turns" | "tour-turns" => "turns",
+        _ => "length",
+    };
+    csv.set(row, column, &value.to_string());
+    set_value(csv, row, value);
+}
+
+/// The proven floor of a row: the largest of its `lower_bound` and `opt`.
+fn floor(csv: &Csv, row: &[String]) -> u64 {
+    ["lower_bound", "opt"]
+        .iter()
+        .filter_map(|c| csv.get(row, c).parse::<u64>().ok())
+        .max()
+        .unwrap_or(0)
+}
+
+/// Probes item 1 and 2 of issue 30: a value halved or zeroed (with its own count and its
+/// ratios kept consistent, so only the bound can tell) was reported as an improvement; it is
+/// an invalid result, and so is one whose bound and optimum were lowered with it (the
+/// baseline's bounds of the same instance still hold).
+#[test]
+fn halved_or_zeroed_values_are_invalid_not_improvements() {
+    for (tag, lower_bounds_too) in [("halved", false), ("halved-lb", true)] {
+        let mut name = String::new();
+        let cur = current(&format!("gate-{tag}"), |csv| {
+            for i in algorithm_rows(csv) {
+                let mut row = csv.rows[i].clone();
+                let v: u64 = csv.get(&row, "value").parse().unwrap();
+                if v < 4 || floor(csv, &row) <= v / 2 {
+                    continue;
+                }
+                if lower_bounds_too {
+                    for c in ["lower_bound", "opt"] {
+                        if !csv.get(&row, c).is_empty() {
+                            csv.set(&mut row, c, &(v / 2).to_string());
+                        }
+                    }
+                }
+                set_counted_value(csv, &mut row, v / 2);
+                name = format!(
+                    "{} {} {}",
+                    csv.get(&row, "instance"),
+                    csv.get(&row, "algorithm"),
+                    csv.get(&row, "objective")
+                );
+                csv.rows[i] = row;
+                break;
+            }
+        });
+        assert!(!name.is_empty());
+        let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+        assert_fails(&out, &["invalid result", &name]);
+        assert!(
+            !stdout(&out)
+                .lines()
+                .any(|l| l.starts_with("improved") && l.contains(&name)),
+            "{}",
+            stdout(&out)
+        );
+    }
+    // Every value of every row zeroed, consistently: nothing passes, nothing improves.
+    let cur = current("gate-zeroed", |csv| {
+        for i in algorithm_rows(csv) {
+            let mut row = csv.rows[i].clone();
+            set_counted_value(csv, &mut row, 0);
+            csv.rows[i] = row;
+        }
+    });
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_fails(&out, &["below its proven lower bound"]);
+    assert!(!stdout(&out).contains("improved"), "{}", stdout(&out));
+}
+
+/// Probes item 2: one instance 1 worse and another of the same group 1 better keeps the
+/// group's mean; the per-instance comparison fails the worse one and reports the better one.
+#[test]
+fn one_instance_worse_and_one_better_fails_per_instance() {
+    let (mut worse, mut better) = (String::new(), String::new());
+    let cur = current("gate-swap", |csv| {
+        let rows = algorithm_rows(csv);
+        // Two rows of one (family, algorithm, objective) group, the better one with room
+        // above its proven floor.
+        let group = |i: usize| {
+            ["family", "algorithm", "objective"].map(|c| csv.get(&csv.rows[i], c).to_string())
+        };
+        let value = |i: usize| csv.get(&csv.rows[i], "value").parse::<u64>().unwrap();
+        let (a, b) = rows
+            .iter()
+            .flat_map(|&a| rows.iter().map(move |&b| (a, b)))
+            .find(|&(a, b)| a != b && group(a) == group(b) && value(b) > floor(csv, &csv.rows[b]))
+            .expect("two rows of one group");
+        let (va, vb) = (value(a), value(b));
+        for (i, v) in [(a, va + 1), (b, vb - 1)] {
+            let mut row = csv.rows[i].clone();
+            set_counted_value(csv, &mut row, v);
+            csv.rows[i] = row;
+        }
+        let id = |i: usize| {
+            let r = &csv.rows[i];
+            format!(
+                "{} {} {}: value",
+                csv.get(r, "instance"),
+                csv.get(r, "algorithm"),
+                csv.get(r, "objective")
+            )
+        };
+        worse = id(a);
+        better = id(b);
+    });
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &["--tolerance", "0.5"]);
+    assert_fails(&out, &[&worse]);
+    assert!(
+        stdout(&out)
+            .lines()
+            .any(|l| l.starts_with("improved") && l.contains(&better)),
+        "{}",
+        stdout(&out)
+    );
+}
+
+/// Probes item 2: copies of a good row under instance names that differ only by whitespace or
+/// case (same sha256) were new rows that pulled their group's mean down; they are duplicates.
+#[test]
+fn copies_renamed_by_whitespace_or_case_are_duplicates() {
+    for (tag, rename) in [
+        ("space", (|s: &str| format!(" {s}")) as fn(&str) -> String),
+        ("case", |s: &str| s.to_uppercase()),
+    ] {
+        let cur = current(&format!("gate-rename-{tag}"), |csv| {
+            let i = algorithm_rows(csv)[0];
+            let mut row = csv.rows[i].clone();
+            let renamed = rename(csv.get(&row, "instance"));
+            csv.set(&mut row, "instance", &renamed);
+            for _ in 0..5 {
+                csv.rows.push(row.clone());
+            }
+        });
+        let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+        assert_fails(&out, &["only by whitespace or case"]);
+    }
+}
+
+/// Probes item 1: a `turns` (or `length`) column that disagrees with the row's `value` was
+/// accepted; the row is inconsistent.
+#[test]
+fn a_count_column_that_disagrees_with_value_fails() {
+    let cur = current("gate-turns-off", |csv| {
+        let i = (0..csv.rows.len())
+            .find(|&i| {
+                let r = &csv.rows[i];
+                csv.get(r, "objective") == "turns" && !csv.get(r, "turns").is_empty()
+            })
+            .expect("a turns row");
+        let mut row = csv.rows[i].clone();
+        let t: u64 = csv.get(&row, "turns").parse().unwrap();
+        csv.set(&mut row, "turns", &(t + 2).to_string());
+        csv.rows[i] = row;
+    });
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_fails(&out, &["disagrees with its turns column"]);
+}
+
+/// Probes item 2: `n` or `sha256` altered (the baseline carried no instance identity, so other
+/// instances compared as the same suite) fail per instance.
+#[test]
+fn an_altered_n_or_sha256_fails() {
+    let cur = current("gate-n", |csv| {
+        let i = algorithm_rows(csv)[0];
+        let mut row = csv.rows[i].clone();
+        let n: u64 = csv.get(&row, "n").parse().unwrap();
+        csv.set(&mut row, "n", &(n + 1).to_string());
+        let v: u64 = csv.get(&row, "value").parse().unwrap();
+        set_value(csv, &mut row, v);
+        csv.rows[i] = row;
+    });
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_fails(&out, &["n differs from the baseline's"]);
+
+    let cur = current("gate-sha", |csv| {
+        let col = csv.col("sha256");
+        for r in &mut csv.rows {
+            if !r[col].is_empty() {
+                r[col] = format!("{:0>64}", "f");
+            }
+        }
+    });
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_fails(&out, &["missing in current run"]);
+}
+
+/// Probes item 2: a run of another suite (its manifest's config digest) is refused, as is a
+/// run without a manifest and a baseline without a digest.
+#[test]
+fn a_run_of_another_suite_is_refused() {
+    let cur = current("gate-other-suite", |_| {});
+    let text = std::fs::read_to_string(cur.join("manifest.json")).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    json["config_sha256"] = serde_json::json!("0".repeat(64));
+    std::fs::write(cur.join("manifest.json"), json.to_string()).unwrap();
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_refused(&out, &["config_sha256", "baseline's suite"]);
+
+    std::fs::remove_file(cur.join("manifest.json")).unwrap();
+    let out = run_gate(&fixture().join("stats.csv"), &cur, &[]);
+    assert_refused(&out, &["manifest.json"]);
+
+    let base = baseline_run(
+        "gate-base-nodigest",
+        |_| {},
+        |_| {},
+        |m| {
+            m.as_object_mut().unwrap().remove("config_sha256");
+        },
+    );
+    let out = run_gate(&base, fixture(), &[]);
+    assert_refused(&out, &["no config_sha256"]);
+}
+
+/// Probes item 2: a baseline listing a group twice, cut after one group, or whose
+/// results.csv is cut or repeats a row is refused (it passed as "1 groups compared").
+#[test]
+fn a_doubled_or_cut_baseline_is_refused() {
+    let base = baseline("gate-base-twice", |csv| {
+        let row = csv.rows[0].clone();
+        csv.rows.insert(1, row);
+    });
+    assert_refused(&run_gate(&base, fixture(), &[]), &["listed twice"]);
+
+    let base = baseline("gate-base-cut", |csv| {
+        let first =
+            ["family", "algorithm", "objective"].map(|c| csv.get(&csv.rows[0], c).to_string());
+        let keep: Vec<Vec<String>> = csv
+            .rows
+            .iter()
+            .filter(|r| {
+                ["family", "algorithm", "objective"]
+                    .iter()
+                    .zip(&first)
+                    .all(|(c, f)| csv.get(r, c) == f)
+            })
+            .cloned()
+            .collect();
+        csv.rows = keep;
+    });
+    assert_refused(
+        &run_gate(&base, fixture(), &[]),
+        &["groups", "results.csv beside it"],
+    );
+
+    let base = baseline_run(
+        "gate-base-rows-cut",
+        |_| {},
+        |csv| csv.rows.truncate(3),
+        |_| {},
+    );
+    assert_refused(&run_gate(&base, fixture(), &[]), &["records"]);
+
+    let base = baseline_run(
+        "gate-base-rows-twice",
+        |_| {},
+        |csv| {
+            let row = csv.rows[0].clone();
+            csv.rows[1] = row;
+        },
+        |_| {},
+    );
+    assert_refused(&run_gate(&base, fixture(), &[]), &["repeats row"]);
+}
+
+/// Probes item 2: the exact command `.ci/run` calls (`--baseline results/baseline/stats.csv`)
+/// reads the committed per-instance baseline beside it, which is whole and consistent.
+#[test]
+fn the_committed_baseline_passes_against_itself() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let base = root.join("results/baseline/stats.csv");
+    let out = run_gate(&base, &root.join("results/baseline"), &[]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        stdout(&out),
+        stderr(&out)
+    );
+    let text = stdout(&out);
+    let compared: usize = text
+        .split("gate: PASS — ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    let rows = Csv::read(&root.join("results/baseline/results.csv"))
+        .rows
+        .len();
+    assert_eq!(compared, rows, "{text}");
 }

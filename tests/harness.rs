@@ -183,17 +183,26 @@ fn gate_passes_a_rerun_and_catches_a_planted_regression() {
             .collect();
         w.write_record(&fields).unwrap();
     }
+    // The gate reads the baseline's results.csv and manifest.json beside its stats.csv, and
+    // refuses a stats.csv that is not the statistics of those rows.
     let planted = temp("gate-planted");
     std::fs::create_dir_all(&planted).unwrap();
+    for f in ["results.csv", "manifest.json"] {
+        std::fs::copy(base.join(f), planted.join(f)).unwrap();
+    }
     std::fs::write(planted.join("stats.csv"), w.into_inner().unwrap()).unwrap();
-    let report = gate(&planted.join("stats.csv"), &cur, 0.005).unwrap();
-    assert!(!report.passed(), "{}", report.table());
-    assert!(report.table().contains("ratio_n max"), "{}", report.table());
+    let err = gate(&planted.join("stats.csv"), &cur, 0.005).unwrap_err();
+    assert!(err.to_string().contains("results.csv beside it"), "{err}");
 
-    // A baseline family that the current run lacks is a failure too.
-    let missing = text.replace("\nrect,", "\nrect-gone,");
-    std::fs::write(planted.join("stats.csv"), missing).unwrap();
-    let report = gate(&planted.join("stats.csv"), &cur, 0.005).unwrap();
+    // A baseline instance that the current run lacks is a failure: the current run loses
+    // its rows of one family.
+    let rows = std::fs::read_to_string(cur.join("results.csv")).unwrap();
+    let gone = temp("gate-gone");
+    std::fs::create_dir_all(&gone).unwrap();
+    std::fs::copy(cur.join("manifest.json"), gone.join("manifest.json")).unwrap();
+    let kept: Vec<&str> = rows.lines().filter(|l| !l.contains(",rect,")).collect();
+    std::fs::write(gone.join("results.csv"), kept.join("\n") + "\n").unwrap();
+    let report = gate(&base.join("stats.csv"), &gone, 0.005).unwrap();
     assert!(!report.passed());
     assert!(
         report.table().contains("missing in current run"),
@@ -213,12 +222,20 @@ fn gate_passes_a_rerun_and_catches_a_planted_regression() {
     assert_eq!(st.code(), Some(0));
     let st = Command::new(bin)
         .args(["gate", "--baseline"])
+        .arg(base.join("stats.csv"))
+        .arg("--current")
+        .arg(&gone)
+        .status()
+        .unwrap();
+    assert_eq!(st.code(), Some(1));
+    let st = Command::new(bin)
+        .args(["gate", "--baseline"])
         .arg(planted.join("stats.csv"))
         .arg("--current")
         .arg(&cur)
         .status()
         .unwrap();
-    assert_eq!(st.code(), Some(1));
+    assert_eq!(st.code(), Some(2));
 }
 
 #[test]

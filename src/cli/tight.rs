@@ -147,6 +147,18 @@ pub fn claims_command(
     use mowmill::tight::claims;
     let sources = claims::Sources::new(from)?;
     let rows = sources.read_rows()?;
+    // Rows that contradict themselves fail the command whichever claim they belong to (an
+    // exact row belongs to none, but its optimum decides others).
+    let inconsistent: Vec<String> = rows
+        .iter()
+        .filter_map(|r| {
+            r.consistency_error()
+                .map(|e| format!("{}: {e}", r.describe()))
+        })
+        .collect();
+    for line in &inconsistent {
+        eprintln!("invalid row: {line}");
+    }
     let from_text = sources.describe();
     let from = &from_text;
     let tight_rows = if tight.exists() {
@@ -174,7 +186,13 @@ pub fn claims_command(
             eprintln!("saved {} finding file(s) in {}", files.len(), dir.display());
         }
     }
-    Ok(if bad == 0 {
+    if !inconsistent.is_empty() {
+        eprintln!(
+            "claims: {} inconsistent row(s): invalid results, counted as broken claims",
+            inconsistent.len()
+        );
+    }
+    Ok(if bad == 0 && inconsistent.is_empty() {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

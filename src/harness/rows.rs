@@ -120,6 +120,91 @@ impl Row {
         )
     }
 
+    /// Why the row contradicts itself, or `None` when it does not: the one check of a row's
+    /// integers that `bench`, `claims` and `gate` share.
+    ///
+    /// A row is inconsistent when its `value` is below its own proven lower bound
+    /// (`lower_bound`) or proven optimum (`opt`, set only when a solve proved it), when its
+    /// `opt` is below its `lower_bound`, or when its `value` disagrees with the column the
+    /// objective counts (`length` for `length`, `lawn-length`, `lawn-tsp`; `turns` for `turns`,
+    /// `tour-turns`, `cc-turns`; `length + C·turns` for `weighted…-c<C>`). No walk can beat a
+    /// proven bound, so such a row is never an improvement: it is an invalid result.
+    pub fn consistency_error(&self) -> Option<String> {
+        let value = self.value?;
+        let own = match self.objective.as_str() {
+            "length" | "lawn-length" | "lawn-tsp" => self.length.map(|l| ("length", Some(l))),
+            "turns" | "tour-turns" | "cc-turns" => self.turns.map(|t| ("turns", Some(t))),
+            o if o.starts_with("weighted") => o
+                .rsplit_once("-c")
+                .and_then(|(_, c)| c.parse::<u64>().ok())
+                .zip(self.length.zip(self.turns))
+                .map(|(c, (l, t))| {
+                    (
+                        "length + C*turns",
+                        c.checked_mul(t).and_then(|ct| ct.checked_add(l)),
+                    )
+                }),
+            _ => None,
+        };
+        if let Some((column, counted)) = own
+            && counted != Some(value)
+        {
+            let counted = counted.map_or("overflow".to_string(), |c| c.to_string());
+            return Some(format!(
+                "value {value} disagrees with its {column} column ({counted}) for objective {}",
+                self.objective
+            ));
+        }
+        if let Some(lb) = self.lower_bound
+            && value < lb
+        {
+            return Some(format!(
+                "value {value} is below its proven lower bound {lb} ({})",
+                self.lb_source
+            ));
+        }
+        if let Some(opt) = self.opt {
+            if value < opt {
+                return Some(format!(
+                    "value {value} is below its proven optimum {opt} (opt_status {})",
+                    self.opt_status
+                ));
+            }
+            if let Some(lb) = self.lower_bound
+                && opt < lb
+            {
+                return Some(format!(
+                    "proven optimum {opt} is below its proven lower bound {lb} ({})",
+                    self.lb_source
+                ));
+            }
+        }
+        None
+    }
+
+    /// Marks an inconsistent row ([`Row::consistency_error`]) invalid, with the reason in its
+    /// `error` column; returns whether it was.
+    pub fn mark_inconsistent(&mut self) -> bool {
+        let Some(why) = self.consistency_error() else {
+            return false;
+        };
+        self.valid = Some(false);
+        let why = format!("inconsistent row: {why}");
+        if !self.error.contains(&why) {
+            self.error = if self.error.is_empty() {
+                why
+            } else {
+                format!("{}; {why}", self.error)
+            };
+        }
+        true
+    }
+
+    /// The row as messages name it: instance, algorithm, objective.
+    pub fn describe(&self) -> String {
+        format!("{} {} {}", self.instance, self.algorithm, self.objective)
+    }
+
     /// Fills the model's parameter columns.
     pub fn set_params(&mut self, model: &str, p: &crate::discrete::Params) {
         self.model = model.to_string();
@@ -261,9 +346,43 @@ pub fn truncate_partial_line(path: &Path) -> Result<()> {
     Ok(())
 }
 
-/// Reads every row of a `results.csv`.
-pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
+/// The largest `results.csv` read (1 GiB, some 2·10^6 rows): a bound, so that a file that
+/// never ends cannot exhaust the memory.
+pub const MAX_RESULTS_BYTES: u64 = 1 << 30;
+
+/// Opens `path` for reading if it is a regular file (a symbolic link to one is followed) of at
+/// most `limit` bytes; refuses a directory, a device such as `/dev/zero`, a FIFO, or a larger
+/// file, naming it and what was expected.
+pub fn open_regular(path: &Path, limit: u64, expected: &str) -> Result<impl std::io::Read> {
+    let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
+    if !meta.is_file() {
+        let kind = if meta.is_dir() {
+            "a directory"
+        } else {
+            "not a regular file (a device, FIFO or socket)"
+        };
+        return Err(Error::invalid(format!(
+            "{}: is {kind}: expected {expected} (a regular file)",
+            path.display()
+        )));
+    }
+    if meta.len() > limit {
+        return Err(Error::invalid(format!(
+            "{}: is {} bytes: expected {expected} of at most {limit} bytes",
+            path.display(),
+            meta.len()
+        )));
+    }
     let file = File::open(path).map_err(|e| Error::io(path, e))?;
+    // A file that grows while it is read stops at the bound; the CSV reader then sees a cut
+    // line, or the rows up to it.
+    Ok(std::io::Read::take(file, limit))
+}
+
+/// Reads every row of a `results.csv` (a regular file of at most [`MAX_RESULTS_BYTES`]; an
+/// empty file or a header alone gives no rows, as a run that finished nothing has).
+pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
+    let file = open_regular(path, MAX_RESULTS_BYTES, "a results.csv")?;
     let mut r = csv::Reader::from_reader(BufReader::new(file));
     let mut rows = Vec::new();
     for (k, rec) in r.deserialize::<Row>().enumerate() {
@@ -280,6 +399,21 @@ pub fn read_rows(path: &Path) -> Result<Vec<Row>> {
         let mut row = row;
         row.objective = crate::algorithms::canonical_objective(&row.objective).to_string();
         rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// The one reader of a finished run's `results.csv` that `claims`, `plot` and `gate` share:
+/// [`read_rows`], refusing a file without rows (empty, or a header alone), since every
+/// verdict drawn from it would be vacuous.
+pub fn read_results(path: &Path) -> Result<Vec<Row>> {
+    let rows = read_rows(path)?;
+    if rows.is_empty() {
+        return Err(Error::invalid(format!(
+            "{}: no result rows (an empty file or a header alone): expected a results.csv \
+             written by `mowmill bench`, with at least one row",
+            path.display()
+        )));
     }
     Ok(rows)
 }

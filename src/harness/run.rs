@@ -139,7 +139,12 @@ pub fn run_recorded(
     let failure: Mutex<Option<Error>> = Mutex::new(None);
     pool.install(|| {
         instances.par_iter().for_each(|spec| {
-            let rows = run_instance(spec, config, opts, &done);
+            let mut rows = run_instance(spec, config, opts, &done);
+            // A row below its own proven bound, or whose value is not its own count, is an
+            // invalid result (never an improvement): the check `claims` and `gate` share.
+            for r in &mut rows {
+                r.mark_inconsistent();
+            }
             let errors = rows.iter().filter(|r| !r.error.is_empty()).count();
             if !rows.is_empty() {
                 let mut w = writer.lock().expect("writer lock");
@@ -177,6 +182,10 @@ pub fn run_recorded(
 pub fn finish(out: &Path) -> Result<usize> {
     let results = out.join("results.csv");
     let mut rows = read_rows(&results)?;
+    // Resumed or merged rows were written elsewhere: the same check as fresh rows.
+    for r in &mut rows {
+        r.mark_inconsistent();
+    }
     write_sorted(&results, &mut rows)?;
     super::stats::write(&out.join("stats.csv"), &super::stats::compute(&rows))?;
     super::plots::draw_all(out, &rows)?;

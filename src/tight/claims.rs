@@ -1419,7 +1419,12 @@ impl Sources {
     pub fn read_rows(&self) -> Result<Vec<Row>> {
         let mut rows = Vec::new();
         for (name, dir) in &self.dirs {
-            let mut read = crate::harness::rows::read_rows(&dir.join("results.csv"))?;
+            let mut read = crate::harness::rows::read_results(&dir.join("results.csv"))?;
+            // An inconsistent row (below its proven bound, or a value that is not its own
+            // count) is an invalid result: it is evidence of nothing and breaks its claims.
+            for r in &mut read {
+                r.mark_inconsistent();
+            }
             if self.dirs.len() > 1 {
                 for r in &mut read {
                     r.instance = format!("{name}/{}", r.instance);
