@@ -302,12 +302,12 @@ fn refuses_bad_nesting() {
 
 #[test]
 fn refuses_more_pixels_than_the_limit_from_the_area() {
-    // 108 bytes asking for 4·10^18 pixels: refused from the area, before any pixel is filled.
-    let huge = "POLYGON((0 0, 2000000000 0, 2000000000 2000000000, 0 2000000000, 0 0))";
+    // 108 bytes asking for 10^18 pixels: refused from the area, before any pixel is filled.
+    let huge = "POLYGON((0 0, 1000000000 0, 1000000000 1000000000, 0 1000000000, 0 0))";
     assert_refused(
         huge,
         "1:1",
-        "encloses 4000000000000000000 pixels; expected at most",
+        "encloses 1000000000000000000 pixels; expected at most",
     );
     // One pixel over the limit (a 20 000 001 × 1 strip).
     assert_refused(
