@@ -268,6 +268,9 @@ pub struct Evaluation<C = CycleCover> {
     pub missing: Vec<(Objective, String)>,
     /// The run failed: every requested objective is missing for this reason.
     pub error: Option<String>,
+    /// The exit code of the error the run returned ([`Error::exit_code`]: 2 when it refused
+    /// its input or options, 3 for a solver failure); `None` when it succeeded or panicked.
+    pub error_exit_code: Option<u8>,
 }
 
 impl<C> Evaluation<C> {
@@ -352,7 +355,10 @@ fn begin<C, S>(
         objectives.to_vec()
     };
     let start = Instant::now();
-    let outcome = guarded(|| run(&wanted));
+    let code = std::cell::Cell::new(None);
+    let outcome = guarded(|| {
+        run(&wanted).inspect_err(|e: &crate::error::Error| code.set(Some(e.exit_code())))
+    });
     let mut eval = Evaluation {
         algorithm: name.to_string(),
         options: options.clone(),
@@ -361,6 +367,7 @@ fn begin<C, S>(
         outputs: Vec::new(),
         missing: Vec::new(),
         error: None,
+        error_exit_code: None,
     };
     match outcome {
         Ok(mut solution) => {
@@ -370,6 +377,7 @@ fn begin<C, S>(
         Err(msg) => {
             eval.missing = wanted.iter().map(|&o| (o, msg.clone())).collect();
             eval.error = Some(msg);
+            eval.error_exit_code = code.get();
             Err(eval)
         }
     }

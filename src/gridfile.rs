@@ -12,7 +12,7 @@
 //! and write again byte for byte.
 
 use crate::error::{Error, Result};
-use crate::region::{MAX_PIXELS, Pixel, Region};
+use crate::region::{MAX_COORD, MAX_PIXELS, Pixel, Region};
 use std::path::Path;
 
 /// A `.grid` picture is written only up to this many bytes, or 64 per pixel if that is more:
@@ -103,16 +103,33 @@ impl GridFile {
         let mut pixels = Vec::with_capacity(count);
         for (y, (line_no, row)) in rows.iter().rev().enumerate() {
             let y = i32::try_from(y)
-                .map_err(|_| Error::parse(file, *line_no, 1, "more rows than an i32 can number"))?;
-            for (col, _) in row.bytes().enumerate().filter(|&(_, b)| b == b'#') {
-                let x = i32::try_from(col).map_err(|_| {
+                .ok()
+                .filter(|&y| y <= MAX_COORD)
+                .ok_or_else(|| {
                     Error::parse(
                         file,
                         *line_no,
-                        col + 1,
-                        format!("column beyond {}; expected a narrower row", i32::MAX),
+                        1,
+                        format!(
+                            "more than {MAX_COORD} rows; expected at most the coordinate limit"
+                        ),
                     )
                 })?;
+            for (col, _) in row.bytes().enumerate().filter(|&(_, b)| b == b'#') {
+                let x = i32::try_from(col)
+                    .ok()
+                    .filter(|&x| x <= MAX_COORD)
+                    .ok_or_else(|| {
+                        Error::parse(
+                            file,
+                            *line_no,
+                            col + 1,
+                            format!(
+                                "column beyond {MAX_COORD} (the coordinate limit); expected a \
+                                 narrower row"
+                            ),
+                        )
+                    })?;
                 pixels.push(Pixel::new(x, y));
             }
         }

@@ -97,7 +97,9 @@ pub fn centre(cutter: Cutter, p: Pixel) -> (f64, f64) {
 
 /// The distance between two lattice points in the motion's metric, in units.
 pub fn distance(cutter: Cutter, a: Pixel, b: Pixel) -> f64 {
-    let (dx, dy) = (f64::from(b.x - a.x), f64::from(b.y - a.y));
+    // In i64: a difference of two i32 coordinates may not fit an i32.
+    let delta = |a: i32, b: i32| (i64::from(b) - i64::from(a)) as f64;
+    let (dx, dy) = (delta(a.x, b.x), delta(a.y, b.y));
     match cutter {
         Cutter::Square => dx.abs() + dy.abs(),
         Cutter::SquareFree => (dx * dx + dy * dy).sqrt(),

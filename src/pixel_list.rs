@@ -5,17 +5,18 @@
 //! starts a comment that runs to the end of the line; blank lines are skipped. The two integers
 //! are separated by whitespace or by one comma (with optional whitespace around it), and a first
 //! line of two fields that are not numbers, such as `x,y`, is taken as a header and skipped.
-//! Coordinates are written as in WKT (`3`, `-2`, `+3`, `3.0`, `1e1`), must be integers and fit
-//! an `i32`; negative coordinates are allowed.
+//! Coordinates are written as in WKT (`3`, `-2`, `+3`, `3.0`, `1e1`), must be integers and lie
+//! within ±[`MAX_COORD`](crate::region::MAX_COORD) (|x|, |y| < 2^30); negative coordinates are
+//! allowed.
 //!
-//! Coordinates are kept as written, not moved to the origin: [`Region`] stores any `i32`
+//! Coordinates are kept as written, not moved to the origin: [`Region`] stores any such
 //! coordinates (as the WKT reader keeps its own), so tours and drawings of a pixel list speak of
 //! the pixels the file names, and a tour another program computed for the file is checked
 //! against it as it is. Writing ([`to_pixel_list`]) lists the pixels of a region in index order,
 //! so reading a list and writing it gives the same pairs.
 //!
 //! Refused, with the file, line and column: a line without exactly two fields, a coordinate
-//! that is not an integer or does not fit an `i32`, a pixel listed twice (the message names
+//! that is not an integer or lies beyond the coordinate limit, a pixel listed twice (the message names
 //! both lines: a repeated pixel is more likely a mistake in the file than a request), a file
 //! without pixels, and more than [`MAX_PIXELS`] lines of pixels (before the list grows past
 //! the limit). A disconnected pixel set is read as the `.grid` reader reads one: as it is,
@@ -196,7 +197,9 @@ fn coordinate(word: &str) -> std::result::Result<i32, String> {
         return Err("empty field; expected an integer coordinate".to_string());
     }
     match number_value(word) {
-        NumberValue::Integer(v) => i32::try_from(v).map_err(|_| out_of_range(word)),
+        NumberValue::Integer(v) => {
+            crate::region::pixel_coordinate(v).map_err(|_| out_of_range(word))
+        }
         NumberValue::OutOfRange => Err(out_of_range(word)),
         NumberValue::Fraction => Err(format!(
             "coordinate {} is not an integer; expected integer pixel coordinates",
@@ -210,12 +213,7 @@ fn coordinate(word: &str) -> std::result::Result<i32, String> {
 }
 
 fn out_of_range(word: &str) -> String {
-    format!(
-        "coordinate {} is out of range; expected an integer from {} to {}",
-        shorten(word),
-        i32::MIN,
-        i32::MAX
-    )
+    crate::region::coordinate_out_of_range(&shorten(word))
 }
 
 fn shorten(s: &str) -> String {
@@ -266,6 +264,15 @@ mod tests {
                 "2:1: coordinate 2147483648 is out of range",
             ),
             ("0 0\n1 1e40\n", "2:3: coordinate 1e40 is out of range"),
+            // The coordinate limit, where a step or a difference would wrap an i32.
+            (
+                "0 0\n1073741824 0\n",
+                "2:1: coordinate 1073741824 is out of range",
+            ),
+            (
+                "0 0\n0 -1073741824\n",
+                "2:3: coordinate -1073741824 is out of range",
+            ),
             ("# none\n\n", "2:1: empty region"),
             (
                 "5 5\n0 0\n1 1\n0 0\n5 5\n",

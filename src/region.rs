@@ -10,8 +10,11 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// A unit pixel, named by the integer coordinates of its lower-left corner.
+///
+/// Read from JSON (tours) as `[x, y]` with |x|, |y| ≤ [`MAX_COORD`]; a pair beyond the limit is
+/// refused with the file's line and column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(from = "[i32; 2]", into = "[i32; 2]")]
+#[serde(try_from = "[i64; 2]", into = "[i32; 2]")]
 pub struct Pixel {
     pub x: i32,
     pub y: i32,
@@ -34,8 +37,11 @@ impl Pixel {
     }
 
     /// The direction of a unit move from `self` to `other`, if they are 4-adjacent.
+    ///
+    /// Computed in `i64`, so that pixels 2^32 − 1 apart are never taken for neighbours.
     pub fn dir_to(self, other: Pixel) -> Option<Dir> {
-        match (other.x - self.x, other.y - self.y) {
+        let delta = |a: i32, b: i32| i64::from(b) - i64::from(a);
+        match (delta(self.x, other.x), delta(self.y, other.y)) {
             (1, 0) => Some(Dir::E),
             (0, 1) => Some(Dir::N),
             (-1, 0) => Some(Dir::W),
@@ -53,6 +59,14 @@ impl Pixel {
 impl From<[i32; 2]> for Pixel {
     fn from(a: [i32; 2]) -> Self {
         Pixel::new(a[0], a[1])
+    }
+}
+
+impl TryFrom<[i64; 2]> for Pixel {
+    type Error = String;
+
+    fn try_from(a: [i64; 2]) -> std::result::Result<Self, String> {
+        Ok(Pixel::new(pixel_coordinate(a[0])?, pixel_coordinate(a[1])?))
     }
 }
 
@@ -178,6 +192,31 @@ impl BBox {
 
 const NONE: u32 = u32::MAX;
 
+/// The largest absolute value of a pixel coordinate: every reader (`.grid`, pixel lists, WKT and
+/// `.poly`, tour JSON) refuses a pixel with |x| or |y| above it, and [`Region::from_pixels`]
+/// refuses one too. With |x|, |y| < 2^30 a step (x ± 1), a difference of two coordinates and the
+/// doubled centres of [`Symmetry::apply`] all fit an `i32`, so no arithmetic on coordinates
+/// wraps around (a wrapped step from x = 2^31 − 1 to −2^31 would count as one unit move).
+pub const MAX_COORD: i32 = (1 << 30) - 1;
+
+/// A pixel coordinate within ±[`MAX_COORD`], or the message saying it is out of range (the
+/// reader adds the file and line).
+pub fn pixel_coordinate(v: i64) -> std::result::Result<i32, String> {
+    if (-i64::from(MAX_COORD)..=i64::from(MAX_COORD)).contains(&v) {
+        Ok(v as i32)
+    } else {
+        Err(coordinate_out_of_range(&v.to_string()))
+    }
+}
+
+/// The message for a pixel coordinate (as written) outside ±[`MAX_COORD`].
+pub fn coordinate_out_of_range(written: &str) -> String {
+    format!(
+        "coordinate {written} is out of range; expected an integer from -{MAX_COORD} to \
+         {MAX_COORD} (the coordinate limit, |x|, |y| < 2^30)"
+    )
+}
+
 /// The most pixels a region may have; larger inputs are refused with an error (exit 2) before
 /// anything proportional to them is allocated. At 16 to 32 bytes per pixel plus the runs, a
 /// region at the limit takes at most about 700 MB.
@@ -248,12 +287,26 @@ impl fmt::Debug for Region {
 
 impl Region {
     /// Builds a region from pixels (duplicates are merged). Fails when there are more than
-    /// [`MAX_PIXELS`] distinct pixels.
+    /// [`MAX_PIXELS`] distinct pixels or a coordinate lies outside ±[`MAX_COORD`].
     ///
     /// # Complexity
     /// O(N log N) time (O(N) when the pixels come in index order), O(N) space.
     pub fn from_pixels<I: IntoIterator<Item = Pixel>>(pixels: I) -> Result<Region> {
         let mut pixels: Vec<Pixel> = pixels.into_iter().collect();
+        if let Some(p) = pixels
+            .iter()
+            .find(|p| p.x.unsigned_abs().max(p.y.unsigned_abs()) > MAX_COORD as u32)
+        {
+            let v = if p.x.unsigned_abs() > MAX_COORD as u32 {
+                p.x
+            } else {
+                p.y
+            };
+            return Err(Error::Invalid(format!(
+                "pixel {p}: {}",
+                coordinate_out_of_range(&v.to_string())
+            )));
+        }
         let key = |p: &Pixel| (p.y, p.x);
         if !pixels.is_sorted_by(|a, b| key(a) < key(b)) {
             pixels.sort_unstable_by_key(key);
@@ -578,10 +631,10 @@ mod tests {
     fn far_apart_pixels_take_no_box() {
         // A box of 4·10^18 cells: the sparse index holds the three pixels and three rows.
         let far = [
-            Pixel::new(-2_000_000_000, -2_000_000_000),
-            Pixel::new(2_000_000_000, 2_000_000_000),
-            Pixel::new(i32::MAX, 2_000_000_000),
-            Pixel::new(i32::MIN, 0),
+            Pixel::new(-MAX_COORD, -MAX_COORD),
+            Pixel::new(1_000_000_000, MAX_COORD),
+            Pixel::new(MAX_COORD, MAX_COORD),
+            Pixel::new(-MAX_COORD, 0),
         ];
         let r = Region::from_pixels(far).unwrap();
         assert_eq!(r.len(), 4);
@@ -589,11 +642,31 @@ mod tests {
         for (i, &p) in r.pixels().iter().enumerate() {
             assert_eq!(r.index_of(p), Some(i));
         }
-        let top = r.index_of(Pixel::new(i32::MAX, 2_000_000_000)).unwrap();
+        let top = r.index_of(Pixel::new(MAX_COORD, MAX_COORD)).unwrap();
         assert_eq!(r.neighbor(top, Dir::W), None);
         assert_eq!(r.neighbor(top - 1, Dir::E), None);
         assert!(!r.contains(Pixel::new(0, 0)));
         assert!(format!("{r:?}").starts_with("Region(4 pixels in a"));
+    }
+
+    /// Probes the coordinate limit: a pixel one past ±MAX_COORD (where x + 1 or a difference of
+    /// two coordinates would wrap an i32) is refused, one at the limit accepted.
+    #[test]
+    fn coordinates_beyond_the_limit_are_refused() {
+        assert!(Region::from_pixels([Pixel::new(MAX_COORD, -MAX_COORD)]).is_ok());
+        for p in [
+            Pixel::new(MAX_COORD + 1, 0),
+            Pixel::new(0, -MAX_COORD - 1),
+            Pixel::new(i32::MIN, 0),
+        ] {
+            let e = Region::from_pixels([p]).unwrap_err().to_string();
+            assert!(
+                e.contains("out of range") && e.contains("coordinate limit"),
+                "{e}"
+            );
+        }
+        assert_eq!(pixel_coordinate(-i64::from(MAX_COORD)), Ok(-MAX_COORD));
+        assert!(pixel_coordinate(1 << 30).is_err());
     }
 
     proptest::proptest! {

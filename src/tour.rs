@@ -80,4 +80,19 @@ mod tests {
         let msg = e.to_string();
         assert!(msg.starts_with("t.json:1:"), "{msg}");
     }
+
+    /// Probes the coordinate limit in tour files: a pixel at x = 2^31 − 1 (whose step to
+    /// −2^31 once wrapped into a unit move) is refused with the line and column.
+    #[test]
+    fn json_pixels_beyond_the_coordinate_limit_are_refused() {
+        let text = "{\"cycles\": [[[0, 0],\n [2147483647, 0]]]}";
+        let msg = CycleCover::from_json(text, "t.json")
+            .unwrap_err()
+            .to_string();
+        assert!(msg.starts_with("t.json:2:"), "{msg}");
+        assert!(
+            msg.contains("coordinate 2147483647 is out of range"),
+            "{msg}"
+        );
+    }
 }

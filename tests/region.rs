@@ -31,13 +31,14 @@ fn text(bytes: &[u8]) -> String {
 fn a_108_byte_wkt_asking_for_4e18_pixels_exits_2() {
     let dir = temp_dir("wkt");
     let file = dir.join("huge.wkt");
-    let wkt = "POLYGON((0 0, 2000000000 0, 2000000000 2000000000, 0 2000000000, 0 0))\n";
+    // Within the coordinate limit (|x|, |y| < 2^30): 10^18 pixels, refused from the area.
+    let wkt = "POLYGON((0 0, 1000000000 0, 1000000000 1000000000, 0 1000000000, 0 0))\n";
     std::fs::write(&file, wkt).unwrap();
     let out = info_in_1gb(&file);
     let err = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("huge.wkt:1:1: the geometry encloses 4000000000000000000 pixels; expected at most 20000000"),
+        err.contains("huge.wkt:1:1: the geometry encloses 1000000000000000000 pixels; expected at most 20000000"),
         "{err}"
     );
     std::fs::remove_dir_all(&dir).unwrap();

@@ -76,12 +76,15 @@ impl Points {
     /// An exact integer key, monotone in the distance (L1, or the squared norm).
     fn key(&self, i: usize, j: usize) -> u64 {
         let (a, b) = (self.pts[i], self.pts[j]);
-        let (dx, dy) = (i64::from(b.x - a.x), i64::from(b.y - a.y));
-        match self.cutter {
-            Cutter::Square => (dx.abs() + dy.abs()) as u64,
-            Cutter::SquareFree => (dx * dx + dy * dy) as u64,
-            Cutter::Disk => (dx * dx + dx * dy + dy * dy) as u64,
-        }
+        // In i128: coordinates within ±MAX_COORD keep every key below 2^64, with no wrap.
+        let delta = |a: i32, b: i32| i128::from(b) - i128::from(a);
+        let (dx, dy) = (delta(a.x, b.x), delta(a.y, b.y));
+        let key = match self.cutter {
+            Cutter::Square => dx.abs() + dy.abs(),
+            Cutter::SquareFree => dx * dx + dy * dy,
+            Cutter::Disk => dx * dx + dx * dy + dy * dy,
+        };
+        u64::try_from(key).unwrap_or(u64::MAX)
     }
 
     /// The lattice neighbours at the smallest distance (4 on the square, 6 on the hexagons).
@@ -396,8 +399,23 @@ fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
 /// Fig. 9: concentric rectangles of pixel centres over the bounding box, each joined to the
 /// next by swapping two facing edges of a common unit square (free); the innermost, when it
 /// is a single row or column, is joined by a doubled edge (the paper's extra two units).
+///
+/// Refused when the bounding box has more than [`MAX_PIXELS`](crate::region::MAX_PIXELS)
+/// cells: the tour visits every cell of the box, so two pixels far apart would otherwise ask
+/// for a box of 10^10 cells (16 GB) or more.
 fn box_tour(region: &Region) -> Result<Walk> {
     let b = region.bbox();
+    let cells = b.width().saturating_mul(b.height());
+    if cells > crate::region::MAX_PIXELS {
+        return Err(Error::Precondition(format!(
+            "lawn-box: the bounding box is {} x {} = {cells} cells; expected at most {} (the \
+             box tour visits every cell of the box)",
+            b.width(),
+            b.height(),
+            crate::region::MAX_PIXELS
+        )));
+    }
+    // Both sides are at most MAX_PIXELS, so they fit an i32.
     let (w, h) = (b.width() as i32, b.height() as i32);
     let rect = Region::rectangle(w, h);
     let mut g = GridMultigraph::new(rect.len());
@@ -461,13 +479,13 @@ fn output_walk(p: &Points, tour: &[usize]) -> Walk {
         let mut q = a;
         walk.push(q);
         while q.x != b.x {
-            q.x += (b.x - q.x).signum();
+            q.x += b.x.cmp(&q.x) as i32;
             if q != b {
                 walk.push(q);
             }
         }
         while q.y != b.y {
-            q.y += (b.y - q.y).signum();
+            q.y += b.y.cmp(&q.y) as i32;
             if q != b {
                 walk.push(q);
             }
@@ -616,14 +634,17 @@ pub(crate) fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> 
 pub(crate) fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     precondition(region)?;
     if opts.cutter == Cutter::Disk {
-        return Err(Error::Precondition(
-            "lawn-box implements the bounding-box method for square cutters only (not --cutter disk)".into(),
+        return Err(Error::Invalid(
+            "--cutter disk does not apply to lawn-box: it implements the bounding-box method \
+             for square cutters only"
+                .into(),
         ));
     }
+    // The box tour first: it refuses a box too large to walk before any other work.
+    let boxed = box_tour(region)?;
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
     let (tour, _) = christofides(&p, &mst);
-    let boxed = box_tour(region)?;
     let box_len: f64 = (0..boxed.len())
         .map(|k| distance(p.cutter, boxed[k], boxed[(k + 1) % boxed.len()]))
         .sum();

@@ -6,8 +6,10 @@ use crate::tour::Walk;
 
 /// The pixels from `a` to `b` inclusive along a row or column.
 pub(crate) fn straight(a: Pixel, b: Pixel) -> impl Iterator<Item = Pixel> {
-    let (dx, dy) = ((b.x - a.x).signum(), (b.y - a.y).signum());
-    let steps = (b.x - a.x).abs() + (b.y - a.y).abs();
+    // Along a row or a column, so one difference is 0 and the other fits an i32 (coordinates
+    // lie within ±MAX_COORD).
+    let (dx, dy) = (b.x.cmp(&a.x) as i32, b.y.cmp(&a.y) as i32);
+    let steps = a.x.abs_diff(b.x).max(a.y.abs_diff(b.y)) as i32;
     (0..=steps).map(move |k| Pixel::new(a.x + k * dx, a.y + k * dy))
 }
 

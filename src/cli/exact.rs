@@ -33,7 +33,7 @@ pub struct ExactArgs {
     #[arg(long)]
     pub no_time_limit: bool,
     /// HiGHS threads for this solve.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, value_parser = super::parse_threads)]
     pub threads: usize,
     /// Print JSON instead of text.
     #[arg(long)]
@@ -64,13 +64,7 @@ pub struct ExactArgs {
 pub const DEFAULT_TIME_LIMIT: f64 = 300.0;
 
 pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
-    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
-        return Err(mowmill::Error::invalid(format!(
-            "--time-limit {}: expected a positive number of seconds (or --no-time-limit)",
-            a.time_limit
-        ))
-        .into());
-    }
+    super::check_seconds("--time-limit", a.time_limit)?;
     let objective =
         exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
     if super::discrete::is_discrete(&a.file) {

@@ -56,7 +56,7 @@ pub struct HuntArgs {
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Parallel jobs (default: all cores). The result does not depend on it.
-    #[arg(long)]
+    #[arg(long, value_parser = super::bench::parse_jobs)]
     pub jobs: Option<usize>,
     /// Output directory. Default: results/hunt-<algorithm>-<UTC stamp>/ (git-ignored).
     #[arg(long)]
@@ -285,17 +285,9 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
         } else {
             20.0
         });
-    if !(exact_time_limit.is_finite() && exact_time_limit > 0.0) {
-        return Err(bad(format!(
-            "--exact-time-limit {exact_time_limit}: expected a positive number of seconds"
-        )));
-    }
-    if let Some(b) = a.budget
-        && !(b.is_finite() && b > 0.0)
-    {
-        return Err(bad(format!(
-            "--budget {b}: expected a positive number of seconds"
-        )));
+    super::check_seconds("--exact-time-limit", exact_time_limit)?;
+    if let Some(b) = a.budget {
+        super::check_seconds("--budget", b)?;
     }
     if a.evaluations == Some(0) || a.keep == 0 || a.chains == 0 || a.chains > 256 {
         return Err(bad(

@@ -71,6 +71,29 @@ pub fn print_exact_line(
 
 /// A clap parser that accepts exactly `names` and lists them in `--help`; the old objective
 /// spelling `tour-turns` is accepted as an alias of `turns`.
+/// Refuses a time limit (or budget) in seconds outside (0, 30 days] with exit 2, naming the
+/// option: the shared check of every seconds-valued option.
+pub fn check_seconds(option: &str, seconds: f64) -> mowmill::Result<f64> {
+    mowmill::harness::config::check_time_limit(seconds)
+        .map(|()| seconds)
+        .map_err(|m| mowmill::Error::invalid(format!("{option}: {m}")))
+}
+
+/// `exact --threads`: at least 1 and at most 4 per available core (HiGHS allocates per thread;
+/// `--threads 100000` made it abort with bad_alloc).
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    let threads: usize = s
+        .parse()
+        .map_err(|_| format!("expected a number of threads, got {s:?}"))?;
+    let max = 4 * std::thread::available_parallelism().map_or(1, |n| n.get());
+    if threads == 0 || threads > max {
+        return Err(format!(
+            "--threads {threads}: expected 1 to {max} (4 per available core)"
+        ));
+    }
+    Ok(threads)
+}
+
 pub fn one_of(names: impl IntoIterator<Item = &'static str>) -> PossibleValuesParser {
     PossibleValuesParser::new(names.into_iter().map(|name| {
         let value = PossibleValue::new(name);

@@ -39,9 +39,10 @@ pub struct SolveArgs {
     /// Also solve exactly (MILP) to decide guarantees against the proven optimum.
     #[arg(long)]
     pub exact: bool,
-    /// Time limit in seconds of the exact solve (--exact) and of an outside program.
-    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
-    pub time_limit: f64,
+    /// Time limit in seconds of the exact solve (--exact) and of an outside program (default
+    /// 60); refused where neither runs.
+    #[arg(long, allow_negative_numbers = true)]
+    pub time_limit: Option<f64>,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
@@ -51,12 +52,14 @@ pub struct SolveArgs {
     /// Print the unmerged cycle cover instead of the merged tour (same as --objective cc-turns).
     #[arg(long)]
     pub cycle_cover: bool,
-    /// Merging strategy for cycle covers.
-    #[arg(long, default_value = "smart", value_parser = Merge::NAMES)]
-    pub merge: String,
-    /// Lawn-mowing cutter and motion.
-    #[arg(long, default_value = "square", value_parser = Cutter::NAMES)]
-    pub cutter: String,
+    /// Merging strategy for cycle covers (default smart); refused for an algorithm that merges
+    /// no cycle cover.
+    #[arg(long, value_parser = Merge::NAMES)]
+    pub merge: Option<String>,
+    /// Lawn-mowing cutter and motion (default square); refused for an algorithm that computes
+    /// no lawn tour.
+    #[arg(long, value_parser = Cutter::NAMES)]
+    pub cutter: Option<String>,
     /// Rewrite tours to cover each pixel at most 4 times (Theorem 5.6 of the turn-cost paper).
     #[arg(long)]
     pub coverage4: bool,
@@ -91,13 +94,41 @@ pub fn split_command(s: &str) -> Vec<String> {
     words
 }
 
-pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
-    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
+/// The default of `--time-limit`, in seconds.
+const DEFAULT_TIME_LIMIT: f64 = 60.0;
+
+/// Refuses, with exit 2, an option given on the command line that `model` would ignore (only
+/// the options in `applies` do anything there): an ignored option is a run the user did not
+/// ask for, never a silent default.
+fn refuse_ignored(a: &SolveArgs, model: &str, applies: &[&str]) -> Result<()> {
+    let given = [
+        ("--exact", a.exact),
+        ("--time-limit", a.time_limit.is_some()),
+        ("--merge", a.merge.is_some()),
+        ("--cutter", a.cutter.is_some()),
+        ("--coverage4", a.coverage4),
+        ("--turn-cost", a.turn_cost.is_some()),
+        ("--objective", a.objective.is_some()),
+        ("--cycle-cover", a.cycle_cover),
+    ];
+    if let Some((option, _)) = given.iter().find(|(o, g)| *g && !applies.contains(o)) {
+        let expected = if applies.is_empty() {
+            "none of the solve options".to_string()
+        } else {
+            applies.join(", ")
+        };
         bail!(mowmill::Error::invalid(format!(
-            "--time-limit {}: expected a positive number of seconds",
-            a.time_limit
+            "{option} does not apply to {model}; expected only {expected} there"
         )));
     }
+    Ok(())
+}
+
+pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
+    if let Some(t) = a.time_limit {
+        super::check_seconds("--time-limit", t)?;
+    }
+    let time_limit = a.time_limit.unwrap_or(DEFAULT_TIME_LIMIT);
     let wanted: Option<Objective> = match (&a.objective, a.cycle_cover) {
         (Some(o), _) => Some(Objective::parse(o, a.turn_cost).map_err(mowmill::Error::Invalid)?),
         (None, true) => Some(Objective::CcTurns),
@@ -114,6 +145,13 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 "outside programs (--command) run on grid instances only"
             ));
         };
+        let model = format!("discrete instances ({})", a.file.display());
+        refuse_ignored(&a, &model, &["--objective", "--cycle-cover"])?;
+        if let Some(o) = wanted.filter(|o| !matches!(o, Objective::Turns | Objective::CcTurns)) {
+            bail!(mowmill::Error::invalid(format!(
+                "--objective {o} does not apply to {model}; expected turns or cc-turns"
+            )));
+        }
         return super::discrete::solve(
             &a.file,
             algo,
@@ -123,16 +161,25 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         );
     }
     if super::ortho::is_ortho(&a.file) {
+        let model = format!(
+            "polygons with non-integral coordinates ({})",
+            a.file.display()
+        );
+        refuse_ignored(&a, &model, &[])?;
         let algo = a.algo.as_deref().unwrap_or("corollary4");
         return super::ortho::solve(&a.file, algo, a.tour_out.as_deref(), a.json);
     }
     let inst = Instance::read(&a.file)?;
-    let options = Options {
-        merge: a.merge.parse().map_err(mowmill::Error::Invalid)?,
-        cutter: a.cutter.parse().map_err(mowmill::Error::Invalid)?,
+    let mut options = Options {
         coverage4: a.coverage4,
         ..Options::default()
     };
+    if let Some(m) = &a.merge {
+        options.merge = m.parse().map_err(mowmill::Error::Invalid)?;
+    }
+    if let Some(c) = &a.cutter {
+        options.cutter = c.parse().map_err(mowmill::Error::Invalid)?;
+    }
     let outside;
     let subject = match (&a.algo, &a.command) {
         (Some(name), _) => {
@@ -154,7 +201,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 command: split_command(command),
                 objectives: vec![objective.to_string()],
                 guarantee: None,
-                time_limit: a.time_limit,
+                time_limit,
             };
             outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new("."))
                 .map_err(|e| mowmill::Error::invalid(format!("--command: {e}")))?;
@@ -162,6 +209,25 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         }
         (None, None) => unreachable!("clap requires --algo or --command"),
     };
+    // Options the subject ignores are refused: --merge and --coverage4 act on merged tours,
+    // --cutter on lawn tours, and only for registered algorithms (an outside program gets
+    // none of them); --time-limit bounds the exact solve and outside programs.
+    let (merge, cutter, coverage4) = match subject {
+        Subject::Registered(_) => evaluate::relevant_options(subject.objectives()),
+        Subject::Outside(_) => (false, false, false),
+    };
+    let mut applies = vec!["--objective", "--cycle-cover", "--turn-cost", "--exact"];
+    for (option, relevant) in [
+        ("--merge", merge),
+        ("--cutter", cutter),
+        ("--coverage4", coverage4),
+        ("--time-limit", a.exact || a.command.is_some()),
+    ] {
+        if relevant {
+            applies.push(option);
+        }
+    }
+    refuse_ignored(&a, subject.name(), &applies)?;
     // The merged tour by default; the cycle cover with --cycle-cover.
     let objective = subject.pick_objective(wanted)?;
     let mut reference = Reference::default();
@@ -177,7 +243,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             )));
         };
         let opts = exact::ExactOptions {
-            time_limit: Some(a.time_limit),
+            time_limit: Some(time_limit),
             ..exact::ExactOptions::default()
         };
         let r = exact::solve(&inst.region, exact_objective, &opts);
@@ -206,7 +272,13 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     }
     let eval = evaluate::evaluate(subject, &inst.region, &options, &[objective], &reference);
     if let Some(e) = &eval.error {
-        // The algorithm (or outside program) failed: not the input's fault.
+        // A registered algorithm that refused the region or an option (an error of exit code
+        // 2, e.g. lawn-box with --cutter disk) is a usage error; any other failure of the
+        // algorithm (or outside program) is not the input's fault.
+        if matches!(subject, Subject::Registered(_)) && eval.error_exit_code == Some(2) {
+            eprintln!("mowmill: error: {e}");
+            return Ok(ExitCode::from(2));
+        }
         eprintln!("mowmill: error: {} failed: {e}", subject.name());
         return Ok(ExitCode::from(3));
     }

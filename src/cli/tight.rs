@@ -30,13 +30,7 @@ pub struct TightArgs {
 
 pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
     use mowmill::tight;
-    if !(a.time_limit.is_finite() && a.time_limit > 0.0) {
-        return Err(Error::invalid(format!(
-            "--time-limit {}: expected a positive number of seconds",
-            a.time_limit
-        ))
-        .into());
-    }
+    super::check_seconds("--time-limit", a.time_limit)?;
     let mut opts = tight::TightOptions {
         time_limit: a.time_limit,
         ..tight::TightOptions::default()

@@ -495,36 +495,94 @@ pub fn rook_placement(inst: &Discrete, time_limit: Option<f64>) -> RookPlacement
     }
 }
 
-/// Greedy rook placement: the free eligible vertex attacking the fewest free vertices first.
+/// Greedy rook placement: the free eligible vertex attacking the fewest free vertices first
+/// (ties to the smallest index).
+///
+/// The attack counts are kept up to date in an ordered set instead of being recounted over
+/// all vertices for every rook (which took O(V · Σ_K |K|): 25 s on 10^5 isolated vertices).
+/// A vertex's count is the sum, over its channels, of the channel's free vertices; when a
+/// vertex stops being free, the counts of the vertices on its channels drop. That update work
+/// is bounded by [`GREEDY_WORK_PER_INCIDENCE`] per vertex-channel incidence: past it (long
+/// channels losing vertices one by one, as on a 2000 × 2000 lattice) the remaining free
+/// vertices are placed in index order, each still attacking no earlier rook, so the placement
+/// stays valid and the total time near-linear.
 fn greedy_rooks(chans: &[Channel], through: &[Vec<u32>], eligible: &[bool]) -> Vec<u32> {
+    use std::collections::BTreeSet;
     let n = eligible.len();
     let mut free: Vec<bool> = eligible.to_vec();
+    // holders[c]: the vertices with c among their channels (once per listing); members[w]: the
+    // channels listing w among their vertices (once per listing).
+    let mut holders: Vec<Vec<u32>> = vec![Vec::new(); chans.len()];
+    for (v, cs) in through.iter().enumerate() {
+        for &c in cs {
+            holders[c as usize].push(v as u32);
+        }
+    }
+    let mut members: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for (c, ch) in chans.iter().enumerate() {
+        for &w in &ch.verts {
+            members[w as usize].push(c as u32);
+        }
+    }
+    let mut free_in: Vec<usize> = chans
+        .iter()
+        .map(|ch| ch.verts.iter().filter(|&&w| free[w as usize]).count())
+        .collect();
+    let mut attacked: Vec<usize> = (0..n)
+        .map(|v| through[v].iter().map(|&c| free_in[c as usize]).sum())
+        .collect();
+    let mut queue: BTreeSet<(usize, u32)> = (0..n)
+        .filter(|&v| free[v])
+        .map(|v| (attacked[v], v as u32))
+        .collect();
+    let incidences: usize =
+        holders.iter().map(Vec::len).sum::<usize>() + members.iter().map(Vec::len).sum::<usize>();
+    let budget = GREEDY_WORK_PER_INCIDENCE.saturating_mul(incidences + n);
+    let mut work = 0usize;
     let mut rooks = Vec::new();
-    loop {
-        let attacked = |v: usize, free: &[bool]| -> usize {
-            through[v]
-                .iter()
-                .flat_map(|&c| chans[c as usize].verts.iter())
-                .filter(|&&w| free[w as usize])
-                .count()
-        };
-        let Some(v) = (0..n)
-            .filter(|&v| free[v])
-            .min_by_key(|&v| attacked(v, &free))
-        else {
-            break;
-        };
-        rooks.push(v as u32);
-        free[v] = false;
-        for &c in &through[v] {
+    let mut dead = Vec::new();
+    while let Some((_, v)) = queue.pop_first() {
+        rooks.push(v);
+        free[v as usize] = false;
+        dead.push(v);
+        for &c in &through[v as usize] {
             for &w in &chans[c as usize].verts {
-                free[w as usize] = false;
+                if std::mem::replace(&mut free[w as usize], false) {
+                    queue.remove(&(attacked[w as usize], w));
+                    dead.push(w);
+                }
             }
+        }
+        if work > budget {
+            dead.clear();
+            continue;
+        }
+        for w in dead.drain(..) {
+            for &c in &members[w as usize] {
+                free_in[c as usize] -= 1;
+                work += holders[c as usize].len();
+                for &u in &holders[c as usize] {
+                    if free[u as usize] {
+                        let a = &mut attacked[u as usize];
+                        queue.remove(&(*a, u));
+                        *a -= 1;
+                        queue.insert((*a, u));
+                    }
+                }
+            }
+        }
+        if work > budget {
+            // Index order from here on: the set's order no longer follows the counts.
+            queue = queue.into_iter().map(|(_, u)| (0, u)).collect();
         }
     }
     rooks.sort_unstable();
     rooks
 }
+
+/// The update work [`greedy_rooks`] may spend per vertex-channel incidence (and per vertex)
+/// before it places the remaining rooks in index order.
+const GREEDY_WORK_PER_INCIDENCE: usize = 64;
 
 /// The rook MILP (one clique row per channel); `None` if HiGHS gives no solution. The flag
 /// says whether the solution is proven optimal.

@@ -251,13 +251,13 @@ pub(crate) fn lawn_walk(points: &[Pixel]) -> Vec<Pixel> {
         let mut p = a;
         out.push(p);
         while p.x != b.x {
-            p.x += (b.x - p.x).signum();
+            p.x += b.x.cmp(&p.x) as i32;
             if p != b {
                 out.push(p);
             }
         }
         while p.y != b.y {
-            p.y += (b.y - p.y).signum();
+            p.y += b.y.cmp(&p.y) as i32;
             if p != b {
                 out.push(p);
             }

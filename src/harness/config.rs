@@ -964,8 +964,10 @@ fn check_file_name(name: &str) -> std::result::Result<(), String> {
     Ok(())
 }
 
-/// Refuses a time limit that is not a number of seconds in (0, [`MAX_TIME_LIMIT`]].
-fn check_time_limit(seconds: f64) -> std::result::Result<(), String> {
+/// Refuses a time limit that is not a number of seconds in (0, [`MAX_TIME_LIMIT`]]: the one
+/// check of configs' `time_limit` and of every `--time-limit` (a larger or infinite value would
+/// make `Duration::from_secs_f64` panic).
+pub fn check_time_limit(seconds: f64) -> std::result::Result<(), String> {
     if seconds > 0.0 && seconds <= MAX_TIME_LIMIT {
         return Ok(());
     }

@@ -70,7 +70,11 @@ impl Tour {
             let cell = |v: super::Rational| {
                 let twice = v.checked_mul(super::Rational::from(2))?;
                 (twice.is_integer() && twice.numer().rem_euclid(2) == 1)
-                    .then(|| i32::try_from(v.floor()).ok())
+                    .then(|| {
+                        i64::try_from(v.floor())
+                            .ok()
+                            .and_then(|c| crate::region::pixel_coordinate(c).ok())
+                    })
                     .flatten()
             };
             Some(Pixel::new(cell(p.x)?, cell(p.y)?))

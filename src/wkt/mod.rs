@@ -12,7 +12,8 @@
 //!
 //! - a geometry other than `POLYGON` or `MULTIPOLYGON`, malformed syntax, 3-D or measured
 //!   vertices, text after the geometry, and an `EMPTY` geometry (an empty region);
-//! - a coordinate that is not an integer or lies outside `-2^31 ..= 2^31`;
+//! - a coordinate that is not an integer or lies outside `-(2^30 - 1) ..= 2^30` (the pixels'
+//!   coordinate limit [`MAX_COORD`](crate::region::MAX_COORD));
 //! - an edge that is neither horizontal nor vertical;
 //! - a ring that is not closed (last vertex ≠ first), has fewer than 4 corners (no area) or turns
 //!   back on itself;
@@ -55,9 +56,10 @@ pub(crate) use parser::Coordinate;
 pub use poly::parse_poly;
 pub use writer::to_wkt;
 
-/// Smallest and largest accepted coordinate: every pixel between them has `i32` coordinates.
-const MIN_COORD: i64 = i32::MIN as i64;
-const MAX_COORD: i64 = i32::MAX as i64 + 1;
+/// Smallest and largest accepted vertex coordinate: every pixel between them has coordinates
+/// within ±[`region::MAX_COORD`](crate::region::MAX_COORD) (a pixel's far corner is one more).
+const MIN_COORD: i64 = -(crate::region::MAX_COORD as i64);
+const MAX_COORD: i64 = crate::region::MAX_COORD as i64 + 1;
 
 /// Parses a WKT `POLYGON` or `MULTIPOLYGON` into the region of the pixels it encloses.
 ///

@@ -80,8 +80,10 @@ fn whitespace_case_and_negative_coordinates() {
         number_value("0.000e99999999999999999999"),
         NumberValue::Integer(0)
     );
-    assert_eq!(number_value("2147483648"), NumberValue::Integer(MAX_COORD));
-    assert_eq!(number_value("2147483649"), NumberValue::OutOfRange);
+    assert_eq!(number_value("1073741824"), NumberValue::Integer(MAX_COORD));
+    assert_eq!(number_value("1073741825"), NumberValue::OutOfRange);
+    assert_eq!(number_value("-1073741824"), NumberValue::OutOfRange);
+    assert_eq!(number_value("2147483648"), NumberValue::OutOfRange);
     assert_eq!(
         number_value("1e99999999999999999999"),
         NumberValue::OutOfRange
@@ -300,12 +302,12 @@ fn refuses_bad_nesting() {
 
 #[test]
 fn refuses_more_pixels_than_the_limit_from_the_area() {
-    // 108 bytes asking for 4·10^18 pixels: refused from the area, before any pixel is filled.
-    let huge = "POLYGON((0 0, 2000000000 0, 2000000000 2000000000, 0 2000000000, 0 0))";
+    // 108 bytes asking for 10^18 pixels: refused from the area, before any pixel is filled.
+    let huge = "POLYGON((0 0, 1000000000 0, 1000000000 1000000000, 0 1000000000, 0 0))";
     assert_refused(
         huge,
         "1:1",
-        "encloses 4000000000000000000 pixels; expected at most",
+        "encloses 1000000000000000000 pixels; expected at most",
     );
     // One pixel over the limit (a 20 000 001 × 1 strip).
     assert_refused(
@@ -339,17 +341,24 @@ fn a_huge_bounding_box_with_few_pixels_is_fine() {
 #[test]
 fn extreme_coordinates() {
     let r = Region::from_pixels([
-        Pixel::new(i32::MAX, i32::MIN),
-        Pixel::new(i32::MAX, i32::MIN + 1),
+        Pixel::new(crate::region::MAX_COORD, -crate::region::MAX_COORD),
+        Pixel::new(crate::region::MAX_COORD, 1 - crate::region::MAX_COORD),
     ])
     .unwrap();
     let text = to_wkt(&r);
     assert_eq!(
         text,
-        "POLYGON ((2147483647 -2147483648, 2147483648 -2147483648, 2147483648 -2147483646, \
-         2147483647 -2147483646, 2147483647 -2147483648))"
+        "POLYGON ((1073741823 -1073741823, 1073741824 -1073741823, 1073741824 -1073741821, \
+         1073741823 -1073741821, 1073741823 -1073741823))"
     );
     assert_eq!(parse(&text).unwrap(), r);
+    // One past the limit (a pixel at x = 2^30) is refused with the line and column.
+    let e = parse("POLYGON ((0 0, 1073741825 0, 1073741825 1, 0 1, 0 0))").unwrap_err();
+    assert!(
+        e.to_string()
+            .contains(":1:16: coordinate 1073741825 is out of range"),
+        "{e}"
+    );
 }
 
 #[test]
