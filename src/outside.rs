@@ -21,7 +21,12 @@
 //! - **Exit code**: 0 means the tour file is written; anything else is an error row with the
 //!   last lines of the program's stderr. A run longer than `time_limit` seconds is killed
 //!   (with its process group) and becomes an error row. A missing, oversized or malformed
-//!   tour file is an error row; a walk the checker rejects is a row with `valid = false`.
+//!   tour file, or one that is not a regular file, is an error row; a walk the checker
+//!   rejects is a row with `valid = false`.
+//! - **Confinement** (issue 30): a private scratch folder per run, a memory limit
+//!   (`memory_limit`, RLIMIT_AS), stdout and stderr drained and capped, and the program's
+//!   process group (and every process carrying its `MOWMILL_RUN` token) killed on every way
+//!   out of a run and when mowmill is killed: see the `confine` module and docs/outside.md.
 
 use crate::algorithms::theorems::{Bound, Measure, Paper, Realized, Theorem};
 use crate::algorithms::{Against, Guarantee, Objective, Output, Quantity, Solution, When};
@@ -1027,6 +1032,43 @@ mod confine {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Probes item 4 of issue 30: a stream of any length keeps its first and last
+    /// CAPTURE_KEEP bytes and counts the rest (it was kept whole).
+    #[test]
+    fn a_capture_keeps_the_ends_of_a_flood() {
+        let mut c = Capture::default();
+        let chunk = vec![b'x'; 1 << 20];
+        for _ in 0..50 {
+            c.push(&chunk);
+        }
+        c.push(b"the end");
+        assert_eq!(c.total, 50 * (1 << 20) + 7);
+        assert_eq!(c.head.len() + c.tail.len(), 2 * CAPTURE_KEEP);
+        assert_eq!(c.last(7), b"the end");
+        assert_eq!(c.dropped(), c.total - 2 * CAPTURE_KEEP as u64);
+        let mut small = Capture::default();
+        small.push(b"a\nb");
+        assert_eq!(
+            (small.dropped(), small.note("stderr")),
+            (0, "; stderr: a | b".into())
+        );
+    }
+
+    /// Probes item 3 of issue 30: memory limits as written in a config or on the command line.
+    #[test]
+    fn memory_limits_read_as_bytes() {
+        assert_eq!(parse_memory_limit("4 GiB"), Ok(Some(4 << 30)));
+        assert_eq!(parse_memory_limit("512M"), Ok(Some(512 << 20)));
+        assert_eq!(parse_memory_limit("1.5g"), Ok(Some(3 << 29)));
+        assert_eq!(parse_memory_limit("unlimited"), Ok(None));
+        assert_eq!(MemoryLimit::Bytes(1 << 30).bytes(), Ok(Some(1 << 30)));
+        for bad in ["", "lots", "-1G", "0", "100", "4 GB extra", "1e99T"] {
+            assert!(parse_memory_limit(bad).is_err(), "{bad}");
+        }
+        assert!(MemoryLimit::Bytes(-5).bytes().is_err());
+        assert_eq!(show_bytes(64 << 20), "64 MiB");
+    }
 
     #[test]
     fn factors_are_exact_fractions() {
