@@ -32,6 +32,10 @@ pub struct HuntArgs {
     /// Hunt an outside program instead (see `solve --command`).
     #[arg(long)]
     pub command: Option<String>,
+    /// Memory (address-space) limit of the --command program: "512M", "4 GiB", bytes or
+    /// "unlimited" (default 4 GiB; docs/outside.md).
+    #[arg(long, requires = "command")]
+    pub memory_limit: Option<String>,
     /// The objective whose ratio is maximized. Default: the algorithm's tour.
     #[arg(long, value_parser = super::one_of(Objective::ALL.map(Objective::name)))]
     pub objective: Option<String>,
@@ -309,10 +313,18 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
                 command: super::solve::split_command(c),
                 objectives: vec![objective.unwrap_or(Objective::Length).to_string()],
                 guarantee: None,
+                memory_limit: a
+                    .memory_limit
+                    .as_ref()
+                    .map(|m| mowmill::outside::MemoryLimit::Text(m.clone())),
                 time_limit: exact_time_limit,
             };
-            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new("."))
-                .map_err(|e| mowmill::Error::invalid(format!("--command: {e}")))?;
+            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new(".")).map_err(
+                |e| match e.strip_prefix("memory_limit: ") {
+                    Some(m) => mowmill::Error::invalid(format!("--memory-limit {m}")),
+                    None => mowmill::Error::invalid(format!("--command: {e}")),
+                },
+            )?;
             (Subject::Outside(&outside), "outside".to_string())
         }
         (None, None) => unreachable!("clap requires --algo or --command"),

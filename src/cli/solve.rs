@@ -28,6 +28,10 @@ pub struct SolveArgs {
     /// {tour_out}" (split on spaces; quotes group words). See README, "Outside algorithms".
     #[arg(long)]
     pub command: Option<String>,
+    /// Memory (address-space) limit of the --command program: "512M", "4 GiB", bytes or
+    /// "unlimited" (default 4 GiB; docs/outside.md).
+    #[arg(long, requires = "command")]
+    pub memory_limit: Option<String>,
     /// The objective to report (`turns` also accepted as `tour-turns`; `weighted` and
     /// `weighted-cc`, length + C * turns of the tour or of the cycle cover, need --turn-cost).
     /// Default: the algorithm's tour (its first objective for outside programs).
@@ -201,10 +205,18 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 command: split_command(command),
                 objectives: vec![objective.to_string()],
                 guarantee: None,
+                memory_limit: a
+                    .memory_limit
+                    .as_ref()
+                    .map(|m| mowmill::outside::MemoryLimit::Text(m.clone())),
                 time_limit,
             };
-            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new("."))
-                .map_err(|e| mowmill::Error::invalid(format!("--command: {e}")))?;
+            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new(".")).map_err(
+                |e| match e.strip_prefix("memory_limit: ") {
+                    Some(m) => mowmill::Error::invalid(format!("--memory-limit {m}")),
+                    None => mowmill::Error::invalid(format!("--command: {e}")),
+                },
+            )?;
             Subject::Outside(&outside)
         }
         (None, None) => unreachable!("clap requires --algo or --command"),

@@ -85,7 +85,8 @@
 //! * `[[exact]]`: `objective` one of length, cc-turns, turns, weighted, weighted-cc, lawn-tsp, at most one
 //!   table per objective (and turn cost); `turn_cost` for weighted(-cc) only and required there;
 //!   `max_n` ≥ 1; `time_limit` a number of seconds in (0, [`MAX_TIME_LIMIT`]]; the same
-//!   bounds for the `time_limit` of an `[[algorithm]]`.
+//!   bounds for the `time_limit` of an `[[algorithm]]`, whose `memory_limit` is a number of
+//!   bytes, a size such as `"4 GiB"` or `"unlimited"` (default 4 GiB).
 //! * A suite without any instance is refused.
 
 use crate::algorithms::{Cutter, Merge, Options};
