@@ -23,6 +23,7 @@ import sys
 import zlib
 from concurrent.futures import ThreadPoolExecutor
 
+sys.dont_write_bytecode = True  # No __pycache__ in scripts/: the soak writes only under --out.
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import tour_check  # noqa: E402
 
@@ -179,8 +180,8 @@ class Soak:
         probes = []
         fixed = [
             ("validate", "wrap.gg", "wrap.tour.json"),
-            ("solve-far", "far.gg", "lawn-box"),
-        ]
+        ] + [("solve-far", "far.gg", a) for a in
+             ["lawn-box", "lawn-mst", "lawn-christofides", "lawn-2opt", "star-cover"]]
         for f in fixed:
             probes.append(("fixed",) + f)
         # Numeric arguments at the edges, every value once.
@@ -205,7 +206,8 @@ class Soak:
         specials = ["empty", "dir", "devzero", "fifo"]
         for sp in specials:
             for cmd in ["info", "solve", "validate-instance", "validate-tour", "exact",
-                        "draw", "export", "results", "config"]:
+                        "draw", "export", "config", "results:gate", "results:gate-baseline",
+                        "results:claims", "results:plot", "results:merge"]:
                 probes.append(("special", cmd, sp))
         kinds = ["instance"] * 6 + ["tour"] * 3 + ["dtour", "config", "results", "results"]
         while len(probes) < count:
@@ -310,7 +312,10 @@ class Soak:
         # results: a copy of the tiny run with one file mutated (or replaced by a special one)
         d = os.path.join(P, "run")
         shutil.copytree(self.seed_path("run"), d, symlinks=True)
-        name = r.choice(["results.csv", "results.csv", "stats.csv", "manifest.json"])
+        cmd = what.split(":")[1] if ":" in what else r.choice(
+            ["gate", "gate-baseline", "claims", "plot", "merge"])
+        name = ("stats.csv" if cmd == "gate-baseline" else "results.csv") if special else r.choice(
+            ["results.csv", "results.csv", "stats.csv", "manifest.json"])
         target = os.path.join(d, name)
         if special:
             os.remove(target)
@@ -320,7 +325,6 @@ class Soak:
             with open(target, "wb") as f:
                 f.write(mutate(data, rng))
         base = self.seed_path("run")
-        cmd = r.choice(["gate", "gate-baseline", "claims", "plot", "merge"])
         if cmd == "gate":
             argv = ["gate", "--baseline", os.path.join(base, "stats.csv"), "--current", d]
         elif cmd == "gate-baseline":

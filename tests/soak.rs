@@ -164,13 +164,11 @@ fn check<T>(result: Result<T>) {
     }
 }
 
-/// A fresh file for a path-taking reader, under one directory per test process.
+/// A fresh file for a path-taking reader in the temporary folder (removed after the read).
 fn temp_file(name: &str, bytes: &[u8]) -> PathBuf {
     static COUNT: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!("mowmill-soak-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
     let n = COUNT.fetch_add(1, Ordering::Relaxed);
-    let path = dir.join(format!("{n}-{name}"));
+    let path = std::env::temp_dir().join(format!("mowmill-soak-{}-{n}-{name}", std::process::id()));
     std::fs::write(&path, bytes).unwrap();
     path
 }
