@@ -148,7 +148,7 @@ impl GridFile {
 
     /// Reads a `.grid` file.
     pub fn read(path: &Path) -> Result<GridFile> {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let bytes = crate::input::read_bytes(path, "an instance file")?;
         GridFile::from_bytes(bytes, &path.display().to_string())
     }
 

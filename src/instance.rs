@@ -2,7 +2,7 @@
 //! polygons and `.poly` rings (see [`wkt`](crate::wkt)) and pixel lists (see
 //! [`pixel_list`](crate::pixel_list)), chosen by extension or, failing that, by content.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::gridfile::GridFile;
 use crate::region::Region;
 use std::path::Path;
@@ -117,7 +117,7 @@ impl Instance {
     /// Reads an instance file in any of the [`Format`]s: by its extension (`.grid`, `.wkt`,
     /// `.poly`, `.gg` or `.csv`, in any case), else by its content ([`Format::detect`]).
     pub fn read(path: &Path) -> Result<Instance> {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let bytes = crate::input::read_bytes(path, "an instance file")?;
         let file = path.display().to_string();
         let name = path
             .file_stem()

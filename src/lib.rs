@@ -80,6 +80,7 @@ pub mod generate;
 pub mod gridfile;
 pub mod harness;
 pub mod hunt;
+pub mod input;
 pub mod instance;
 pub mod lawn_check;
 pub mod ortho;

@@ -53,7 +53,7 @@ impl CycleCover {
     }
 
     pub fn read(path: &Path) -> Result<CycleCover> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = crate::input::read_text(path, "a tour JSON file")?;
         CycleCover::from_json(&text, &path.display().to_string())
     }
 

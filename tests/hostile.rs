@@ -184,3 +184,47 @@ fn discrete_info_is_near_linear() {
         assert_eq!(v["rook_placement"], rooks, "{v}");
     }
 }
+
+/// A FIFO (whose `open` blocks until a writer comes), `/dev/zero` (which never ends) and a
+/// directory, given as an instance, a tour, a config or a results folder's file, are refused
+/// with exit 2 before they are opened, instead of hanging or filling the memory.
+#[test]
+fn special_files_are_refused_not_read() {
+    let d = temp_dir("hostile-fifo");
+    let fifo = d.join("pipe.grid");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let ok = d.join("ok.gg");
+    std::fs::write(&ok, "0 0\n1 0\n").unwrap();
+    let run = d.join("run");
+    std::fs::create_dir_all(&run).unwrap();
+    let csv = run.join("results.csv");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&csv)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let (f, z, o) = (fifo.to_str().unwrap(), "/dev/zero", ok.to_str().unwrap());
+    let dir = d.to_str().unwrap();
+    let probes: Vec<Vec<&str>> = vec![
+        vec!["info", f],
+        vec!["info", z],
+        vec!["info", dir],
+        vec!["validate", o, "--tour", f],
+        vec!["validate", o, "--tour", z],
+        vec!["bench", "--config", f, "--out", dir],
+        vec!["claims", "--from", run.to_str().unwrap()],
+    ];
+    for args in probes {
+        let out = common::mowmill_within(&args, 20);
+        assert_eq!(code(&out), Some(2), "{args:?}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("regular file") || stderr(&out).contains("directory"),
+            "{args:?}: {}",
+            stderr(&out)
+        );
+    }
+}

@@ -173,7 +173,7 @@ pub fn hunt_command(a: HuntArgs) -> Result<ExitCode> {
         return Ok(run_one(&a)?.1);
     };
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(&path).map_err(|e| mowmill::Error::io(&path, e))?;
+    let text = mowmill::input::read_text(&path, "a hunt suite config")?;
     let suite: Suite = toml::from_str(&text).map_err(|e| {
         let (line, column) =
             mowmill::harness::config::line_column(&text, e.span().map_or(0, |s| s.start));

@@ -90,7 +90,7 @@ pub const MAX_EDGES: usize = 200_000_000;
 /// [`Error::Io`] when the file cannot be read, [`Error::Parse`] (file, line, column, what was
 /// expected) when it is not a valid instance.
 pub fn read_discrete(path: &Path) -> Result<Discrete> {
-    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    let bytes = crate::input::read_bytes(path, "a discrete instance or tour file")?;
     let name = path.display().to_string();
     let text = utf8_text(bytes, &name)?;
     match path.extension().and_then(|e| e.to_str()) {
@@ -1027,7 +1027,7 @@ impl DiscreteCover {
     }
 
     pub fn read(path: &Path) -> Result<DiscreteCover> {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let bytes = crate::input::read_bytes(path, "a discrete instance or tour file")?;
         let name = path.display().to_string();
         DiscreteCover::from_json(&utf8_text(bytes, &name)?, &name)
     }

@@ -282,7 +282,7 @@ impl VoxelRegion {
 
     /// Reads a `.vox` file.
     pub fn read(path: &Path) -> Result<VoxelRegion> {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let bytes = crate::input::read_bytes(path, "a lattice instance file")?;
         let name = path.display().to_string();
         VoxelRegion::parse(&utf8_text(bytes, &name)?, &name)
     }
@@ -463,7 +463,7 @@ impl HexRegion {
 
     /// Reads a hexagonal-cell text file.
     pub fn read(path: &Path) -> Result<HexRegion> {
-        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        let bytes = crate::input::read_bytes(path, "a lattice instance file")?;
         let name = path.display().to_string();
         HexRegion::parse(&utf8_text(bytes, &name)?, &name)
     }

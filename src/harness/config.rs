@@ -118,10 +118,9 @@ pub const MAX_NAME_CHARS: usize = 200;
 /// regular file and gives more) is refused naming the file, before it is read whole.
 pub fn read_text(path: &Path) -> Result<String> {
     use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+    let mut file = crate::input::open_regular(path, MAX_CONFIG_BYTES as u64, "a suite config")?;
     let mut bytes = Vec::new();
-    file.take(MAX_CONFIG_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)
+    file.read_to_end(&mut bytes)
         .map_err(|e| Error::io(path, e))?;
     if bytes.len() > MAX_CONFIG_BYTES {
         return Err(Error::invalid(format!(

@@ -174,7 +174,7 @@ impl Recorded {
     /// `manifests/RUN.json`); errors name the file.
     pub fn read_path(path: &Path) -> Result<Recorded> {
         let path = path.to_path_buf();
-        let text = std::fs::read_to_string(&path).map_err(|e| Error::io(&path, e))?;
+        let text = crate::input::read_text(&path, "a manifest.json")?;
         let json = serde_json::from_str(&text).map_err(|e| {
             Error::parse(
                 &path.display().to_string(),

@@ -74,7 +74,7 @@ fn check_shard(dir: &Path, problems: &mut Vec<String>) -> Option<Shard> {
         return Some(shard);
     };
     let results = dir.join("results.csv");
-    match std::fs::read(&results) {
+    match crate::input::read_bytes(&results, "a results.csv") {
         Err(e) => problems.push(format!("{}: {e}", results.display())),
         Ok(bytes) if bytes.last().is_some_and(|&b| b != b'\n') => problems.push(format!(
             "{}: truncated (does not end on a complete line)",

@@ -350,34 +350,7 @@ pub fn truncate_partial_line(path: &Path) -> Result<()> {
 /// never ends cannot exhaust the memory.
 pub const MAX_RESULTS_BYTES: u64 = 1 << 30;
 
-/// Opens `path` for reading if it is a regular file (a symbolic link to one is followed) of at
-/// most `limit` bytes; refuses a directory, a device such as `/dev/zero`, a FIFO, or a larger
-/// file, naming it and what was expected.
-pub fn open_regular(path: &Path, limit: u64, expected: &str) -> Result<impl std::io::Read> {
-    let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
-    if !meta.is_file() {
-        let kind = if meta.is_dir() {
-            "a directory"
-        } else {
-            "not a regular file (a device, FIFO or socket)"
-        };
-        return Err(Error::invalid(format!(
-            "{}: is {kind}: expected {expected} (a regular file)",
-            path.display()
-        )));
-    }
-    if meta.len() > limit {
-        return Err(Error::invalid(format!(
-            "{}: is {} bytes: expected {expected} of at most {limit} bytes",
-            path.display(),
-            meta.len()
-        )));
-    }
-    let file = File::open(path).map_err(|e| Error::io(path, e))?;
-    // A file that grows while it is read stops at the bound; the CSV reader then sees a cut
-    // line, or the rows up to it.
-    Ok(std::io::Read::take(file, limit))
-}
+pub use crate::input::open_regular;
 
 /// Reads every row of a `results.csv` (a regular file of at most [`MAX_RESULTS_BYTES`]; an
 /// empty file or a header alone gives no rows, as a run that finished nothing has).

@@ -338,7 +338,7 @@ fn check_same_run(
 /// the old rows get empty columns (an old run did not record them). Any other header is
 /// refused.
 fn upgrade_header(results: &Path) -> Result<()> {
-    let text = std::fs::read_to_string(results).map_err(|e| Error::io(results, e))?;
+    let text = crate::input::read_text(results, "a results.csv")?;
     let header = text.lines().next().unwrap_or_default();
     let current = super::rows::header()?;
     if header.is_empty() || header == current {

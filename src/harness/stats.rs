@@ -192,8 +192,8 @@ pub fn write(path: &Path, stats: &[StatRow]) -> Result<()> {
 }
 
 pub fn read(path: &Path) -> Result<Vec<StatRow>> {
-    let mut r = csv::Reader::from_path(path)
-        .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
+    let file = crate::input::open_regular(path, crate::input::MAX_INPUT_BYTES, "a stats.csv")?;
+    let mut r = csv::Reader::from_reader(std::io::BufReader::new(file));
     r.deserialize()
         .enumerate()
         .map(|(k, rec)| {

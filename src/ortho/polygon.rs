@@ -133,7 +133,7 @@ impl Polygon {
 
     /// Reads a WKT file; see [`Polygon::parse`].
     pub fn read(path: &Path) -> Result<Polygon> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = crate::input::read_text(path, "a polygon file")?;
         Polygon::parse(&text, &path.display().to_string())
     }
 

@@ -175,7 +175,7 @@ impl Tour {
     }
 
     pub fn read(path: &Path) -> Result<Tour> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        let text = crate::input::read_text(path, "a tour JSON file")?;
         Tour::from_json(&text, &path.display().to_string())
     }
 
