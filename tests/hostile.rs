@@ -228,3 +228,21 @@ fn special_files_are_refused_not_read() {
         );
     }
 }
+
+/// Two pixels 2^31 − 2 apart make a two-line file whose lawn tours would list four billion
+/// pixels: the MST-based lawn algorithms refuse them (exit 2) instead of expanding the walk.
+#[test]
+fn lawn_tours_of_far_pixels_are_refused() {
+    let d = temp_dir("hostile-lawn-far");
+    let far = d.join("far.gg");
+    std::fs::write(&far, "1073741823 0\n-1073741823 0\n").unwrap();
+    for algo in ["lawn-mst", "lawn-christofides", "lawn-2opt"] {
+        let out = common::mowmill_within(&["solve", far.to_str().unwrap(), "--algo", algo], 60);
+        assert_eq!(code(&out), Some(2), "{algo}: {}", stderr(&out));
+        assert!(
+            stderr(&out).contains("unit moves; expected at most"),
+            "{algo}: {}",
+            stderr(&out)
+        );
+    }
+}

@@ -530,7 +530,26 @@ pub(crate) fn spread_lower_bound(region: &Region, cutter: Cutter) -> Option<i64>
     }
 }
 
-fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> Solution {
+/// The most unit moves an output walk of the square cutter may have: a tour of few pixels far
+/// apart is short to describe but expands to one pixel per unit move, so a two-line pixel
+/// list could ask for billions ([`crate::region::MAX_PIXELS`], as for regions).
+pub const MAX_WALK_MOVES: u64 = crate::region::MAX_PIXELS as u64;
+
+fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> Result<Solution> {
+    if p.cutter == Cutter::Square {
+        let moves: u64 = (0..tour.len())
+            .map(|k| {
+                let (a, b) = (p.pts[tour[k]], p.pts[tour[(k + 1) % tour.len()]]);
+                u64::from(a.x.abs_diff(b.x)) + u64::from(a.y.abs_diff(b.y))
+            })
+            .sum();
+        if moves > MAX_WALK_MOVES {
+            return Err(crate::error::Error::invalid(format!(
+                "the lawn tour has {moves} unit moves; expected at most {MAX_WALK_MOVES} (the \
+                 walk lists one pixel per move: the pixels lie too far apart)"
+            )));
+        }
+    }
     let mut s = Solution::default();
     s.outputs.push(Output {
         objective: Objective::LawnLength,
@@ -550,7 +569,7 @@ fn solution(region: &Region, p: &Points, tour: &[usize], mst: Option<f64>) -> So
         s.certificates
             .insert("mst_weight".into(), (w * scale).floor() as i64);
     }
-    s
+    Ok(s)
 }
 
 fn mst_weight(p: &Points, mst: &[(usize, usize)]) -> f64 {
@@ -567,7 +586,7 @@ pub(crate) fn lawn_mst(region: &Region, opts: &Options) -> Result<Solution> {
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
     let tour = preorder(p.len(), &mst);
-    Ok(solution(region, &p, &tour, Some(mst_weight(&p, &mst))))
+    solution(region, &p, &tour, Some(mst_weight(&p, &mst)))
 }
 
 /// `lawn-christofides`: length ≤ 3/2 · TSP(S) ≤ 3/2 (3ℓ* + 6) for the square with rectilinear
@@ -585,7 +604,7 @@ pub(crate) fn lawn_christofides(region: &Region, opts: &Options) -> Result<Solut
     let p = Points::new(region, opts.cutter);
     let mst = minimum_spanning_tree(&p);
     let (tour, m) = christofides(&p, &mst);
-    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
+    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)))?;
     let scale = if p.cutter == Cutter::Square {
         1.0
     } else {
@@ -617,7 +636,7 @@ pub(crate) fn lawn_two_opt(region: &Region, opts: &Options) -> Result<Solution> 
         start = c;
     }
     let tour = local::improve(&p, start);
-    Ok(solution(region, &p, &tour, Some(mst_weight(&p, &mst))))
+    solution(region, &p, &tour, Some(mst_weight(&p, &mst)))
 }
 
 /// `lawn-box`: the shorter of the Fig. 9 bounding-box tour and the Christofides tour (the
@@ -648,7 +667,7 @@ pub(crate) fn lawn_box(region: &Region, opts: &Options) -> Result<Solution> {
     let box_len: f64 = (0..boxed.len())
         .map(|k| distance(p.cutter, boxed[k], boxed[(k + 1) % boxed.len()]))
         .sum();
-    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)));
+    let mut s = solution(region, &p, &tour, Some(mst_weight(&p, &mst)))?;
     let chose_box = box_len < p.tour_length(&tour) - 1e-9;
     if chose_box {
         s.outputs[0].cover = CycleCover::tour(boxed);
