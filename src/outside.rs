@@ -433,7 +433,7 @@ pub fn parse_memory_limit(s: &str) -> std::result::Result<Option<u64>, String> {
 /// "4 GiB", "64 MiB" or "1234567 bytes".
 fn show_bytes(b: u64) -> String {
     for (unit, name) in [(1u64 << 40, "TiB"), (1 << 30, "GiB"), (1 << 20, "MiB")] {
-        if b % unit == 0 {
+        if b.is_multiple_of(unit) {
             return format!("{} {name}", b / unit);
         }
     }

@@ -175,7 +175,8 @@ fn empty_directory_and_device_results_are_refused() {
         .next()
         .unwrap()
         .to_string();
-    let cases: Vec<(&str, Box<dyn Fn(&Path)>, &str)> = vec![
+    type Plant = Box<dyn Fn(&Path)>;
+    let cases: Vec<(&str, Plant, &str)> = vec![
         (
             "empty",
             Box::new(|p| std::fs::write(p, "").unwrap()),

@@ -28,7 +28,7 @@ pub(super) fn star_min_arm(w: usize) -> usize {
 
 /// Whether (x, y) lies on corridor `line` (0 horizontal, 1 vertical, 2 diagonal, 3 mirrored).
 fn on_line(line: usize, l: i64, w: i64, x: i64, y: i64) -> bool {
-    let span = |v: i64| -l <= v && v <= l + w - 1;
+    let span = |v: i64| -l <= v && v < l + w;
     match line {
         0 => span(x) && (0..w).contains(&y),
         1 => span(y) && (0..w).contains(&x),

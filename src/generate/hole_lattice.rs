@@ -81,7 +81,7 @@ fn missing(pattern: Pattern, m: usize, x: usize, y: usize) -> bool {
     match pattern {
         Pattern::Staggered => y % 2 == 1 && x % 2 == (y / 2) % 2,
         Pattern::Square => x % 2 == 1 && y % 2 == 1,
-        Pattern::Diagonal => inner && (x + 2 * y) % 5 == 0,
+        Pattern::Diagonal => inner && (x + 2 * y).is_multiple_of(5),
         Pattern::Sparse => y % 2 == 1 && inner && x % 3 == 1 + (y / 2) % 2,
     }
 }

@@ -152,7 +152,7 @@ pub fn write_json(out: &Path, manifest: &Value) -> Result<()> {
 
 /// The run id recorded in an existing manifest (to keep it when resuming).
 pub fn read_run_id(out: &Path) -> Option<String> {
-    let text = std::fs::read_to_string(out.join("manifest.json")).ok()?;
+    let text = crate::input::read_text(&out.join("manifest.json"), "a manifest.json").ok()?;
     let v: serde_json::Value = serde_json::from_str(&text).ok()?;
     v["run_id"].as_str().map(str::to_string)
 }

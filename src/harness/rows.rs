@@ -334,7 +334,7 @@ impl RowWriter {
 
 /// A run killed while writing may leave half a line: drop it so appending stays well-formed.
 pub fn truncate_partial_line(path: &Path) -> Result<()> {
-    let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    let bytes = crate::input::read_bytes(path, "a results.csv")?;
     if bytes.last().is_some_and(|&b| b != b'\n') {
         let keep = bytes.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
         let f = OpenOptions::new()

@@ -197,10 +197,10 @@ pub fn finish(out: &Path) -> Result<usize> {
 fn file_digests(instances: &[InstanceSpec]) -> Result<std::collections::BTreeMap<String, String>> {
     let mut files = std::collections::BTreeMap::new();
     for spec in instances {
-        if let Source::File(path) = &spec.source {
-            if let Ok(bytes) = std::fs::read(path) {
-                files.insert(spec.name.clone(), sha256_hex(&bytes));
-            }
+        if let Source::File(path) = &spec.source
+            && let Ok(bytes) = crate::input::read_bytes(path, "an instance file")
+        {
+            files.insert(spec.name.clone(), sha256_hex(&bytes));
         }
     }
     Ok(files)
@@ -224,9 +224,11 @@ fn check_same_files(out: &Path, instances: &[InstanceSpec], rows: &[Row]) -> Res
         let Some(path) = files.get(r.instance.as_str()) else {
             continue;
         };
-        let now = digests
-            .entry(r.instance.as_str())
-            .or_insert_with(|| std::fs::read(path).ok().map(|b| sha256_hex(&b)));
+        let now = digests.entry(r.instance.as_str()).or_insert_with(|| {
+            crate::input::read_bytes(path, "an instance file")
+                .ok()
+                .map(|b| sha256_hex(&b))
+        });
         if now.as_deref().is_some_and(|sha| sha != r.sha256) {
             changed.insert(format!("{} (edited: {})", r.instance, path.display()));
         }
@@ -506,12 +508,12 @@ fn load(spec: &InstanceSpec) -> Result<(Vec<u8>, &'static str, Loaded)> {
         }
         Source::File(path) if crate::ortho::Polygon::is_ortho_file(path) => {
             let polygon = crate::ortho::Polygon::read(path)?;
-            let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+            let bytes = crate::input::read_bytes(path, "an instance file")?;
             (bytes, "wkt", Loaded::Ortho(polygon))
         }
         Source::File(path) if crate::discrete::generate::is_discrete(path) => {
             let inst = crate::discrete::generate::read(path)?;
-            let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+            let bytes = crate::input::read_bytes(path, "an instance file")?;
             let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("dm");
             let ext = crate::discrete::generate::EXTENSIONS
                 .iter()
@@ -522,7 +524,7 @@ fn load(spec: &InstanceSpec) -> Result<(Vec<u8>, &'static str, Loaded)> {
         }
         Source::File(path) => {
             let inst = Instance::read(path)?;
-            let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+            let bytes = crate::input::read_bytes(path, "an instance file")?;
             let ext = if path.extension().is_some_and(|e| e == "wkt") {
                 "wkt"
             } else {

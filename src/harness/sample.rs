@@ -243,7 +243,7 @@ pub fn draw(from: &[PathBuf], out: &Path, opts: &DrawOptions) -> Result<Index> {
                 .map(|r| r.sha256.clone())
                 .unwrap_or_default();
             let source = instance_file(&run.dir.join("instances"), name)?;
-            let bytes = std::fs::read(&source).map_err(|e| Error::io(&source, e))?;
+            let bytes = crate::input::read_bytes(&source, "an instance file")?;
             let got = sha256_hex(&bytes);
             if &got != sha {
                 return Err(Error::invalid(format!(
@@ -590,7 +590,7 @@ struct Job<'a> {
 pub fn check(dir: &Path, jobs: Option<usize>) -> Result<CheckReport> {
     let start = Instant::now();
     let index_path = dir.join(INDEX);
-    let text = std::fs::read_to_string(&index_path).map_err(|e| Error::io(&index_path, e))?;
+    let text = crate::input::read_text(&index_path, "a sample index")?;
     let index: Index = serde_json::from_str(&text).map_err(|e| {
         Error::parse(
             &index_path.display().to_string(),
@@ -710,7 +710,7 @@ fn prepare_job<'a>(
     let first = rows[0];
     let folder = dir.join("instances").join(run);
     let path = instance_file(&folder, instance)?;
-    let bytes = std::fs::read(&path).map_err(|e| Error::io(&path, e))?;
+    let bytes = crate::input::read_bytes(&path, "a sample file")?;
     let sha = sha256_hex(&bytes);
     if let Some(r) = rows.iter().find(|r| r.sha256 != sha) {
         return Err(Error::invalid(format!(
