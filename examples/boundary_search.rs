@@ -406,7 +406,7 @@ fn main() {
     let mut search = Search {
         opts: ExactOptions {
             time_limit: Some(value("--time-limit", 20) as f64),
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         },
         counts: Counts::default(),
     };

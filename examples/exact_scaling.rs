@@ -177,7 +177,7 @@ fn main() {
                 };
                 let Some(&(objective, n, family, seed)) = tasks.get(k) else { break };
                 let region = instance(family, n, seed);
-                let opts = ExactOptions { time_limit: Some(args.time_limit), verbose: args.verbose, ..ExactOptions::default() };
+                let opts = ExactOptions { time_limit: Some(args.time_limit), verbose: args.verbose, ..mowmill::warm_start::exact_options() };
                 let t = Instant::now();
                 let r = solve(&region, objective, &opts);
                 let seconds = t.elapsed().as_secs_f64();

@@ -102,7 +102,7 @@ fn main() {
                     &ExactOptions {
                         time_limit: Some(time_limit),
                         warm_start: Some(out.cover.clone()),
-                        ..ExactOptions::default()
+                        ..mowmill::warm_start::exact_options()
                     },
                 );
                 let name = format!("{family} n={n} seed={seed}");

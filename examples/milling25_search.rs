@@ -61,7 +61,7 @@ fn measure(region: &Region, time_limit: f64) -> Result<Option<Row>, String> {
         exact::Objective::Length,
         &ExactOptions {
             time_limit: Some(time_limit),
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         },
     );
     if res.status != Status::Optimal {

@@ -92,6 +92,7 @@ pub mod tight;
 pub mod topology;
 pub mod tour;
 pub mod tsplib;
+pub mod warm_start;
 pub mod wkt;
 
 pub use error::{Error, Result};

@@ -228,7 +228,7 @@ use mowmill::topology::{components, is_thin};
 fn exact(r: &Region, objective: Objective) -> Option<u64> {
     let opts = ExactOptions {
         time_limit: Some(20.0),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     };
     let res = solve(r, objective, &opts);
     (res.status == Status::Optimal)

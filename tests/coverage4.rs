@@ -322,7 +322,7 @@ fn capping_coverage_at_four_costs_optimal_tours_nothing() {
         let opts = |cap| ExactOptions {
             time_limit: Some(60.0),
             max_coverage: cap,
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         };
         let free = solve(&region, Objective::TourTurns, &opts(None));
         let capped = solve(&region, Objective::TourTurns, &opts(Some(4)));
@@ -351,7 +351,7 @@ fn coverage_cap_is_enforced_by_the_exact_model() {
     use mowmill::exact::{ExactOptions, Objective, Status, solve};
     let opts = ExactOptions {
         max_coverage: Some(1),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     };
     let square = solve(&Region::rectangle(2, 2), Objective::TourTurns, &opts);
     assert_eq!((square.status, square.value), (Status::Optimal, Some(4)));

@@ -24,7 +24,7 @@ const LIMIT: f64 = 20.0;
 fn opts() -> ExactOptions {
     ExactOptions {
         time_limit: Some(LIMIT),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     }
 }
 
@@ -241,7 +241,7 @@ fn time_limit_gives_a_checked_incumbent_and_a_bound() {
         Objective::TourTurns,
         &ExactOptions {
             time_limit: Some(0.1),
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         },
     );
     assert!(

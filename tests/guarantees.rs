@@ -156,7 +156,7 @@ fn length_is_within_four_times_the_exact_optimum() {
     let (regions, _) = generated(3, &[6, 12, 20]);
     let opts = ExactOptions {
         time_limit: Some(10.0),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     };
     let (mut solved, mut unsolved) = (0, 0);
     for (label, region) in &regions {

@@ -430,7 +430,7 @@ mod against_exact {
     fn opt(r: &Region, objective: exact::Objective) -> Option<u64> {
         let opts = ExactOptions {
             time_limit: Some(5.0),
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         };
         let res = exact::solve(r, objective, &opts);
         (res.status == Status::Optimal)

@@ -25,7 +25,7 @@ fn opt(region: &Region, seconds: f64) -> Option<u64> {
         exact::Objective::Length,
         &ExactOptions {
             time_limit: Some(seconds),
-            ..ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         },
     );
     (res.status == Status::Optimal)

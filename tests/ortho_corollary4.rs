@@ -2,7 +2,7 @@
 //! checker, the stated length bound holds, and the lower bounds never exceed exact optima on
 //! small integral regions.
 
-use mowmill::exact::{self, ExactOptions, Status};
+use mowmill::exact::{self, Status};
 use mowmill::generate::{Family, GenParams, generate};
 use mowmill::ortho::{self, Polygon, Rational, check, corollary4};
 
@@ -126,7 +126,11 @@ fn lower_bounds_never_exceed_exact_optima() {
         let polygon = Polygon::from_region(&region).unwrap();
         let erosion = ortho::feasibility(&polygon).unwrap();
         let bounds = ortho::lower_bounds(&polygon, &erosion).unwrap();
-        let result = exact::solve(&region, exact::Objective::Length, &ExactOptions::default());
+        let result = exact::solve(
+            &region,
+            exact::Objective::Length,
+            &mowmill::warm_start::exact_options(),
+        );
         assert_eq!(result.status, Status::Optimal, "seed {seed}");
         let opt = Rational::integer(result.value.unwrap() as i64);
         let contour = bounds.contour.expect("a simple region");

@@ -198,7 +198,7 @@ fn integral_polygons_agree_with_the_grid() {
 fn against_exact_optima_on_small_regions() {
     let opts = ExactOptions {
         time_limit: Some(10.0),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     };
     let mut stats = Stats::default();
     let (mut cc_ratios, mut tour_ratios, mut lb_ratios) = (Vec::new(), Vec::new(), Vec::new());

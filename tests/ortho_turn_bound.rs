@@ -3,7 +3,7 @@
 //! milling (Corollary 4's tour) of generated non-integral polygons.
 
 use mowmill::Region;
-use mowmill::exact::{self, ExactOptions, Status};
+use mowmill::exact::{self, Status};
 use mowmill::generate::{Family, GenParams, generate};
 use mowmill::ortho::{self, Polygon, TurnBound, check, corollary4, feasibility, turn_lower_bound};
 
@@ -22,7 +22,11 @@ fn grid(text: &str) -> TurnBound {
 
 /// The exact minimum-turn cycle cover of a small region (pixel walks, which are millings).
 fn cc_turns(region: &Region) -> u64 {
-    let result = exact::solve(region, exact::Objective::CcTurns, &ExactOptions::default());
+    let result = exact::solve(
+        region,
+        exact::Objective::CcTurns,
+        &mowmill::warm_start::exact_options(),
+    );
     assert_eq!(
         result.status,
         Status::Optimal,

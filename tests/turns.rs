@@ -288,7 +288,7 @@ proptest! {
 fn exact_optima(region: &Region) -> Option<(u64, u64)> {
     let opts = ExactOptions {
         time_limit: Some(20.0),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     };
     let cc = exact::solve(region, exact::Objective::CcTurns, &opts);
     let tour = exact::solve(region, exact::Objective::TourTurns, &opts);

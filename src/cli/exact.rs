@@ -96,7 +96,8 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         verbose: a.verbose,
         warm_start: a.start.as_deref().map(CycleCover::read).transpose()?,
         max_coverage: a.max_coverage,
-        start_from_approximations: !a.no_warm_start,
+        starts: (!a.no_warm_start)
+            .then_some(mowmill::warm_start::from_registry as mowmill::exact::StartFn),
     };
     let result = exact::solve(&inst.region, objective, &opts);
     if let (Some(path), Some(cover)) = (&a.tour_out, &result.cover) {

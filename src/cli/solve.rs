@@ -256,7 +256,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         };
         let opts = exact::ExactOptions {
             time_limit: Some(time_limit),
-            ..exact::ExactOptions::default()
+            ..mowmill::warm_start::exact_options()
         };
         let r = exact::solve(&inst.region, exact_objective, &opts);
         let optimal = r.status == exact::Status::Optimal && r.valid;

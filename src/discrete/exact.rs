@@ -2123,7 +2123,6 @@ mod tests {
         }
         let grid_opts = ExactOptions {
             time_limit: Some(60.0),
-            start_from_approximations: false,
             ..ExactOptions::default()
         };
         for region in &regions {

@@ -229,10 +229,27 @@ pub struct ExactOptions {
     /// Turn objectives only: visit every pixel at most this many times (Theorem 5.6 of the
     /// turn-cost paper says 4 costs no turns). The optimum is then the optimum under the cap.
     pub max_coverage: Option<u32>,
-    /// Without a `warm_start`, start from the best cover of the registered approximation
-    /// algorithms ([`approximate_start`]; their time counts in the solve's).
-    pub start_from_approximations: bool,
+    /// Without a `warm_start`, ask this source for one (its time counts in the solve's). The
+    /// exact solver knows no algorithm: the caller passes the source, usually
+    /// [`crate::warm_start::from_registry`] (the best cover of the registered approximation
+    /// algorithms). `None`: no warm start unless `warm_start` is given.
+    pub starts: Option<StartFn>,
 }
+
+/// What a warm-start source is asked for: a checker-valid cover of `region` for `objective`
+/// (a tour for the tour objectives), visiting no pixel more than `max_coverage` times when
+/// set, found before `stop_after` (half of the solve's time) when there is a limit.
+#[derive(Clone, Copy, Debug)]
+pub struct StartRequest<'a> {
+    pub region: &'a Region,
+    pub objective: Objective,
+    pub max_coverage: Option<u32>,
+    /// Start no further work after this instant.
+    pub stop_after: Option<std::time::Instant>,
+}
+
+/// A source of warm starts (see [`ExactOptions::starts`]).
+pub type StartFn = fn(&StartRequest<'_>) -> Option<CycleCover>;
 
 impl Default for ExactOptions {
     fn default() -> Self {
@@ -242,7 +259,7 @@ impl Default for ExactOptions {
             verbose: false,
             warm_start: None,
             max_coverage: None,
-            start_from_approximations: true,
+            starts: None,
         }
     }
 }
@@ -391,9 +408,18 @@ pub(crate) fn certify(
 pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> ExactResult {
     let deadline = Deadline::new(opts.time_limit);
     let started;
-    let opts = if opts.warm_start.is_none() && opts.start_from_approximations {
+    let opts = if let (None, Some(source)) = (&opts.warm_start, opts.starts) {
+        let request = StartRequest {
+            region,
+            objective,
+            max_coverage: opts.max_coverage,
+            stop_after: opts.time_limit.and_then(|t| {
+                let half = std::time::Duration::try_from_secs_f64(t / 2.0).ok()?;
+                std::time::Instant::now().checked_add(half)
+            }),
+        };
         started = ExactOptions {
-            warm_start: approximate_start(region, objective, opts.max_coverage, &deadline),
+            warm_start: source(&request),
             ..opts.clone()
         };
         &started
@@ -521,67 +547,6 @@ fn assemble(
 
 fn not_connected(region: &Region) -> bool {
     topology::components(region).count > 1
-}
-
-/// Above this many pixels, [`approximate_start`] leaves out [`MATCHING_ALGORITHMS`].
-const START_MATCHING_LIMIT: usize = 20_000;
-
-/// The algorithms built on an endpoint matching.
-const MATCHING_ALGORITHMS: [&str; 4] = ["strips-matching", "thin-cc", "thin-merge", "boundary-cc"];
-
-/// The cheapest cover the registered milling approximation algorithms find for `objective`
-/// (each output recounted by the checker; a tour for the tour objectives; at most
-/// `max_coverage` visits per pixel when set), to start the exact solver from: the 2016 CPLEX
-/// study of minimum-turn covers fed its approximations as start solutions, and a good
-/// incumbent from the start lets reduced-cost fixing remove more of the model. `None` for
-/// `lawn-tsp` or when no algorithm gives one.
-///
-/// No algorithm starts once half of the solve's time is spent, and above
-/// [`START_MATCHING_LIMIT`] pixels the algorithms built on an endpoint matching (whose time
-/// grows fastest: minutes at 10^6 pixels) are left out.
-fn approximate_start(
-    region: &Region,
-    objective: Objective,
-    max_coverage: Option<u32>,
-    deadline: &Deadline,
-) -> Option<CycleCover> {
-    if objective == Objective::LawnTsp || region.is_empty() {
-        return None;
-    }
-    let cost = |rep: &checker::Report| match objective {
-        Objective::Length => rep.length,
-        Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
-            rep.length + u64::from(turn_cost) * rep.turns
-        }
-        _ => rep.turns,
-    };
-    let options = crate::algorithms::Options::default();
-    let mut best: Option<(u64, CycleCover)> = None;
-    for algorithm in crate::algorithms::REGISTRY {
-        let milling = algorithm
-            .objectives
-            .iter()
-            .any(|o| o.mode() == Mode::Milling);
-        let half_spent = deadline.remaining().is_some_and(|r| r < deadline.elapsed());
-        let slow =
-            region.len() > START_MATCHING_LIMIT && MATCHING_ALGORITHMS.contains(&algorithm.name);
-        if !milling || half_spent || slow || (algorithm.precondition)(region).is_err() {
-            continue;
-        }
-        // An algorithm that fails or panics only gives no start.
-        let run = std::panic::catch_unwind(|| (algorithm.run)(region, &options));
-        let Ok(Ok(solution)) = run else { continue };
-        for output in solution.outputs {
-            let rep = checker::check(region, &output.cover, Mode::Milling);
-            let fits = rep.valid
-                && (!objective.is_tour() || rep.cycles == 1)
-                && max_coverage.is_none_or(|cap| rep.max_coverage <= cap);
-            if fits && best.as_ref().is_none_or(|(c, _)| cost(&rep) < *c) {
-                best = Some((cost(&rep), output.cover));
-            }
-        }
-    }
-    best.map(|(_, cover)| cover)
 }
 
 /// A warm-start cover accepted by the checker for this objective.

@@ -805,7 +805,7 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
         let options = ExactOptions {
             time_limit: Some(e.time_limit),
             threads: 1,
-            ..ExactOptions::default()
+            ..crate::warm_start::exact_options()
         };
         Ok(exact::solve(region, objective, &options))
     });

@@ -110,7 +110,7 @@ pub fn exact_incumbent(
             verbose: false,
             warm_start: None,
             max_coverage: None,
-            start_from_approximations: true,
+            starts: Some(crate::warm_start::from_registry),
         },
     );
     let proven = res.status == exact::Status::Optimal;

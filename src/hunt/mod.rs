@@ -487,7 +487,7 @@ impl OptCache {
                 verbose: false,
                 warm_start: None,
                 max_coverage: None,
-                start_from_approximations: true,
+                starts: Some(crate::warm_start::from_registry),
             },
         );
         let opt = (res.status == exact::Status::Optimal)
@@ -1009,7 +1009,7 @@ pub fn hunt(
                         verbose: false,
                         warm_start: None,
                         max_coverage: None,
-                        start_from_approximations: true,
+                        starts: Some(crate::warm_start::from_registry),
                     },
                 );
                 f.optimal_walk = res.cover;

@@ -292,7 +292,7 @@ fn exact_solve(
 ) -> (Option<u64>, u64, Option<CycleCover>) {
     let opts = ExactOptions {
         time_limit: Some(time_limit),
-        ..ExactOptions::default()
+        ..crate::warm_start::exact_options()
     };
     let r = exact::solve(region, objective, &opts);
     let value = if r.status == Status::Optimal && r.valid {

@@ -95,7 +95,7 @@ pub struct Score {
 pub fn exact_options(time_limit: f64) -> ExactOptions {
     ExactOptions {
         time_limit: Some(time_limit),
-        ..ExactOptions::default()
+        ..mowmill::warm_start::exact_options()
     }
 }
 
