@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times the core at scale: generating and analysing 10^6-pixel regions (README, "Measured").
+# Times the core at scale: generating and analysing 10^6-pixel regions (docs/measured.md, "Core").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Draws the figures of issue 17 (discrete milling) into results/figures/: a tour on 50
+# Draws the discrete-milling figures into results/figures/: a tour on 50
 # hexagonal cells (the star cover's, and a minimum-turn one) and on 35 voxels with a cavity,
 # drawn one panel per z-layer (the minimum-turn tour, and the star cover's).
 set -euo pipefail

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Draws the figures of issue 18 (orthogonal polygons with arbitrary coordinates) into
+# Draws the figures of orthogonal polygons with arbitrary coordinates into
 # results/figures/: a generated non-integral polygon, and for each algorithm its tour, the area
 # the cutter sweeps along it and δB (the contour of the centre positions), checked exactly
 # (the caption is the checker's verdict). One figure per algorithm: ortho-ALGO.svg.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The soak (issue 30, docs/soak.md): every reader and every command fed mutated inputs under a
+# The soak (docs/soak.md): every reader and every command fed mutated inputs under a
 # memory cap (2 GiB of address space) and a timeout (20 s a call); fails on a panic, an abort or
 # signal, a hang, or an exit 0 with a result the independent scripts/tour_check.py disagrees with.
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# README's speed table: every registered algorithm, end to end (`mowmill solve`: parse, run,
+# docs/measured.md's speed table: every registered algorithm, end to end (`mowmill solve`: parse, run,
 # merge, the checker's recount), on generated regions of 10^4, 10^5 and 10^6 pixels, one run
 # each, one thread. Prints a markdown table: wall seconds and peak memory per size, or what
 # stopped the run ("> T s" past the timeout, "exit K" for a failure).

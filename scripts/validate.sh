@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The validate suite (issues 12 and 29): every registered algorithm against exact optima, best
+# The validate suite: every registered algorithm against exact optima, best
 # checked walks and proven bounds, on every model, and ONE claims table over all of it.
 #   scripts/validate.sh [OUT]      (default OUT: results/validate; about an hour on 2 cores)
 #

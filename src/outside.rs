@@ -23,7 +23,7 @@
 //!   (with its process group) and becomes an error row. A missing, oversized or malformed
 //!   tour file, or one that is not a regular file, is an error row; a walk the checker
 //!   rejects is a row with `valid = false`.
-//! - **Confinement** (issue 30): a private scratch folder per run, a memory limit
+//! - **Confinement**: a private scratch folder per run, a memory limit
 //!   (`memory_limit`, RLIMIT_AS), stdout and stderr drained and capped, and the program's
 //!   process group (and every process carrying its `MOWMILL_RUN` token) killed on every way
 //!   out of a run and when mowmill is killed: see the `confine` module and docs/outside.md.
@@ -1033,7 +1033,7 @@ mod confine {
 mod tests {
     use super::*;
 
-    /// Probes item 4 of issue 30: a stream of any length keeps its first and last
+    /// Captured output is capped: a stream of any length keeps its first and last
     /// CAPTURE_KEEP bytes and counts the rest (it was kept whole).
     #[test]
     fn a_capture_keeps_the_ends_of_a_flood() {
@@ -1055,7 +1055,7 @@ mod tests {
         );
     }
 
-    /// Probes item 3 of issue 30: memory limits as written in a config or on the command line.
+    /// Memory limits as written in a config or on the command line.
     #[test]
     fn memory_limits_read_as_bytes() {
         assert_eq!(parse_memory_limit("4 GiB"), Ok(Some(4 << 30)));

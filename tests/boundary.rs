@@ -217,7 +217,9 @@ fn boundary_cover_is_proven_beyond_the_complete_limit() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Certificates against the exact solver (issue 12, defect 2 and item 5).
+// Certificates against the exact solver: a cover certified optimal is optimal (a still cycle
+// of two one-pixel links priced 2 but counted 4 once made it 2 turns too many); several
+// components and `--coverage4` are accepted or refused explicitly, never silently.
 
 use mowmill::algorithms::{self, Options, Solution};
 use mowmill::exact::{ExactOptions, Objective, Status, solve};
@@ -259,9 +261,9 @@ fn turns(r: &Region, sol: &Solution) -> (u64, Option<u64>) {
     (cc.turns, tour)
 }
 
-/// Defect 2: a staircase of 3 + 2 + 1 pixels. Its middle step has a one-pixel horizontal and a
-/// one-pixel vertical link; the old matching closed them into a still walk priced 2 (counted 4)
-/// and reported 10 turns, certified, against an optimum of 8.
+/// A former defect: a staircase of 3 + 2 + 1 pixels. Its middle step has a one-pixel horizontal
+/// and a one-pixel vertical link; the old matching closed them into a still walk priced 2
+/// (counted 4) and reported 10 turns, certified, against an optimum of 8.
 #[test]
 fn staircase_cover_is_optimal() {
     let r = Region::from_ascii("#..\n##.\n###\n");
@@ -274,7 +276,7 @@ fn staircase_cover_is_optimal() {
     assert_eq!(sol.certificates["w_m"], 8);
 }
 
-/// Defect 2 on thin pockets: short arms next to crossings (one-pixel arms are pixels with a
+/// The same defect on thin pockets: short arms next to crossings (one-pixel arms are pixels with a
 /// one-pixel link of each orientation). thin-cc equals the exact optimum, thin-merge stays
 /// within 4/3 of the optimal tour.
 #[test]
@@ -383,7 +385,7 @@ fn small_thin(rng: &mut Rng) -> Option<Region> {
     (!r.is_empty()).then_some(r)
 }
 
-/// Property (defect 2, issue 12 item 3): on 300 small random boundary-only regions (several
+/// Property (certificates are proofs): on 300 small random boundary-only regions (several
 /// components allowed) boundary-cc's cover equals the exact cc-turns optimum whenever
 /// `matching_optimal = 1`; on 300 small random thin pockets thin-cc's cover equals it too and
 /// thin-merge's tour is within 4/3 of the exact tour optimum. Unproven exact solves are counted
@@ -461,7 +463,7 @@ fn has_one_pixel_pair(r: &Region) -> bool {
     })
 }
 
-/// Item 5: boundary-cc outputs a cycle cover, so it accepts a region of several components
+/// boundary-cc outputs a cycle cover, so it accepts a region of several components
 /// (one cover per component); thin-cc and thin-merge also output a tour and refuse, saying so.
 #[test]
 fn disconnected_regions() {
@@ -480,7 +482,7 @@ fn disconnected_regions() {
     }
 }
 
-/// Item 5: `--coverage4` is refused by boundary-cc (no tour to rewrite) and honoured by
+/// `--coverage4` is refused by boundary-cc (no tour to rewrite) and honoured by
 /// thin-euler (its certificate `coverage4_stuck` says how many pixels stay above 4).
 #[test]
 fn coverage4_is_never_silently_ignored() {

@@ -343,7 +343,7 @@ fn draw_writes_svg_and_png() {
     assert_eq!(out.status.code(), Some(2));
 }
 
-/// Issue 12: a tour objective on a disconnected region is bad input (exit 2 with the reason),
+/// A tour objective on a disconnected region is bad input (exit 2 with the reason),
 /// not a solver failure (exit 1); the cycle-cover objective accepts it.
 #[test]
 fn exact_refuses_tours_of_disconnected_regions_with_exit_2() {
@@ -367,7 +367,7 @@ fn exact_refuses_tours_of_disconnected_regions_with_exit_2() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Issue 12: lawn-box's factor is 3α + (3/10)α with α = 3/2 (the paper derives θ = 3/10 for
+/// lawn-box's factor is 3α + (3/10)α with α = 3/2 (the paper derives θ = 3/10 for
 /// α = 1), i.e. 99/20, not 24/5.
 #[test]
 fn lawn_box_registers_99_over_20() {
@@ -580,7 +580,8 @@ fn readme_is_one_screen_and_links_resolve() {
         opening.lines().count() <= 60,
         "README.md's opening is longer than a screen"
     );
-    // After it: the hunt's figures and the speed and eroded tables that issue 16 asks for.
+    // After it: the hunt's paragraph and the generated findings (the measured tables are in
+    // docs/measured.md).
     assert!(readme.lines().count() <= 170, "README.md is too long");
     let readme = opening;
     for command in [

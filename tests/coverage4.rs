@@ -273,11 +273,11 @@ fn generated_families_are_brought_to_four() {
     assert_eq!(over_after, 0);
 }
 
-/// A former finding, kept as a regression (issue 7's tight run): on the Fig. 5 donut k = 9,
-/// L = 27 the naive strips-matching tour covers a pixel 13 times, and the local search used to
-/// stop with one pixel at 5 visits (4 vertical passes crossed by a horizontal link whose
-/// pixels only it covers). Pair drops now remove doubled stretches first (and, without them,
-/// a chain of link slides also reaches 4).
+/// A former finding, kept as a regression (from a run of the tight families): on the Fig. 5
+/// donut k = 9, L = 27 the naive strips-matching tour covers a pixel 13 times, and the local
+/// search used to stop with one pixel at 5 visits (4 vertical passes crossed by a horizontal link
+/// whose pixels only it covers). Pair drops now remove doubled stretches first (and, without
+/// them, a chain of link slides also reaches 4).
 #[test]
 fn donut_k9_tour_is_brought_to_four() {
     let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("instances/regressions");

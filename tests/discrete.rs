@@ -1,4 +1,4 @@
-//! Discrete milling at the command line (issue 17): `gen` of the new families, `info`,
+//! Discrete milling at the command line: `gen` of the new families, `info`,
 //! `solve --algo star-cover`, `exact` and `validate` on their files, bad input, and the grid
 //! special case through both models.
 
@@ -128,8 +128,8 @@ fn a_grid_region_gives_the_same_optima_and_star_cover_through_both_models() {
     assert_eq!(a["length"], b["cc"]["length"]);
 }
 
-/// The structured families (issue 29): `gen` writes them without a seed (one given changes
-/// nothing), the star cover solves them, and bad parameters exit 2.
+/// The structured discrete families (hubs on a path, collinear bridges): `gen` writes them without
+/// a seed (one given changes nothing), the star cover solves them, and bad parameters exit 2.
 #[test]
 fn structured_families_generate_without_a_seed_solve_and_refuse_bad_k() {
     let dir = temp_dir("discrete-structured");

@@ -522,10 +522,10 @@ fn floor(csv: &Csv, row: &[String]) -> u64 {
         .unwrap_or(0)
 }
 
-/// Probes item 1 and 2 of issue 30: a value halved or zeroed (with its own count and its
-/// ratios kept consistent, so only the bound can tell) was reported as an improvement; it is
-/// an invalid result, and so is one whose bound and optimum were lowered with it (the
-/// baseline's bounds of the same instance still hold).
+/// A row below its own proven bound is not an improvement: a value halved or zeroed (with its own
+/// count and its ratios kept consistent, so only the bound can tell) was reported as an
+/// improvement; it is an invalid result, and so is one whose bound and optimum were lowered with it
+/// (the baseline's bounds of the same instance still hold).
 #[test]
 fn halved_or_zeroed_values_are_invalid_not_improvements() {
     for (tag, lower_bounds_too) in [("halved", false), ("halved-lb", true)] {

@@ -100,7 +100,8 @@ fn frozen_instances() {
         compactness: Some(0.3),
         ..params(Family::Thin, 3)
     };
-    // The hard-shape families (issue 12), frozen from their first version.
+    // The hard-shape families (boundary-only, thin with arms, pinholes), frozen from their first
+    // version.
     let boundary = GenParams {
         n: Some(24),
         style: Some(Style::Blob),

@@ -1,5 +1,6 @@
-//! Hostile inputs of issue 30: each must end with a clear error and exit code 2 (or 1 for an
-//! invalid walk), never a wrapped coordinate, a panic, an abort, a hang or a huge allocation.
+//! Hostile inputs (malformed, huge or wrapping files of every format): each must end with a clear
+//! error and exit code 2 (or 1 for an invalid walk), never a wrapped coordinate, a panic, an abort,
+//! a hang or a huge allocation.
 
 mod common;
 

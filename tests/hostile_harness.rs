@@ -1,4 +1,4 @@
-//! Results folders, manifests and shards are data written by others (issue 30): a resume never
+//! Results folders, manifests and shards are data written by others: a resume never
 //! runs a command it took from a results folder, merge never overwrites a run and checks the
 //! shards' rows themselves against their config, a changed `[[files]]` folder is not resumed,
 //! duplicates in configs are refused, rows that failed because of the machine are run again,

@@ -1,4 +1,4 @@
-//! Outside programs that misbehave on purpose (issue 30, "runaway outside programs"): a tour
+//! Outside programs that misbehave on purpose (runaway outside programs): a tour
 //! file that is a FIFO or a link to /dev/zero, children that outlive the run or escape the
 //! process group with `setsid`, a kill of `bench` while a program runs, a memory hog, a flood
 //! on stderr, links planted where the scratch folder writes. Each test checks that mowmill

@@ -1,4 +1,4 @@
-//! Hostile `results.csv` files (issue 30): a row below its own proven bound or whose value is
+//! Hostile `results.csv` files: a row below its own proven bound or whose value is
 //! not its own count is an invalid result in `bench`, `claims` and `gate` (exit 1), never an
 //! improvement; an empty `results.csv`, a directory or a link to a device is refused by
 //! `claims`, `plot` and `gate` (exit 2) with a message naming the file.

@@ -1,4 +1,4 @@
-//! Long runs lose nothing (issue 14): resume continues with the config recorded as given and
+//! Long runs lose nothing: resume continues with the config recorded as given and
 //! the recorded shard, a kill loses no row, one run at a time per output directory, merge only
 //! joins the complete, finished shards of one config, invalid Slurm variables and `--jobs`
 //! values are refused.

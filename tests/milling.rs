@@ -1,5 +1,5 @@
-//! Integration tests of the min-length milling algorithms of *Lawn mowing and milling*
-//! (issue 4): every output passes the independent checker and meets its proven bound.
+//! Integration tests of the min-length milling algorithms of *Lawn mowing and milling*:
+//! every output passes the independent checker and meets its proven bound.
 
 use mowmill::algorithms::{self, Objective, Options, Solution};
 use mowmill::checker::{self, Mode};

@@ -1,6 +1,6 @@
-//! milling25 (Theorem 4 of *Lawn mowing and milling*, grid reading): the parity repair of
-//! issue 12 (defect 1), the steps of the proof of its registered guarantee, and a random
-//! sample against proven optima.
+//! milling25 (Theorem 4 of *Lawn mowing and milling*, grid reading): the parity repair of the lone
+//! strip ends (a minimum-weight matching), the steps of the proof of its registered guarantee, and
+//! a random sample against proven optima.
 
 use mowmill::algorithms::{self, Measured, Options, Solution};
 use mowmill::checker::{self, Mode};
@@ -117,7 +117,7 @@ fn u_shape(w: i32, gap: i32, base: i32, arm: i32, pitch: i32) -> Region {
     Region::from_pixels(pixels).unwrap()
 }
 
-/// Issue 12, defect 1: lone strip ends paired in contour-discovery order were joined across
+/// A former defect: lone strip ends paired in contour-discovery order were joined across
 /// the U (length 1010 = 2.66 OPT here); a minimum-weight perfect matching under walking
 /// distance pairs neighbouring holes of the same arm.
 #[test]

@@ -1,6 +1,6 @@
-//! Corollary 4 (issue 18): every output on generated orthogonal polygons passes the exact
-//! checker, the stated length bound holds, and the lower bounds never exceed exact optima on
-//! small integral regions.
+//! Corollary 4 (orthogonal polygons with arbitrary coordinates): every output on generated
+//! orthogonal polygons passes the exact checker, the stated length bound holds, and the lower
+//! bounds never exceed exact optima on small integral regions.
 
 use mowmill::exact::{self, Status};
 use mowmill::generate::{Family, GenParams, generate};

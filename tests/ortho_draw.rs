@@ -1,4 +1,4 @@
-//! Figures of orthogonal polygons with non-integral coordinates (issue 18): the SVG of a
+//! Figures of orthogonal polygons with non-integral coordinates: the SVG of a
 //! polygon with a tour over it, the area it sweeps and δB, and `mowmill draw` on a `.wkt`.
 
 mod common;

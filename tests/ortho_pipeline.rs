@@ -1,4 +1,4 @@
-//! Orthogonal polygons with arbitrary coordinates in the one pipeline (issue 18): the registry's
+//! Orthogonal polygons with arbitrary coordinates in the one pipeline: the registry's
 //! ortho runs through `evaluate_ortho` (exact lengths over a common denominator), the integral
 //! special case through the grid pipeline, the bench families and files, and the claims table.
 

@@ -1,7 +1,7 @@
-//! `strips-contour` (our reading of Theorem 5.7 of *Optimal covering tours with turn costs*,
-//! issue 18): every output on generated orthogonal polygons passes the exact checker, the
-//! proven decomposition bounds of the module docs hold, the corner lower bound never exceeds
-//! an exact optimum, and infeasible polygons are refused with the reason.
+//! `strips-contour` (our reading of Theorem 5.7 of *Optimal covering tours with turn costs* on
+//! orthogonal polygons with arbitrary coordinates): every output on generated orthogonal polygons
+//! passes the exact checker, the proven decomposition bounds of the module docs hold, the corner
+//! lower bound never exceeds an exact optimum, and infeasible polygons are refused with the reason.
 //!
 //! Run with `--nocapture` for the measured ratios to the corner lower bound (and to exact
 //! optima on small integral regions).

@@ -1,4 +1,4 @@
-//! The soak's library half (issue 30, `docs/soak.md`): every reader is fed random bytes and
+//! The soak's library half (`docs/soak.md`): every reader is fed random bytes and
 //! mutations of the committed fixtures; it must return `Ok` or an `Err` with a message, never
 //! panic. 64 cases per reader by default; `PROPTEST_CASES` raises it (`scripts/soak.sh` does).
 

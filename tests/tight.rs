@@ -1,4 +1,4 @@
-//! The tight families of issue 7: the donut for k = 2..6 (L = 3k and 4k), the band for
+//! The papers' tight families: the donut for k = 2..6 (L = 3k and 4k), the band for
 //! k = 1..10 and thin43 for small s, asserted against the exact solver or closed forms (the
 //! ones the table relies on), and the `tight` / `claims` commands end to end.
 

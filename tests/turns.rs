@@ -1,5 +1,5 @@
-//! Integration tests of the min-turn algorithms of *Optimal covering tours with turn costs*
-//! (issue 5): every output passes the independent checker; every step of each proof that can
+//! Integration tests of the min-turn algorithms of *Optimal covering tours with turn costs*:
+//! every output passes the independent checker; every step of each proof that can
 //! be checked against the strip-cover lower bound s holds; on small regions every guarantee
 //! holds against the exact optima, and `thin-cc` equals the exact cycle-cover optimum.
 

@@ -391,7 +391,7 @@ pub(crate) fn certify(
 ///
 /// # Complexity
 /// Exponential in the worst case (all six problems are NP-hard); see the `exact_scaling`
-/// benchmark and the README for measured times.
+/// benchmark and docs/measured.md and docs/exact.md for measured times.
 ///
 /// # Guarantee
 /// `status == optimal` implies `value` is the optimum; otherwise `lower_bound <= OPT <= value`.

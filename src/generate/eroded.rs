@@ -1,6 +1,6 @@
 //! `eroded`: a full square eroded pixel by pixel down to exactly N pixels, keeping the region
 //! 4-connected (the instances of a published CPLEX study of minimum-turn cycle covers and
-//! tours, a Master's thesis of 2016, issue 16).
+//! tours, a Master's thesis of 2016).
 //!
 //! **What the study says.** Instances are a full square of side about 3√N from which pixels are
 //! deleted at random, more likely where neighbours are already missing, while keeping the

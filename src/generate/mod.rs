@@ -25,12 +25,12 @@
 //! | `random-holed` | `n`, `holes` H (1), `no_cut` (false), `style`, `compactness` | exactly N pixels, 4-connected, exactly H holes of varied sizes and shapes; with `no_cut`, no local cut vertex (Definition 6; the precondition of Theorem 7 of the milling paper). |
 //! | `thin` | `n`, `holes` H (0), `compactness` | a thin pocket (no 2 × 2 block of pixels, turn-cost paper, Section 5.5): width-1 corridors, 4-connected, exactly N pixels and exactly H holes (independent cycles of corridors). |
 //! | `band` | `k` | the diagonal band B_k, the tight class of the 6/5 bound of Theorem 5 of the milling paper: pixels (x, y) with 0 ≤ x, y ≤ k + 1 and \|x − y\| ≤ 2 (k = 1 is the 3 × 3 square); N = 5k + 4, no holes, no cut vertices. |
-//! | `thin43` | `s` | the 4/3 thin example of the turn-cost paper (Fig. 6, Theorem 5.9), as reconstructed in issue 7: width-1 corridors on rings and paths with even vertices (gadgets X1–X4, and Y_j, R_j for j = 1..s); N = 222 + 77s, thin. |
+//! | `thin43` | `s` | the 4/3 thin example of the turn-cost paper (Fig. 6, Theorem 5.9), as reconstructed from the proof: width-1 corridors on rings and paths with even vertices (gadgets X1–X4, and Y_j, R_j for j = 1..s); N = 222 + 77s, thin. |
 //! | `lawn-scattered` | `n`, `parts` P (3), `style`, `compactness` | grass in exactly P components, N pixels in all; each component is a random hole-free shape, and components are at least one empty cell apart in all 8 directions; no holes. |
 //! | `boundary` | `n`, `style`, `compactness` | exactly N pixels, 4-connected, every pixel a boundary pixel (an empty 4-neighbour, [`topology::is_boundary`]; the precondition of `boundary-cc`), holes any number: a shape of the style whose inner pixels lose themselves (pinholes, notches) or a neighbour (stairs, one-pixel links and one-pixel-thick parts). Fallback: two rows. |
 //! | `thin-arms` | `n`, `holes` H (0), `compactness` | a thin pocket grown pixel by pixel (corridors at any spacing, stairs, crossings with arms of one or two pixels; the more compact, the more branches), exactly N pixels and H holes. Fallback: the `thin` fallback. |
 //! | `pinholes` | `n`, `holes` H (required), `style`, `compactness` | exactly N pixels, 4-connected, exactly H holes of one cell each, often in columns or rows 2–4 cells apart (hole contours tangent to the strips between them), walls down to one pixel. Fallback: the `random-holed` staircase. |
-//! | `eroded` | `n` (at most 10⁶), `style` (`dense` or `sparse`; `mixed`, the default, draws one) | the instances of a published CPLEX study (issue 16): the ⌈3√N⌉ square eroded at random, pixel by pixel, to exactly N pixels, 4-connected, any number of holes (module `eroded`). Fallback: the staircase of full rows. |
+//! | `eroded` | `n` (at most 10⁶), `style` (`dense` or `sparse`; `mixed`, the default, draws one) | the instances of a published CPLEX study (a Master's thesis of 2016): the ⌈3√N⌉ square eroded at random, pixel by pixel, to exactly N pixels, 4-connected, any number of holes (module `eroded`). Fallback: the staircase of full rows. |
 //!
 //! # Shape styles
 //!
@@ -80,8 +80,8 @@
 //! lattice edges (each closes one bounded face, one hole) and at most one dead-end stub pixel
 //! to reach N exactly.
 //!
-//! The hard-shape families (issue 12: the shapes the certificates of `boundary-cc`,
-//! `thin-cc` and `milling25` find hardest) reuse this machinery. `boundary` draws a shape of
+//! The hard-shape families (the shapes the certificates of `boundary-cc`, `thin-cc` and
+//! `milling25` find hardest) reuse this machinery. `boundary` draws a shape of
 //! the style with about 4N/3 pixels; each pixel with four neighbours, in random order, then
 //! loses itself or one of its neighbours (the pixel itself with a probability drawn per
 //! instance between 0.2 and 0.8), the first of these whose removal leaves its 8-ring in one
@@ -324,8 +324,8 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
     Ok((GridFile::with_meta(region, &meta), provenance))
 }
 
-/// Whether `family` (the `family` column of a result row) is one of the structured families of
-/// issue 29: the shapes the papers' proofs find hardest, built to stress them (docs/claims.md,
+/// Whether `family` (the `family` column of a result row) is one of the structured families:
+/// the shapes the papers' proofs find hardest, built to stress them (docs/claims.md,
 /// "Structured families"). A claim "holds" only when some of its decided instances are of one.
 /// Grid families say so in the registry ([`FamilyInfo::structured`]); the discrete and
 /// orthogonal ones are the families built for a proof's hard case: slivers and narrow features

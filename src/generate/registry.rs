@@ -317,7 +317,7 @@ pub struct FamilyInfo {
     pub required: &'static [Param],
     /// Whether the instance depends on the seed (`mowmill gen` then requires `--seed`).
     pub random: bool,
-    /// A structured family (issue 29): a shape the papers' proofs find hardest, built to stress
+    /// A structured family: a shape the papers' proofs find hardest, built to stress
     /// them; a claim "holds" only with decided instances of one (docs/claims.md).
     pub structured: bool,
 }

@@ -81,7 +81,7 @@ fn hole_lattice_staggered_has_no_full_block_and_the_documented_counts() {
     // The lead's measured instances: 41 × 41 (N = 1271, h = 390), 31 × 31 (N = 728).
     assert_eq!(counts(&lattice(1271, Pattern::Staggered)), (1271, 390));
     assert_eq!(counts(&lattice(728, Pattern::Staggered)).0, 728);
-    // The 11 × 11 example of issue 29, row by row from the top.
+    // The 11 × 11 staggered lattice (N = 93), row by row from the top.
     let f = gen_connected(&lattice(93, Pattern::Staggered));
     let text = f.to_text().unwrap();
     let rows: Vec<&str> = text.lines().filter(|l| !l.starts_with(';')).collect();

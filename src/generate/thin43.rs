@@ -3,8 +3,9 @@
 use crate::region::Pixel;
 
 /// The gadgets of `thin43` with parameter s, by name (X1, Y1, R1, …, X2, X3, X4): the lattice
-/// points on each gadget's polylines of issue 7 (rings are closed rectangles given by two
-/// corners; all vertices have even coordinates). The family's pixels are their union.
+/// points on each gadget's polylines as reconstructed from the paper's proof (rings are closed
+/// rectangles given by two corners; all vertices have even coordinates). The family's pixels are
+/// their union.
 pub fn thin43_gadgets(s: usize) -> Vec<(String, Vec<Pixel>)> {
     let u = 8 * s as i32;
     let ring = |a: i32, b: i32, c: i32, d: i32| vec![(a, b), (c, b), (c, d), (a, d), (a, b)];

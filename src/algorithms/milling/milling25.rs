@@ -37,7 +37,7 @@
 //!   minimum-weight perfect matching under the walking distance in the region (breadth-first
 //!   search distances, blossom algorithm of rustworkx-core), each pair joined by a shortest
 //!   path (certificate `l_repair`, included in `l_match`). Pairing them in contour-discovery
-//!   order instead (the code before issue 12) walked around a U for every pair of holes at the
+//!   order instead (as an earlier version did) walked around a U for every pair of holes at the
 //!   same height in its two arms: 2.66 · OPT at N = 378 (`tests/milling25.rs`), unbounded.
 //! - **"Clearly, this graph is connected" fails**: a hole whose contour no strip reaches (every
 //!   pixel between it and the other boundaries lies on a contour, e.g. a 6 × 6 square with a

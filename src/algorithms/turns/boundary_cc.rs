@@ -28,7 +28,7 @@
 //!   both only when one of them has several pixels, which moves, so the walk is one one-pixel
 //!   link joined to itself: priced at least 4, counted 4. (Before this rule, a one-pixel
 //!   horizontal and a one-pixel vertical link at p could close a still walk priced 1 + 1 = 2
-//!   and counted 4: the +2 of issue 12.) `drop_still_duplicates` may only lower the count.
+//!   and counted 4: a certified-optimal cover 2 turns above the optimum.) `drop_still_duplicates` may only lower the count.
 //! - *Every cycle cover C costs at least the minimum.* By Lemma 4.1 (the paper's, with our
 //!   grid reading of shared lines), C's walks can be taken to contain every link, kept or left
 //!   out, as part of a straight stretch, without more turns; a one-pixel link at p is contained
