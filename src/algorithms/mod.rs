@@ -43,7 +43,7 @@ pub(crate) mod walks;
 pub(crate) mod lawn;
 mod milling;
 pub(crate) use milling::{holes1325, milling25, tsp65, two_opt as milling_two_opt};
-// Optimal covering tours with turn costs (issue 5).
+// Optimal covering tours with turn costs.
 #[doc(hidden)]
 pub mod matching;
 pub mod theorems;
@@ -847,7 +847,7 @@ pub struct Algorithm {
     /// Its run on discrete instances, for the algorithms of discrete milling (they run on grid
     /// regions through [`Discrete::from_region`]); `None` for the grid-only ones.
     pub discrete: Option<DiscreteRun>,
-    /// Its run on orthogonal polygons with arbitrary coordinates (issue 18); `None` for the
+    /// Its run on orthogonal polygons with arbitrary coordinates; `None` for the
     /// others.
     pub ortho: Option<OrthoRun>,
 }
@@ -893,7 +893,7 @@ pub static REGISTRY: &[Algorithm] = &[
     lawn::LAWN_CHRISTOFIDES,
     lawn::LAWN_TWO_OPT,
     lawn::LAWN_BOX,
-    // Turn-cost paper (issue 5).
+    // Turn-cost paper.
     star_cover::ALGORITHM,
     strips_double::ALGORITHM,
     strips_matching::ALGORITHM,
@@ -901,9 +901,9 @@ pub static REGISTRY: &[Algorithm] = &[
     thin::ALGORITHM_CC,
     thin::ALGORITHM_MERGE,
     thin_euler::ALGORITHM,
-    // Discrete milling, Table 1's rows Discrete and Restricted-direction (issue 17).
+    // Discrete milling, Table 1's rows Discrete and Restricted-direction.
     crate::discrete::star_cover::ALGORITHM,
-    // Orthogonal polygons with arbitrary coordinates, Table 1's row Orthogonal (issue 18).
+    // Orthogonal polygons with arbitrary coordinates, Table 1's row Orthogonal.
     crate::ortho::COROLLARY4,
     crate::ortho::STRIPS_CONTOUR,
     crate::ortho::STAR_CONTOUR,

@@ -1,5 +1,5 @@
-//! Pictures of a discrete instance and closed walks over it, as SVG or PNG (the figures of
-//! issue 17), in the conventions of [`crate::draw`]: title above, caption below, the same
+//! Pictures of a discrete instance and closed walks over it, as SVG or PNG (the discrete
+//! milling figures), in the conventions of [`crate::draw`]: title above, caption below, the same
 //! palette, fills and marks, SVG or PNG by the extension of the output file.
 //!
 //! - **Cells.** When the coordinates are those of a lattice, each vertex is drawn as its cell:

@@ -1,7 +1,7 @@
 //! Deterministic random discrete instances: voxel regions (with or without cavities),
 //! hexagonal-cell and honeycomb regions, and plane graphs with nearly straight pairs; and two
 //! structured families without randomness, the shapes of the paper's failing statements
-//! (issue 29): hubs on a straight path ([`hub_path`], Theorem 5.1's averaged bound) and
+//! (the shapes the proofs find hardest): hubs on a straight path ([`hub_path`], Theorem 5.1's averaged bound) and
 //! straight paths joined by bridges ([`collinear_bridges`], Theorem 4.2's t + 2c − 2).
 //!
 //! Every generator is a function of its size, its seed and its parameters only: the same
@@ -35,7 +35,7 @@ pub const FAMILIES: &[&str] = &[
     "collinear-bridges",
 ];
 
-/// The structured discrete families (issue 29): deterministic, parameters `n` and `k`, no seed
+/// The structured discrete families: deterministic, parameters `n` and `k`, no seed
 /// (one given is ignored). [`crate::generate::is_structured`] counts them as structured.
 pub const STRUCTURED: &[&str] = &["hub-path", "collinear-bridges"];
 

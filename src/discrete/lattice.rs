@@ -18,7 +18,7 @@
 //!
 //! # Which lattice regions
 //!
-//! Issue 17 asks for "regions of the triangular and hexagonal lattices (d = 3 in the plane)";
+//! Discrete milling asks for "regions of the triangular and hexagonal lattices (d = 3 in the plane)";
 //! the paper names no such family. We read a *triangular-lattice region* as a set of points of
 //! the triangular lattice, i.e. hexagonal cells ([`HexRegion`]), and a *hexagonal-lattice
 //! region* as a set of honeycomb vertices ([`HoneycombRegion`]). The triangular *cells* (the

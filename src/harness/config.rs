@@ -23,7 +23,7 @@
 //! count = 3
 //!
 //! [[family]]
-//! family = "ortho-perturbed"  # orthogonal polygons with arbitrary coordinates (issue 18):
+//! family = "ortho-perturbed"  # orthogonal polygons with arbitrary coordinates:
 //! n = [12, 24]         # ortho-perturbed, ortho-holed, ortho-sliver, ortho-narrow (n); run
 //! count = 3            # by the algorithms with an ortho run (corollary4, strips-contour)
 //!

@@ -147,7 +147,7 @@ pub struct ClaimRow {
     /// The largest value / best checked walk on rows without a proven optimum (a lower bound on
     /// the true ratio), with its instance.
     pub max_ratio_best: String,
-    /// The structured families (issue 29) among the decided instances' families.
+    /// The structured families (the shapes proofs find hardest) among the decided instances' families.
     pub structured_families: String,
     /// The violating rows, for saving findings.
     #[serde(skip)]
@@ -169,8 +169,7 @@ pub const FINDINGS_LISTED: usize = 10;
 /// How many decided instances a "holds" needs (fewer: "holds on few instances (n)").
 pub const HOLDS_MIN_DECIDED: usize = 1000;
 
-/// CSV header of `claims.csv` (a contract for scripts; columns after `verdict` were added by
-/// issue 12, the last four by issue 29).
+/// CSV header of `claims.csv` (a contract for scripts: columns are only ever added at the end).
 pub const CLAIM_COLUMNS: [&str; 23] = [
     "paper",
     "claim",

@@ -1,12 +1,12 @@
 //! The papers' tight families, measured: `mowmill tight`.
 //!
 //! Three families, each over a range of its parameter; for every member, every quantity the
-//! papers (or issue 7's reconstruction) state is set beside what mowmill measures, with how it
+//! papers (or mowmill's reconstruction of the thin example) state is set beside what mowmill measures, with how it
 //! was measured (the exact solver, an explicit construction run through the checker, or a
 //! registered algorithm):
 //! - **donut** (turn-cost paper, Fig. 5): the square annulus of width k and outer side L ≥ 3k.
 //! - **band** B_k (milling paper, the tight class of the 6/5 bound of Theorem 5 and Fig. 16).
-//! - **thin43** (turn-cost paper, Fig. 6 and Theorem 5.9), as reconstructed in issue 7.
+//! - **thin43** (turn-cost paper, Fig. 6 and Theorem 5.9), as mowmill reconstructs it (the paper's figure is lost in extraction).
 //!
 //! A claim is *established* when it is a proven fact about the instance (a theorem, a count, a
 //! value the exact solver or a closed-form bound proves); `tight` exits 1 when a measurement

@@ -1,4 +1,4 @@
-//! The 4/3 thin example of Fig. 6 and Theorem 5.9 of the turn-cost paper (issue 7's
+//! The 4/3 thin example of Fig. 6 and Theorem 5.9 of the turn-cost paper (mowmill's
 //! reconstruction): gadgets whose exact cycle covers merge only at a cost.
 
 use super::*;
@@ -8,7 +8,7 @@ use crate::generate::thin43_gadgets;
 /// The gadget cycle cover of `thin43`: each gadget's own minimum-turn cycle cover (exact
 /// `cc-turns` on the gadget alone), all together. Where a gadget's optimal cover has several
 /// cycles (Y_j: the two rectangles on either side of its chord), they are merged within the
-/// gadget when that is free, so that each gadget is one cycle as in issue 7.
+/// gadget when that is free, so that each gadget is one cycle as in the reconstruction.
 pub(crate) fn thin43_gadget_cover(s: usize, time_limit: f64) -> Result<CycleCover> {
     let mut cycles = Vec::new();
     for (name, pixels) in thin43_gadgets(s) {
