@@ -896,7 +896,7 @@ fn run_on_discrete(
             if pending.is_empty() {
                 continue;
             }
-            let eval = evaluate::evaluate_discrete(algorithm, inst, &options, &pending, &reference);
+            let eval = evaluate::evaluate(subject, inst, &options, &pending, &reference);
             rows.extend(algorithm_rows(
                 Model::Discrete(inst),
                 &base,
@@ -954,7 +954,13 @@ fn run_on_ortho(
             continue;
         }
         let options = algorithms::Options::default();
-        let eval = evaluate::evaluate_ortho(algorithm, polygon, &options, &pending);
+        let eval = evaluate::evaluate(
+            Subject::Registered(algorithm),
+            polygon,
+            &options,
+            &pending,
+            &Reference::default(),
+        );
         rows.extend(algorithm_rows(
             Model::Ortho(polygon),
             &base,
