@@ -5,11 +5,12 @@
 //! and the words a refusal uses. The evaluation ([`crate::evaluate::evaluate`]) and the
 //! benchmark runner are written once over the trait.
 
-use crate::algorithms::{Model, Objective, Options, Solution};
+use crate::algorithms::{Algorithm, Model, Objective, Options, Solution};
 use crate::discrete::Discrete;
 use crate::discrete::format::DiscreteCover;
 use crate::error::{Error, Result};
 use crate::evaluate::{self, Subject};
+use crate::exact;
 use crate::ortho::{Polygon, Rational};
 use crate::region::Region;
 use crate::tour::CycleCover;
@@ -78,6 +79,49 @@ pub trait InstanceModel {
     /// `bound` as an integer in the units of a recount with `unit` (rounded down: still a
     /// bound).
     fn bound_in_units(bound: &Self::Bound, objective: Objective, unit: u64) -> Result<u64>;
+
+    /// Whether the benchmark runs `algorithm` on this instance when a family names none.
+    fn runs_by_default(&self, algorithm: &Algorithm) -> bool;
+
+    /// Whether `algorithm` has a run on this model at all.
+    fn has_run(algorithm: &Algorithm) -> bool;
+
+    /// The error row's message for a name a family lists that has no run on this model
+    /// (`None`: the name is skipped, as the grid runner skips the outside algorithms it runs
+    /// from the config's own list).
+    fn not_run(name: &str) -> Option<String>;
+
+    /// Outside algorithms (`[[algorithm]]` of a config) run on this model.
+    const TAKES_OUTSIDE: bool;
+    /// The config's option sets apply (else every algorithm runs once, with the defaults).
+    const TAKES_OPTIONS: bool;
+    /// The weighted objectives of the config's `[[exact]]` tables are also measured on the
+    /// algorithms' outputs.
+    const MEASURES_WEIGHTED: bool;
+
+    /// Whether the exact solver of this model solves `objective` (`None`: an objective that
+    /// does not parse, whose row then carries the parse error).
+    fn has_exact(&self, objective: Option<exact::Objective>) -> bool;
+
+    /// Solves `objective` exactly with one solver thread within `time_limit` seconds.
+    fn solve_exact(&self, objective: exact::Objective, time_limit: f64) -> Result<ExactOutcome>;
+}
+
+/// An exact solve's outcome, in the shape common to every model.
+#[derive(Clone, Debug)]
+pub struct ExactOutcome {
+    pub value: Option<u64>,
+    pub length: Option<u64>,
+    pub turns: Option<u64>,
+    pub cycles: Option<usize>,
+    pub status: exact::Status,
+    /// A proven lower bound on the optimum.
+    pub lower_bound: u64,
+    /// The checker accepted the walks found; `None` without walks (infeasible, or none by the
+    /// time limit), which is not an invalid result.
+    pub valid: Option<bool>,
+    pub max_coverage: Option<u64>,
+    pub message: Option<String>,
 }
 
 /// The value of `objective` from a recount's length and turns.
@@ -142,6 +186,51 @@ impl InstanceModel for Region {
     fn bound_in_units(bound: &u64, _: Objective, _: u64) -> Result<u64> {
         Ok(*bound)
     }
+
+    fn runs_by_default(&self, algorithm: &Algorithm) -> bool {
+        (algorithm.precondition)(self).is_ok()
+    }
+
+    fn has_run(_: &Algorithm) -> bool {
+        true
+    }
+
+    fn not_run(_: &str) -> Option<String> {
+        None
+    }
+
+    const TAKES_OUTSIDE: bool = true;
+    const TAKES_OPTIONS: bool = true;
+    const MEASURES_WEIGHTED: bool = true;
+
+    fn has_exact(&self, _: Option<exact::Objective>) -> bool {
+        true
+    }
+
+    fn solve_exact(&self, objective: exact::Objective, time_limit: f64) -> Result<ExactOutcome> {
+        let options = exact::ExactOptions {
+            time_limit: Some(time_limit),
+            threads: 1,
+            ..exact::ExactOptions::default()
+        };
+        let res = exact::solve(self, objective, &options);
+        let max_coverage = res.cover.as_ref().map(|cover| {
+            u64::from(
+                crate::checker::check(self, cover, crate::checker::Mode::Milling).max_coverage,
+            )
+        });
+        Ok(ExactOutcome {
+            value: res.value,
+            length: res.length,
+            turns: res.turns,
+            cycles: res.cycles,
+            status: res.status,
+            lower_bound: res.lower_bound,
+            valid: res.cover.as_ref().map(|_| res.valid),
+            max_coverage,
+            message: res.message,
+        })
+    }
 }
 
 impl InstanceModel for Discrete {
@@ -197,6 +286,48 @@ impl InstanceModel for Discrete {
 
     fn bound_in_units(bound: &u64, _: Objective, _: u64) -> Result<u64> {
         Ok(*bound)
+    }
+
+    fn runs_by_default(&self, algorithm: &Algorithm) -> bool {
+        Self::has_run(algorithm)
+    }
+
+    fn has_run(algorithm: &Algorithm) -> bool {
+        algorithm.discrete.is_some()
+    }
+
+    fn not_run(name: &str) -> Option<String> {
+        Some(format!("{name} does not run on discrete instances"))
+    }
+
+    const TAKES_OUTSIDE: bool = false;
+    const TAKES_OPTIONS: bool = true;
+    const MEASURES_WEIGHTED: bool = false;
+
+    /// Lawn mowing (`lawn-tsp`) has no discrete counterpart.
+    fn has_exact(&self, objective: Option<exact::Objective>) -> bool {
+        objective != Some(exact::Objective::LawnTsp)
+    }
+
+    fn solve_exact(&self, objective: exact::Objective, time_limit: f64) -> Result<ExactOutcome> {
+        use crate::discrete::exact as dexact;
+        let options = dexact::DiscreteOptions {
+            time_limit: Some(time_limit),
+            threads: 1,
+            verbose: false,
+        };
+        let res = dexact::solve(self, objective, &options);
+        Ok(ExactOutcome {
+            value: res.value,
+            length: res.length,
+            turns: res.turns,
+            cycles: res.cycles,
+            status: res.status,
+            lower_bound: res.lower_bound,
+            valid: res.walks.as_ref().map(|_| res.valid),
+            max_coverage: res.max_coverage.map(u64::from),
+            message: res.message,
+        })
     }
 }
 
@@ -305,5 +436,35 @@ impl InstanceModel for Polygon {
             Objective::Length => in_units(*bound, unit),
             _ => Ok(bound.floor().max(0) as u64),
         }
+    }
+
+    fn runs_by_default(&self, algorithm: &Algorithm) -> bool {
+        Self::has_run(algorithm)
+    }
+
+    fn has_run(algorithm: &Algorithm) -> bool {
+        algorithm.ortho.is_some()
+    }
+
+    fn not_run(name: &str) -> Option<String> {
+        Some(format!(
+            "{name} does not run on orthogonal polygons with arbitrary coordinates"
+        ))
+    }
+
+    const TAKES_OUTSIDE: bool = false;
+    /// Ortho runs take no options: one variant, under the plain name.
+    const TAKES_OPTIONS: bool = false;
+    const MEASURES_WEIGHTED: bool = false;
+
+    /// No exact solver exists for such polygons (docs/ortho.md says why).
+    fn has_exact(&self, _: Option<exact::Objective>) -> bool {
+        false
+    }
+
+    fn solve_exact(&self, _: exact::Objective, _: f64) -> Result<ExactOutcome> {
+        Err(Error::invalid(
+            "no exact solver for orthogonal polygons with arbitrary coordinates",
+        ))
     }
 }
