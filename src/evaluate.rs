@@ -1,4 +1,5 @@
-//! The one evaluation pipeline: an algorithm, its options and a region → the checked walks,
+//! The one evaluation pipeline: an algorithm, its options and an instance of any
+//! [model](crate::model) → the checked walks,
 //! their values, the best available lower bound and its source, the verdict of every guarantee,
 //! and the certificates. `solve`, `bench`, `tight` and every later command call [`evaluate`];
 //! nothing else runs an algorithm and judges its output.
@@ -20,9 +21,9 @@ use crate::algorithms::{
 use crate::bounds;
 use crate::checker::{self, Report};
 use crate::discrete::Discrete;
-use crate::discrete::format::DiscreteCover;
 use crate::error::{Error, Result};
 use crate::lawn_check;
+use crate::model::InstanceModel;
 use crate::outside::OutsideAlgorithm;
 use crate::region::Region;
 use crate::tour::CycleCover;
@@ -280,23 +281,24 @@ impl<C> Evaluation<C> {
     }
 }
 
-/// Runs `subject` on `region` with `options`, checks every output of the `objectives` asked
-/// for (all the subject's objectives when empty) and judges its guarantees. Never fails:
-/// errors and panics are recorded in the evaluation.
-pub fn evaluate(
+/// Runs `subject` on `instance` (a grid [`Region`], a [`Discrete`] instance or an orthogonal
+/// [`Polygon`](crate::ortho::Polygon): any [`InstanceModel`]) with `options`, recounts every
+/// output of the `objectives` asked for (all the subject's objectives when empty) with the
+/// model's checker, takes the best lower bound (the model's cheap bound and the exact solves in
+/// `reference`) and judges the subject's guarantees with the instance's parameters put in.
+/// Never fails: errors and panics are recorded in the evaluation.
+///
+/// On a polygon with arbitrary coordinates the lengths are written in units of 1/`unit`
+/// ([`Checked::unit`]) so that they stay exact integers; no exact optimum is known there (no
+/// exact solver: docs/ortho.md says why), so OPT is never set.
+pub fn evaluate<M: InstanceModel>(
     subject: Subject<'_>,
-    region: &Region,
+    instance: &M,
     options: &Options,
     objectives: &[Objective],
     reference: &Reference,
-) -> Evaluation {
-    let run = |wanted: &[Objective]| match subject {
-        Subject::Registered(a) => {
-            (a.precondition)(region)?;
-            (a.run)(region, options)
-        }
-        Subject::Outside(o) => o.run(region, wanted),
-    };
+) -> Evaluation<M::Cover> {
+    let run = |wanted: &[Objective]| instance.run(subject, options, wanted);
     let (mut eval, solution, wanted) = match begin(
         subject.name(),
         options,
@@ -307,6 +309,8 @@ pub fn evaluate(
         Ok(started) => started,
         Err(failed) => return failed,
     };
+    // The cheap bounds once per evaluation (the objectives of a model may share one).
+    let mut bounds: BTreeMap<Objective, (M::Bound, String)> = BTreeMap::new();
     for objective in wanted {
         // A weighted objective is measured on the output it is carried by.
         let output = solution
@@ -324,15 +328,28 @@ pub fn evaluate(
             eval.missing.push((objective, why));
             continue;
         };
-        let checked = judge(
-            subject,
-            region,
-            options,
-            objective,
-            output.cover.clone(),
-            reference,
-        );
-        eval.outputs.push(checked);
+        let key = M::bound_shared_by(objective);
+        let bound = match bounds.get(&key) {
+            Some(known) => Ok(known.clone()),
+            None => instance.cheap_bound(objective, options).inspect(|found| {
+                bounds.insert(key, found.clone());
+            }),
+        };
+        let judged = bound.and_then(|bound| {
+            judge_on(
+                subject,
+                instance,
+                options,
+                objective,
+                output.cover.clone(),
+                bound,
+                reference,
+            )
+        });
+        match judged {
+            Ok(checked) => eval.outputs.push(checked),
+            Err(e) => eval.missing.push((objective, e.to_string())),
+        }
     }
     eval
 }
@@ -383,7 +400,7 @@ fn begin<C, S>(
     }
 }
 
-/// Checks one cover of `objective` and judges the subject's guarantees on it.
+/// Checks one cover of `objective` on a grid region and judges the subject's guarantees on it.
 pub fn judge(
     subject: Subject<'_>,
     region: &Region,
@@ -392,58 +409,90 @@ pub fn judge(
     cover: CycleCover,
     reference: &Reference,
 ) -> Checked {
-    let report = recount(region, &cover, objective, options.cutter);
-    let one_walk = !objective.is_tour() || cover.is_tour();
+    let bound = cheap_bound(region, objective, options.cutter);
+    judge_on(subject, region, options, objective, cover, bound, reference)
+        .expect("a grid region's recount and bounds are integers and never fail")
+}
+
+/// Checks one cover of `objective` with the model's checker and decides the subject's
+/// guarantees on it, against the better of `cheap` (the model's cheap bound of the objective,
+/// with its source) and the exact bounds in `reference`.
+fn judge_on<M: InstanceModel>(
+    subject: Subject<'_>,
+    instance: &M,
+    options: &Options,
+    objective: Objective,
+    cover: M::Cover,
+    (cheap, cheap_source): (M::Bound, String),
+    reference: &Reference,
+) -> Result<Checked<M::Cover>> {
+    let report = instance.recount(&cover, objective, options)?;
+    let one_walk = !objective.is_tour() || M::walks(&cover) == 1;
     let valid = report.valid && one_walk;
     let error = if !report.valid {
         Some(report.error.clone().unwrap_or_default())
     } else if !one_walk {
-        Some(format!(
-            "a tour objective got {} cycles",
-            cover.cycles.len()
-        ))
+        Some(format!("a tour objective got {} cycles", M::walks(&cover)))
     } else {
         None
     };
-    let value = match objective {
-        Objective::Length | Objective::LawnLength => report.length,
-        Objective::Turns | Objective::CcTurns => report.turns,
-        Objective::Weighted(c) | Objective::WeightedCc(c) => {
-            report.length + u64::from(c) * report.turns
-        }
-    };
+    let unit = report.unit;
     let opt = exact_counterpart(objective).and_then(|o| reference.opt(o));
     let opt_status = exact_counterpart(objective)
         .and_then(|o| reference.get(o))
         .map(|k| k.status.clone())
         .unwrap_or_default();
-    let (lower_bound, lb_source) = best_bound(region, objective, options.cutter, reference);
+    // The largest lower bound; ties keep the first (cheapest) source.
+    let mut best = (M::bound_in_units(&cheap, objective, unit)?, cheap_source);
+    for (b, source) in reference.exact_bounds(objective) {
+        if b > best.0 {
+            best = (b, source);
+        }
+    }
+    let (lower_bound, lb_source) = (Some(best.0), best.1);
     let measured = Measured {
-        value,
+        value: report.value,
         length: report.length,
-        max_coverage: u64::from(report.max_coverage),
+        max_coverage: report.max_coverage,
     };
-    let n = region.len() as u64;
-    let applicable = subject.applicable(objective, region, options);
+    let model = instance.model();
+    let n = model.len() as u64;
+    // A bound on a length is written in the units of the lengths: its constant and its N
+    // scale by `unit` (1 on pixels and graphs).
+    let applicable: Vec<_> = subject
+        .applicable_to(objective, model, options)
+        .into_iter()
+        .map(|mut g| {
+            let on_length = g.quantity == algorithms::Quantity::Length
+                || (g.quantity == algorithms::Quantity::Value && objective == Objective::Length);
+            if on_length && unit != 1 {
+                g.add = g.add.saturating_mul(unit as i64);
+                if g.against == algorithms::Against::N {
+                    g.num = g.num.saturating_mul(unit as i64);
+                }
+            }
+            g
+        })
+        .collect();
     let (verdicts, within_guarantee) = verdicts(&applicable, &measured, n, opt, lower_bound);
-    Checked {
+    Ok(Checked {
         objective,
         cover,
         valid,
         error,
-        value,
+        value: report.value,
         length: report.length,
-        unit: 1,
+        unit,
         turns: report.turns,
         cycles: report.cycles,
-        max_coverage: u64::from(report.max_coverage),
+        max_coverage: report.max_coverage,
         opt,
         opt_status,
         lower_bound,
         lb_source,
         verdicts,
         within_guarantee,
-    }
+    })
 }
 
 /// The verdict of every applicable guarantee on one measured output, and their conjunction:
@@ -473,257 +522,6 @@ fn verdicts(
         None
     };
     (verdicts, within_guarantee)
-}
-
-/// [`evaluate`] on a discrete instance: runs a registered algorithm's discrete run, recounts
-/// every output with the discrete model's checker ([`crate::discrete::check`]), takes the best
-/// lower bound (the star cover's rooks, Lemma 4.3 as restated in
-/// [`crate::discrete::star_cover`]; n for length; and the exact solves in `reference`) and
-/// decides the guarantees with the instance's parameters put in.
-pub fn evaluate_discrete(
-    algorithm: &'static Algorithm,
-    inst: &Discrete,
-    options: &Options,
-    objectives: &[Objective],
-    reference: &Reference,
-) -> Evaluation<DiscreteCover> {
-    let run = |_: &[Objective]| match algorithm.discrete {
-        Some(run) => run(inst, options),
-        None => Err(Error::invalid(format!(
-            "{} runs on grid regions only",
-            algorithm.name
-        ))),
-    };
-    let (mut eval, solution, wanted) = match begin(
-        algorithm.name,
-        options,
-        algorithm.objectives,
-        objectives,
-        run,
-    ) {
-        Ok(started) => started,
-        Err(failed) => return failed,
-    };
-    let subject = Subject::Registered(algorithm);
-    for objective in wanted {
-        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
-            let why = format!("{} returned no {objective} output", algorithm.name);
-            eval.missing.push((objective, why));
-            continue;
-        };
-        let report = crate::discrete::check::check(inst, &output.cover.cycles);
-        let one_walk = !objective.is_tour() || output.cover.cycles.len() == 1;
-        let error = if !report.valid {
-            Some(report.error.clone().unwrap_or_default())
-        } else if !one_walk {
-            Some(format!(
-                "a tour objective got {} cycles",
-                output.cover.cycles.len()
-            ))
-        } else {
-            None
-        };
-        let value = match objective {
-            Objective::Length | Objective::LawnLength => report.length,
-            Objective::Turns | Objective::CcTurns => report.turns,
-            Objective::Weighted(c) | Objective::WeightedCc(c) => {
-                report.length + u64::from(c) * report.turns
-            }
-        };
-        let opt = reference.opt(objective);
-        let opt_status = reference
-            .get(objective)
-            .map(|k| k.status.clone())
-            .unwrap_or_default();
-        let mut best = discrete_cheap_bound(inst, objective);
-        for (b, source) in reference.exact_bounds(objective) {
-            if b > best.0 {
-                best = (b, source);
-            }
-        }
-        let measured = Measured {
-            value,
-            length: report.length,
-            max_coverage: u64::from(report.max_coverage),
-        };
-        let applicable = subject.applicable_to(objective, Model::Discrete(inst), options);
-        let (verdicts, within_guarantee) =
-            verdicts(&applicable, &measured, inst.len() as u64, opt, Some(best.0));
-        eval.outputs.push(Checked {
-            objective,
-            cover: output.cover.clone(),
-            valid: report.valid && one_walk,
-            error,
-            value,
-            length: report.length,
-            unit: 1,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: u64::from(report.max_coverage),
-            opt,
-            opt_status,
-            lower_bound: Some(best.0),
-            lb_source: best.1,
-            verdicts,
-            within_guarantee,
-        });
-    }
-    eval
-}
-
-/// [`evaluate`] on an orthogonal polygon with arbitrary coordinates: runs a registered
-/// algorithm's ortho run, recounts every output with the exact checker
-/// ([`crate::ortho::check`]), takes the proven lower bound ([`ortho_bound`]) and decides the
-/// guarantees. Lengths are exact rationals; the evaluation writes them in units of 1/`unit`
-/// ([`Checked::unit`]), a common denominator of the polygon's coordinates (doubled: the
-/// cutter's centre is half a unit in) and the walk's length, so that every column stays an
-/// integer and nothing is rounded but the lower bound, which is rounded down (still a bound).
-/// No exact optimum is known for such polygons (no exact solver: docs/ortho.md says why), so
-/// OPT is never set.
-pub fn evaluate_ortho(
-    algorithm: &'static Algorithm,
-    polygon: &crate::ortho::Polygon,
-    options: &Options,
-    objectives: &[Objective],
-) -> Evaluation<crate::ortho::Tour> {
-    let run = |_: &[Objective]| match algorithm.ortho {
-        Some(run) => run(polygon, options),
-        None => Err(Error::invalid(format!(
-            "{} does not run on orthogonal polygons with arbitrary coordinates",
-            algorithm.name
-        ))),
-    };
-    let (mut eval, solution, wanted) = match begin(
-        algorithm.name,
-        options,
-        algorithm.objectives,
-        objectives,
-        run,
-    ) {
-        Ok(started) => started,
-        Err(failed) => return failed,
-    };
-    let subject = Subject::Registered(algorithm);
-    // The lower bounds once per evaluation: one for length, one shared by the turn objectives.
-    let mut bounds: BTreeMap<bool, (crate::ortho::Rational, String)> = BTreeMap::new();
-    for objective in wanted {
-        let Some(output) = solution.outputs.iter().find(|o| o.objective == objective) else {
-            let why = format!("{} returned no {objective} output", algorithm.name);
-            eval.missing.push((objective, why));
-            continue;
-        };
-        let is_length = objective == Objective::Length;
-        let bound = match bounds.get(&is_length) {
-            Some(known) => Ok(known.clone()),
-            None => ortho_bound(polygon, objective).inspect(|found| {
-                bounds.insert(is_length, found.clone());
-            }),
-        };
-        let judged = bound.and_then(|bound| {
-            judge_ortho(subject, polygon, options, objective, &output.cover, bound)
-        });
-        match judged {
-            Ok(checked) => eval.outputs.push(checked),
-            Err(e) => eval.missing.push((objective, e.to_string())),
-        }
-    }
-    eval
-}
-
-/// Checks one ortho output exactly and decides the subject's guarantees on it, against
-/// `bound`, the [`ortho_bound`] of its objective (with its source).
-fn judge_ortho(
-    subject: Subject<'_>,
-    polygon: &crate::ortho::Polygon,
-    options: &Options,
-    objective: Objective,
-    cover: &crate::ortho::Tour,
-    (bound, lb_source): (crate::ortho::Rational, String),
-) -> Result<Checked<crate::ortho::Tour>> {
-    use crate::ortho::Rational;
-    let report = crate::ortho::check(polygon, cover)?;
-    let one_walk = !objective.is_tour() || cover.is_tour();
-    let error = if !report.valid {
-        Some(report.error.clone().unwrap_or_default())
-    } else if !one_walk {
-        Some(format!(
-            "a tour objective got {} cycles",
-            cover.cycles.len()
-        ))
-    } else {
-        None
-    };
-    let too_fine = || {
-        Error::invalid(
-            "the common denominator of the polygon and the walk overflows 64 bits: the lengths \
-             cannot be written exactly",
-        )
-    };
-    let unit = polygon
-        .denominator()
-        .and_then(|l| l.checked_mul(2))
-        .and_then(|l| crate::ortho::lcm(l, report.length.denom()))
-        .and_then(|u| u64::try_from(u).ok())
-        .ok_or_else(too_fine)?;
-    // An exact length in units of 1/unit (an integer by the choice of unit), or a bound
-    // rounded down to them.
-    let in_units = |r: Rational| -> Result<u64> {
-        let scaled = r
-            .checked_mul(Rational::from(unit as i64))
-            .ok_or_else(too_fine)?;
-        u64::try_from(scaled.floor().max(0)).map_err(|_| too_fine())
-    };
-    let length = in_units(report.length)?;
-    let (value, lower_bound) = match objective {
-        Objective::Length => (length, in_units(bound)?),
-        Objective::Turns | Objective::CcTurns => (report.turns, bound.floor().max(0) as u64),
-        other => {
-            return Err(Error::invalid(format!(
-                "{other} is not measured on orthogonal polygons with arbitrary coordinates"
-            )));
-        }
-    };
-    let measured = Measured {
-        value,
-        length,
-        max_coverage: 0,
-    };
-    let n = Model::Ortho(polygon).len() as u64;
-    // A bound on a length is written in the same units: its constant and its N scale by unit.
-    let applicable: Vec<_> = subject
-        .applicable_to(objective, Model::Ortho(polygon), options)
-        .into_iter()
-        .map(|mut g| {
-            let on_length = g.quantity == algorithms::Quantity::Length
-                || (g.quantity == algorithms::Quantity::Value && objective == Objective::Length);
-            if on_length {
-                g.add = g.add.saturating_mul(unit as i64);
-                if g.against == algorithms::Against::N {
-                    g.num = g.num.saturating_mul(unit as i64);
-                }
-            }
-            g
-        })
-        .collect();
-    let (verdicts, within_guarantee) = verdicts(&applicable, &measured, n, None, Some(lower_bound));
-    Ok(Checked {
-        objective,
-        cover: cover.clone(),
-        valid: report.valid && one_walk,
-        error,
-        value,
-        length,
-        unit,
-        turns: report.turns,
-        cycles: report.cycles,
-        max_coverage: 0,
-        opt: None,
-        opt_status: String::new(),
-        lower_bound: Some(lower_bound),
-        lb_source,
-        verdicts,
-        within_guarantee,
-    })
 }
 
 /// The proven lower bound on the optimum of `objective` on an orthogonal polygon, exactly,
@@ -809,25 +607,6 @@ pub fn exact_objective(objective: Objective) -> Option<crate::exact::Objective> 
         Objective::WeightedCc(c) => E::WeightedCc { turn_cost: c },
         Objective::LawnLength => return None,
     })
-}
-
-/// The largest lower bound on the optimum of `objective`; ties keep the first (cheapest)
-/// source.
-fn best_bound(
-    region: &Region,
-    objective: Objective,
-    cutter: Cutter,
-    reference: &Reference,
-) -> (Option<u64>, String) {
-    let mut best = cheap_bound(region, objective, cutter);
-    if objective != Objective::LawnLength {
-        for (b, source) in reference.exact_bounds(objective) {
-            if b > best.0 {
-                best = (b, source);
-            }
-        }
-    }
-    (Some(best.0), best.1)
 }
 
 /// The checker's recount of `cover` for `objective`: the milling checker, or for lawn tours the

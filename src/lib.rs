@@ -83,6 +83,7 @@ pub mod hunt;
 pub mod input;
 pub mod instance;
 pub mod lawn_check;
+pub mod model;
 pub mod ortho;
 pub mod outside;
 pub mod pixel_list;

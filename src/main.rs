@@ -1,15 +1,11 @@
 //! The `mowmill` command line. Exit codes: 0 success, 1 a checked property failed (an invalid
 //! tour), 2 bad input or usage.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use clap::{Parser, Subcommand};
-use mowmill::checker::{self, Mode};
-use mowmill::draw::{self, DrawOptions};
+use mowmill::checker::Mode;
 use mowmill::error::Error;
 use mowmill::harness::{self};
-use mowmill::instance::Instance;
-use mowmill::topology;
-use mowmill::tour::CycleCover;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -191,54 +187,13 @@ fn message(e: &anyhow::Error) -> String {
 fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         Command::Gen(args) => gen_command(args),
-        Command::Info { file, json } if cli::discrete::is_discrete(&file) => {
-            cli::discrete::info(&file, json)
-        }
-        Command::Info { file, json } if cli::ortho::is_ortho(&file) => {
-            cli::ortho::info(&file, json)
-        }
-        Command::Info { file, json } => {
-            let inst = Instance::read(&file)?;
-            let mut v = serde_json::to_value(topology::summary(&inst.region))?;
-            // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
-            v["strip_cover"] = mowmill::strip_cover::min_strip_cover_size(&inst.region).into();
-            if json {
-                println!("{}", serde_json::to_string_pretty(&v)?);
-            } else {
-                for (k, val) in v.as_object().context("summary is an object")? {
-                    println!("{k:<20} {val}");
-                }
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Validate {
-            file, tour, json, ..
-        } if cli::discrete::is_discrete(&file) => cli::discrete::validate(&file, &tour, json),
-        Command::Validate {
-            file, tour, json, ..
-        } if cli::ortho::is_ortho(&file) => cli::ortho::validate(&file, &tour, json),
+        Command::Info { file, json } => cli::info(&file, json),
         Command::Validate {
             file,
             tour,
             mode,
             json,
-        } => {
-            let inst = Instance::read(&file)?;
-            let cover = CycleCover::read(&tour)?;
-            let report = checker::check(&inst.region, &cover, mode);
-            cli::print_validation(
-                &report,
-                &cli::Checked {
-                    valid: report.valid,
-                    length: report.length,
-                    turns: report.turns,
-                    cycles: report.cycles,
-                    max_coverage: report.max_coverage,
-                    error: report.error.as_deref(),
-                },
-                json,
-            )
-        }
+        } => cli::validate(&file, &tour, mode, json),
         Command::Export(args) => export_command(args),
         Command::Solve(args) => solve_command(args),
         Command::Tight(args) => tight_command(args),
@@ -291,42 +246,6 @@ fn run(cli: Cli) -> Result<ExitCode> {
             tour,
             out,
             title,
-        } if cli::discrete::is_discrete(&file) => {
-            cli::discrete::draw(&file, tour.as_deref(), &out, title)
-        }
-        Command::Draw {
-            file,
-            tour,
-            out,
-            title,
-        } if cli::ortho::is_ortho(&file) => cli::ortho::draw(&file, tour.as_deref(), &out, title),
-        Command::Draw {
-            file,
-            tour,
-            out,
-            title,
-        } => {
-            let inst = Instance::read(&file)?;
-            let cover = tour.as_deref().map(CycleCover::read).transpose()?;
-            let mut caption = format!("N = {}", inst.region.len());
-            if let Some(c) = &cover {
-                let r = checker::check(&inst.region, c, Mode::Milling);
-                caption += &format!(
-                    ", length {}, turns {}, {} cycle(s)",
-                    r.length, r.turns, r.cycles
-                );
-                if !r.valid {
-                    caption += " (not a valid milling cover)";
-                }
-            }
-            let opts = DrawOptions {
-                title: Some(title.unwrap_or_else(|| inst.name.clone())),
-                caption: Some(caption),
-                ..DrawOptions::default()
-            };
-            draw::draw(&inst.region, cover.as_ref(), &out, &opts)?;
-            eprintln!("wrote {}", out.display());
-            Ok(ExitCode::SUCCESS)
-        }
+        } => cli::draw(&file, tour.as_deref(), &out, title),
     }
 }

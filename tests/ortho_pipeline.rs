@@ -1,12 +1,12 @@
 //! Orthogonal polygons with arbitrary coordinates in the one pipeline: the registry's
-//! ortho runs through `evaluate_ortho` (exact lengths over a common denominator), the integral
+//! ortho runs through `evaluate` on a polygon (exact lengths over a common denominator), the integral
 //! special case through the grid pipeline, the bench families and files, and the claims table.
 
 mod common;
 
 use common::{mowmill, temp_dir};
 use mowmill::algorithms::{self, Objective, Options};
-use mowmill::evaluate::{Reference, Subject, evaluate, evaluate_ortho};
+use mowmill::evaluate::{Reference, Subject, evaluate};
 use mowmill::generate::{Family, GenParams, generate};
 use mowmill::harness::rows::read_rows;
 use mowmill::ortho::{self, Polygon, Rational};
@@ -27,7 +27,13 @@ fn ortho_lengths_are_exact_in_their_unit() {
         for seed in 0..12 {
             let p = ortho::generate(family, 14, seed).unwrap();
             for algorithm in ortho_algorithms() {
-                let eval = evaluate_ortho(algorithm, &p, &Options::default(), &[]);
+                let eval = evaluate(
+                    Subject::Registered(algorithm),
+                    &p,
+                    &Options::default(),
+                    &[],
+                    &Reference::default(),
+                );
                 if let Some(e) = &eval.error {
                     // Only the documented refusal: a hole's contour no straight link reaches.
                     assert!(
@@ -93,7 +99,13 @@ fn grid_and_ortho_runs_agree_on_integral_polygons() {
                     &[],
                     &Reference::default(),
                 );
-                let exact = evaluate_ortho(algorithm, &polygon, &Options::default(), &[]);
+                let exact = evaluate(
+                    Subject::Registered(algorithm),
+                    &polygon,
+                    &Options::default(),
+                    &[],
+                    &Reference::default(),
+                );
                 assert_eq!(grid.error, exact.error, "{seed} {}", algorithm.name);
                 for (g, e) in grid.outputs.iter().zip(&exact.outputs) {
                     assert_eq!(g.objective, e.objective);

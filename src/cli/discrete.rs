@@ -121,7 +121,7 @@ pub fn exact(
 /// `solve --algo A` on a discrete instance, for a registered algorithm with a discrete run
 /// (`discrete-star-cover`; `star-cover` names it too, the grid case of the same construction):
 /// its outputs recounted by the discrete checker and every registered guarantee decided with
-/// the instance's parameters (the one pipeline, [`evaluate::evaluate_discrete`]), against a
+/// the instance's parameters (the one pipeline, [`evaluate::evaluate`]), against a
 /// lower bound from the greedy rooks or a maximum rook placement (Lemma 4.3, off closed
 /// channels). The paper's averaged forms (ρ + 2δ, Theorem 4.2's t + 2c − 2), which are not
 /// proven for this implementation, are reported as figures. Exit 1 when a guarantee fails or an
@@ -173,8 +173,8 @@ pub fn solve(
             },
         );
     }
-    let eval = evaluate::evaluate_discrete(
-        algorithm,
+    let eval = evaluate::evaluate(
+        evaluate::Subject::Registered(algorithm),
         &inst,
         &Options::default(),
         &[Objective::CcTurns, Objective::Turns],

@@ -67,7 +67,7 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
     super::check_seconds("--time-limit", a.time_limit)?;
     let objective =
         exact::Objective::parse(&a.objective, a.turn_cost).map_err(mowmill::Error::Invalid)?;
-    if super::discrete::is_discrete(&a.file) {
+    if super::FileKind::of(&a.file) == super::FileKind::Discrete {
         let opts = mowmill::discrete::exact::DiscreteOptions {
             time_limit: (!a.no_time_limit).then_some(a.time_limit),
             threads: a.threads,

@@ -13,8 +13,136 @@ pub mod sample;
 pub mod solve;
 pub mod tight;
 
+use anyhow::Context;
 use clap::builder::{PossibleValue, PossibleValuesParser};
+use mowmill::checker::{self, Mode};
+use mowmill::draw::DrawOptions;
+use mowmill::instance::Instance;
+use mowmill::tour::CycleCover;
+use std::path::Path;
 use std::process::ExitCode;
+
+/// The model of an instance file. The one place the command line decides it: every command
+/// that reads an instance dispatches on it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileKind {
+    /// A grid region: `.grid`, WKT with integral coordinates, `.poly`, a `.gg`/`.csv` pixel list.
+    Grid,
+    /// A discrete instance ([`discrete::is_discrete`]: by its extension).
+    Discrete,
+    /// An orthogonal polygon with a non-integral coordinate ([`ortho::is_ortho`]).
+    Ortho,
+}
+
+impl FileKind {
+    /// The model of the instance file `path`.
+    pub fn of(path: &Path) -> FileKind {
+        if discrete::is_discrete(path) {
+            FileKind::Discrete
+        } else if ortho::is_ortho(path) {
+            FileKind::Ortho
+        } else {
+            FileKind::Grid
+        }
+    }
+}
+
+/// `info`: the instance's summary, for its model.
+pub fn info(file: &Path, json: bool) -> anyhow::Result<ExitCode> {
+    match FileKind::of(file) {
+        FileKind::Discrete => discrete::info(file, json),
+        FileKind::Ortho => ortho::info(file, json),
+        FileKind::Grid => grid_info(file, json),
+    }
+}
+
+/// `validate`: the model's checker on a tour file (`mode` applies to grid regions).
+pub fn validate(file: &Path, tour: &Path, mode: Mode, json: bool) -> anyhow::Result<ExitCode> {
+    match FileKind::of(file) {
+        FileKind::Discrete => discrete::validate(file, tour, json),
+        FileKind::Ortho => ortho::validate(file, tour, json),
+        FileKind::Grid => grid_validate(file, tour, mode, json),
+    }
+}
+
+/// `draw`: the instance and optionally a tour, as SVG or PNG, for its model.
+pub fn draw(
+    file: &Path,
+    tour: Option<&Path>,
+    out: &Path,
+    title: Option<String>,
+) -> anyhow::Result<ExitCode> {
+    match FileKind::of(file) {
+        FileKind::Discrete => discrete::draw(file, tour, out, title),
+        FileKind::Ortho => ortho::draw(file, tour, out, title),
+        FileKind::Grid => grid_draw(file, tour, out, title),
+    }
+}
+
+/// `info` on a grid region: its topology and the minimum strip cover.
+fn grid_info(file: &Path, json: bool) -> anyhow::Result<ExitCode> {
+    let inst = Instance::read(file)?;
+    let mut v = serde_json::to_value(mowmill::topology::summary(&inst.region))?;
+    // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
+    v["strip_cover"] = mowmill::strip_cover::min_strip_cover_size(&inst.region).into();
+    if json {
+        println!("{}", serde_json::to_string_pretty(&v)?);
+    } else {
+        for (k, val) in v.as_object().context("summary is an object")? {
+            println!("{k:<20} {val}");
+        }
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `validate` on a grid region: the milling (or lawn) checker on a cycle cover.
+fn grid_validate(file: &Path, tour: &Path, mode: Mode, json: bool) -> anyhow::Result<ExitCode> {
+    let inst = Instance::read(file)?;
+    let cover = CycleCover::read(tour)?;
+    let report = checker::check(&inst.region, &cover, mode);
+    print_validation(
+        &report,
+        &Checked {
+            valid: report.valid,
+            length: report.length,
+            turns: report.turns,
+            cycles: report.cycles,
+            max_coverage: report.max_coverage,
+            error: report.error.as_deref(),
+        },
+        json,
+    )
+}
+
+/// `draw` on a grid region, the caption recounting the tour by the milling checker.
+fn grid_draw(
+    file: &Path,
+    tour: Option<&Path>,
+    out: &Path,
+    title: Option<String>,
+) -> anyhow::Result<ExitCode> {
+    let inst = Instance::read(file)?;
+    let cover = tour.map(CycleCover::read).transpose()?;
+    let mut caption = format!("N = {}", inst.region.len());
+    if let Some(c) = &cover {
+        let r = checker::check(&inst.region, c, Mode::Milling);
+        caption += &format!(
+            ", length {}, turns {}, {} cycle(s)",
+            r.length, r.turns, r.cycles
+        );
+        if !r.valid {
+            caption += " (not a valid milling cover)";
+        }
+    }
+    let opts = DrawOptions {
+        title: Some(title.unwrap_or_else(|| inst.name.clone())),
+        caption: Some(caption),
+        ..DrawOptions::default()
+    };
+    mowmill::draw::draw(&inst.region, cover.as_ref(), out, &opts)?;
+    eprintln!("wrote {}", out.display());
+    Ok(ExitCode::SUCCESS)
+}
 
 /// What a checker recounted, as `validate` prints it (both models' reports have these).
 pub struct Checked<'a> {

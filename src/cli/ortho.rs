@@ -109,7 +109,7 @@ pub fn draw(
 
 /// `solve --algo A` on an ortho polygon, for every registered algorithm with an ortho run
 /// (`corollary4`, `strips-contour`): its outputs go through the one pipeline
-/// ([`mowmill::evaluate::evaluate_ortho`]): checked by the exact checker, each against its proven
+/// ([`mowmill::evaluate::evaluate`]): checked by the exact checker, each against its proven
 /// lower bound. `--tour-out` writes the tour (the first tour output). For `corollary4` the JSON
 /// also carries the length bounds of Corollary 4's proof (the contour bound as the paper claims
 /// it, unproven here: docs/ortho.md). Exit 1 when an output is invalid.
@@ -128,11 +128,12 @@ pub fn solve(path: &Path, algo: &str, tour_out: Option<&Path>, as_json: bool) ->
         .into());
     };
     let (polygon, erosion) = feasible(path)?;
-    let eval = mowmill::evaluate::evaluate_ortho(
-        algorithm,
+    let eval = mowmill::evaluate::evaluate(
+        mowmill::evaluate::Subject::Registered(algorithm),
         &polygon,
         &mowmill::algorithms::Options::default(),
         &[],
+        &mowmill::evaluate::Reference::default(),
     );
     if let Some(e) = &eval.error {
         return Err(Error::invalid(format!("{}: {algo}: {e}", path.display())).into());

@@ -143,7 +143,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             "--turn-cost applies to --objective weighted or weighted-cc"
         ));
     }
-    if super::discrete::is_discrete(&a.file) {
+    let kind = super::FileKind::of(&a.file);
+    if kind == super::FileKind::Discrete {
         let Some(algo) = &a.algo else {
             bail!(mowmill::Error::invalid(
                 "outside programs (--command) run on grid instances only"
@@ -164,7 +165,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             a.json,
         );
     }
-    if super::ortho::is_ortho(&a.file) {
+    if kind == super::FileKind::Ortho {
         let model = format!(
             "polygons with non-integral coordinates ({})",
             a.file.display()

@@ -105,7 +105,7 @@ pub struct Row {
     pub direction_sum: Option<u64>,
     /// Lengths (`length`, and `value`, `opt`, `lower_bound` of a `length` row) are in units of
     /// 1/`unit`: empty means 1 (pixels, graphs); orthogonal polygons with arbitrary coordinates
-    /// write their exact lengths over a common denominator (`evaluate_ortho`).
+    /// write their exact lengths over a common denominator (see `evaluate`).
     #[serde(default)]
     pub unit: Option<u64>,
 }

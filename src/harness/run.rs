@@ -11,12 +11,13 @@ use super::config::{Config, ExactSpec, InstanceSpec, Source};
 use super::manifest::{ConfigRecord, Finished, Recorded};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
 use crate::algorithms::{self, Model, Objective};
-use crate::checker;
 use crate::discrete::Discrete;
 use crate::error::{Error, Result};
 use crate::evaluate::{self, Evaluation, Known, Reference, Subject};
-use crate::exact::{self, ExactOptions};
+use crate::exact;
 use crate::instance::Instance;
+use crate::model::InstanceModel;
+use crate::outside::OutsideAlgorithm;
 use crate::region::Region;
 use crate::topology;
 use rayon::prelude::*;
@@ -445,14 +446,14 @@ pub(crate) fn run_loaded(
             b.n = region.len() as u64;
             b.holes = topology::holes(region).count as u64;
             b.set_params("grid", &Model::Grid(region).params());
-            run_on_region(region, b, spec, config, done)
+            run_on(region, b, spec, config, done)
         }
         Loaded::Discrete(inst) => {
             let mut b = base;
             b.sha256 = sha;
             b.n = inst.len() as u64;
             b.set_params("discrete", &inst.params());
-            run_on_discrete(inst, b, spec, config, done)
+            run_on(inst, b, spec, config, done)
         }
         Loaded::Ortho(polygon) => {
             let mut b = base;
@@ -460,7 +461,7 @@ pub(crate) fn run_loaded(
             b.n = Model::Ortho(polygon).len() as u64;
             b.holes = polygon.rings().iter().filter(|r| r.hole).count() as u64;
             b.model = "ortho".to_string();
-            run_on_ortho(polygon, b, spec, done)
+            run_on(polygon, b, spec, config, done)
         }
     }
 }
@@ -537,125 +538,57 @@ fn load(spec: &InstanceSpec) -> Result<(Vec<u8>, &'static str, Loaded)> {
 
 /// The rows a run of `config` writes for instance `spec`, as (algorithm, objective) keys, and
 /// the sha256 of its file (`None` when it cannot be generated or read: then its one row is the
-/// `instance` error row). `merge` checks shards against it; it follows [`run_on_region`],
-/// [`run_on_discrete`] and [`run_on_ortho`] key by key.
+/// `instance` error row). `merge` checks shards against it; it follows [`run_on`] key by key.
 pub(crate) fn expected_keys(
     spec: &InstanceSpec,
     config: &Config,
 ) -> (Option<String>, std::collections::BTreeSet<(String, String)>) {
-    let mut keys = std::collections::BTreeSet::new();
     let (bytes, loaded) = match load(spec) {
         Ok((bytes, _, loaded)) => (bytes, loaded),
         Err(_) => {
+            let mut keys = std::collections::BTreeSet::new();
             keys.insert(("instance".to_string(), "-".to_string()));
             return (None, keys);
         }
     };
-    let mut exact_keys = |n: usize, lawn_applies: bool| {
-        for e in &config.exact {
-            let lawn = exact::Objective::parse(&e.objective, e.turn_cost)
-                .is_ok_and(|o| o == exact::Objective::LawnTsp);
-            if n <= e.max_n && (lawn_applies || !lawn) {
-                keys.insert((EXACT.to_string(), exact_objective_name(e)));
-            }
-        }
+    let keys = match &loaded {
+        Loaded::Grid(region) => keys_on(region, spec, config),
+        Loaded::Discrete(inst) => keys_on(inst, spec, config),
+        Loaded::Ortho(polygon) => keys_on(polygon, spec, config),
     };
-    match &loaded {
-        Loaded::Grid(region) => {
-            exact_keys(region.len(), true);
-            let weighted: Vec<Objective> = config
-                .exact
-                .iter()
-                .filter_map(|e| exact_objective_name(e).parse::<Objective>().ok())
-                .filter(|o| o.turn_cost().is_some())
-                .collect();
-            let outside = config.outside_algorithms();
-            let mut subjects: Vec<Subject<'_>> = match &spec.algorithms {
-                Some(names) => names
-                    .iter()
-                    .filter_map(|n| algorithms::find(n).map(Subject::Registered))
-                    .collect(),
-                None => algorithms::REGISTRY
-                    .iter()
-                    .filter(|a| (a.precondition)(region).is_ok())
-                    .map(Subject::Registered)
-                    .collect(),
-            };
-            subjects.extend(
-                outside
-                    .iter()
-                    .filter(|o| {
-                        spec.algorithms
-                            .as_ref()
-                            .is_none_or(|names| names.contains(&o.name))
-                    })
-                    .map(Subject::Outside),
-            );
-            for subject in subjects {
-                for options in config.option_sets() {
-                    let name =
-                        evaluate::variant_name(subject.name(), subject.objectives(), &options);
-                    for o in subject
-                        .objectives()
-                        .iter()
-                        .copied()
-                        .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
-                    {
-                        keys.insert((name.clone(), o.to_string()));
-                    }
-                }
+    (Some(sha256_hex(&bytes)), keys)
+}
+
+/// The (algorithm, objective) keys [`run_on`] writes for `instance` of `spec`.
+fn keys_on<M: InstanceModel>(
+    instance: &M,
+    spec: &InstanceSpec,
+    config: &Config,
+) -> std::collections::BTreeSet<(String, String)> {
+    let mut keys = std::collections::BTreeSet::new();
+    for e in config.exact.iter().filter(|e| exact_applies(instance, e)) {
+        keys.insert((EXACT.to_string(), exact_objective_name(e)));
+    }
+    let outside = if M::TAKES_OUTSIDE {
+        config.outside_algorithms()
+    } else {
+        Vec::new()
+    };
+    for planned in plan(instance, spec, config, &outside) {
+        match planned {
+            Planned::Refused { name, .. } => {
+                keys.insert((name, "-".to_string()));
             }
-        }
-        Loaded::Discrete(inst) => {
-            exact_keys(inst.len(), false);
-            let names: Vec<String> = match &spec.algorithms {
-                Some(names) => names.clone(),
-                None => algorithms::REGISTRY
-                    .iter()
-                    .filter(|a| a.discrete.is_some())
-                    .map(|a| a.name.to_string())
-                    .collect(),
-            };
-            for algo_name in names {
-                match algorithms::find(&algo_name).filter(|a| a.discrete.is_some()) {
-                    None => {
-                        keys.insert((algo_name.clone(), "-".to_string()));
-                    }
-                    Some(a) => {
-                        for options in config.option_sets() {
-                            let name = evaluate::variant_name(a.name, a.objectives, &options);
-                            for o in a.objectives {
-                                keys.insert((name.clone(), o.to_string()));
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        Loaded::Ortho(_) => {
-            let names: Vec<String> = match &spec.algorithms {
-                Some(names) => names.clone(),
-                None => algorithms::REGISTRY
-                    .iter()
-                    .filter(|a| a.ortho.is_some())
-                    .map(|a| a.name.to_string())
-                    .collect(),
-            };
-            for algo_name in names {
-                match algorithms::find(&algo_name).filter(|a| a.ortho.is_some()) {
-                    None => {
-                        keys.insert((algo_name.clone(), "-".to_string()));
-                    }
-                    Some(a) => {
-                        for o in a.objectives {
-                            keys.insert((a.name.to_string(), o.to_string()));
-                        }
-                    }
+            Planned::Variant {
+                name, objectives, ..
+            } => {
+                for o in objectives {
+                    keys.insert((name.clone(), o.to_string()));
                 }
             }
         }
     }
-    (Some(sha256_hex(&bytes)), keys)
+    keys
 }
 
 pub fn sha256_hex(bytes: &[u8]) -> String {
@@ -675,76 +608,172 @@ pub fn exact_objective_name(e: &ExactSpec) -> String {
     }
 }
 
-fn run_on_region(
-    region: &Region,
+/// One algorithm variant the runner evaluates on an instance, or a name it refuses.
+enum Planned<'a> {
+    /// An algorithm a family names that has no run on the instance's model: one error row.
+    Refused { name: String, error: String },
+    /// `subject` with `options`, under its variant `name`, for `objectives`.
+    Variant {
+        subject: Subject<'a>,
+        name: String,
+        options: algorithms::Options,
+        objectives: Vec<Objective>,
+    },
+}
+
+/// What the runner evaluates on `instance` of `spec`: the registered algorithms the family
+/// names (or by default those that run on the instance), then, where the model takes them, the
+/// config's `outside` algorithms; each once per distinct variant of the config's option sets
+/// (where the model takes options), for its own objectives and the weighted ones of the
+/// config's `[[exact]]` tables it reports (where the model measures them, on instances of any
+/// size: their rows then divide by the cheap bound). [`run_on`] and [`expected_keys`] both
+/// follow this plan.
+fn plan<'a, M: InstanceModel>(
+    instance: &M,
+    spec: &InstanceSpec,
+    config: &Config,
+    outside: &'a [OutsideAlgorithm],
+) -> Vec<Planned<'a>> {
+    let weighted: Vec<Objective> = if M::MEASURES_WEIGHTED {
+        config
+            .exact
+            .iter()
+            .filter_map(|e| exact_objective_name(e).parse::<Objective>().ok())
+            .filter(|o| o.turn_cost().is_some())
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let mut subjects: Vec<std::result::Result<Subject<'a>, (String, String)>> =
+        match &spec.algorithms {
+            Some(names) => names
+                .iter()
+                .filter_map(|n| match algorithms::find(n).filter(|a| M::has_run(a)) {
+                    Some(a) => Some(Ok(Subject::Registered(a))),
+                    None => M::not_run(n).map(|error| Err((n.clone(), error))),
+                })
+                .collect(),
+            None => algorithms::REGISTRY
+                .iter()
+                .filter(|a| instance.runs_by_default(a))
+                .map(|a| Ok(Subject::Registered(a)))
+                .collect(),
+        };
+    if M::TAKES_OUTSIDE {
+        subjects.extend(
+            outside
+                .iter()
+                .filter(|o| {
+                    spec.algorithms
+                        .as_ref()
+                        .is_none_or(|names| names.contains(&o.name))
+                })
+                .map(|o| Ok(Subject::Outside(o))),
+        );
+    }
+    let option_sets = if M::TAKES_OPTIONS {
+        config.option_sets()
+    } else {
+        vec![algorithms::Options::default()]
+    };
+    let mut planned = Vec::new();
+    for subject in subjects {
+        let subject = match subject {
+            Ok(subject) => subject,
+            Err((name, error)) => {
+                planned.push(Planned::Refused { name, error });
+                continue;
+            }
+        };
+        let mut seen = std::collections::HashSet::new();
+        for options in &option_sets {
+            let name = evaluate::variant_name(subject.name(), subject.objectives(), options);
+            if !seen.insert(name.clone()) {
+                continue;
+            }
+            let objectives = subject
+                .objectives()
+                .iter()
+                .copied()
+                .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
+                .collect();
+            planned.push(Planned::Variant {
+                subject,
+                name,
+                options: options.clone(),
+                objectives,
+            });
+        }
+    }
+    planned
+}
+
+/// The rows of one instance of any model: the config's exact objectives that apply (by the
+/// model's exact solver, or their earlier results when resuming: the algorithms divide by
+/// them), then every planned algorithm variant ([`plan`]), rows already in `done` skipped.
+fn run_on<M: InstanceModel>(
+    instance: &M,
     base: Row,
     spec: &InstanceSpec,
     config: &Config,
     done: &HashMap<(String, String, String), Row>,
 ) -> Vec<Row> {
     let mut rows = Vec::new();
-    // Exact rows first (or their earlier results when resuming): the algorithms divide by them.
     let reference = exact_rows(&mut rows, spec, config, done, |e| {
-        (region.len() <= e.max_n).then(|| exact_row(region, &base, e, &exact_objective_name(e)))
+        exact_applies(instance, e).then(|| exact_row(instance, &base, e, &exact_objective_name(e)))
     });
-    let weighted: Vec<Objective> = config
-        .exact
-        .iter()
-        .filter_map(|e| exact_objective_name(e).parse::<Objective>().ok())
-        .filter(|o| o.turn_cost().is_some())
-        .collect();
-    let outside = config.outside_algorithms();
-    let mut subjects: Vec<Subject<'_>> = match &spec.algorithms {
-        Some(names) => names
-            .iter()
-            .filter_map(|n| algorithms::find(n).map(Subject::Registered))
-            .collect(),
-        None => algorithms::REGISTRY
-            .iter()
-            .filter(|a| (a.precondition)(region).is_ok())
-            .map(Subject::Registered)
-            .collect(),
+    let outside = if M::TAKES_OUTSIDE {
+        config.outside_algorithms()
+    } else {
+        Vec::new()
     };
-    subjects.extend(
-        outside
-            .iter()
-            .filter(|o| {
-                spec.algorithms
-                    .as_ref()
-                    .is_none_or(|names| names.contains(&o.name))
-            })
-            .map(Subject::Outside),
-    );
-    for subject in subjects {
-        let mut seen = std::collections::HashSet::new();
-        for options in config.option_sets() {
-            let name = evaluate::variant_name(subject.name(), subject.objectives(), &options);
-            if !seen.insert(name.clone()) {
-                continue;
+    for planned in plan(instance, spec, config, &outside) {
+        match planned {
+            Planned::Refused { name, error } => {
+                let key = (spec.name.clone(), name.clone(), "-".to_string());
+                if !done.contains_key(&key) {
+                    rows.push(Row {
+                        algorithm: name,
+                        objective: "-".into(),
+                        error,
+                        ..base.clone()
+                    });
+                }
             }
-            // Its own objectives, and the weighted ones of the config's `[[exact]]` tables it
-            // reports (on instances of any size: their rows then divide by the cheap bound).
-            let pending: Vec<Objective> = subject
-                .objectives()
-                .iter()
-                .copied()
-                .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
-                .filter(|o| !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string())))
-                .collect();
-            if pending.is_empty() {
-                continue;
-            }
-            let eval = evaluate::evaluate(subject, region, &options, &pending, &reference);
-            rows.extend(algorithm_rows(
-                Model::Grid(region),
-                &base,
+            Planned::Variant {
                 subject,
-                &name,
-                &eval,
-            ));
+                name,
+                options,
+                objectives,
+            } => {
+                let pending: Vec<Objective> = objectives
+                    .into_iter()
+                    .filter(|o| {
+                        !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string()))
+                    })
+                    .collect();
+                if pending.is_empty() {
+                    continue;
+                }
+                let eval = evaluate::evaluate(subject, instance, &options, &pending, &reference);
+                rows.extend(algorithm_rows(
+                    instance.model(),
+                    &base,
+                    subject,
+                    &name,
+                    &eval,
+                ));
+            }
         }
     }
     rows
+}
+
+/// Whether the `[[exact]]` objective `e` applies to `instance`: its model solves it exactly
+/// and the instance has at most `max_n` pixels (vertices).
+fn exact_applies<M: InstanceModel>(instance: &M, e: &ExactSpec) -> bool {
+    let objective = exact::Objective::parse(&e.objective, e.turn_cost).ok();
+    instance.has_exact(objective) && instance.model().len() <= e.max_n
 }
 
 /// The config's exact objectives on one instance: each row solved by `solve` (`None` where the
@@ -792,7 +821,8 @@ fn known_from(row: &Row, name: &str) -> Known {
     }
 }
 
-fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
+/// The exact row of one `[[exact]]` objective on an instance, by its model's exact solver.
+fn exact_row<M: InstanceModel>(instance: &M, base: &Row, e: &ExactSpec, name: &str) -> Row {
     let mut row = Row {
         algorithm: EXACT.into(),
         objective: name.to_string(),
@@ -802,12 +832,7 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
     let outcome = evaluate::guarded(|| {
         let objective =
             exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
-        let options = ExactOptions {
-            time_limit: Some(e.time_limit),
-            threads: 1,
-            ..crate::warm_start::exact_options()
-        };
-        Ok(exact::solve(region, objective, &options))
+        instance.solve_exact(objective, e.time_limit)
     });
     row.seconds = start.elapsed().as_secs_f64();
     match outcome {
@@ -820,187 +845,12 @@ fn exact_row(region: &Region, base: &Row, e: &ExactSpec, name: &str) -> Row {
             row.opt_status = res.status.to_string();
             row.lower_bound = Some(res.lower_bound);
             row.lb_source = "exact".into();
-            // No cover (infeasible, or no incumbent by the time limit) is not an invalid cover.
-            row.valid = res.cover.as_ref().map(|_| res.valid);
+            // No walks (infeasible, or none by the time limit) is not an invalid result.
+            row.valid = res.valid;
             if res.status == exact::Status::Optimal {
                 row.opt = res.value;
             }
-            if let Some(cover) = &res.cover {
-                row.max_coverage = Some(u64::from(
-                    checker::check(region, cover, checker::Mode::Milling).max_coverage,
-                ));
-            }
-            if let Some(m) = res.message.filter(|_| res.status == exact::Status::Error) {
-                row.error = m;
-            }
-        }
-    }
-    row.compute_ratios();
-    row
-}
-
-/// [`run_on_region`] for a discrete instance: the config's exact objectives by the discrete
-/// exact solver ([`crate::discrete::exact`]), then every registered algorithm with a discrete
-/// run (or those the family names). Outside algorithms take grid regions only: a family naming
-/// one gets an error row for it.
-fn run_on_discrete(
-    inst: &Discrete,
-    base: Row,
-    spec: &InstanceSpec,
-    config: &Config,
-    done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
-    let mut rows = Vec::new();
-    let reference = exact_rows(&mut rows, spec, config, done, |e| {
-        // Lawn mowing (`lawn-tsp`) has no discrete counterpart: it does not apply here, as
-        // `max_n` does not apply above its size.
-        let lawn = exact::Objective::parse(&e.objective, e.turn_cost)
-            .is_ok_and(|o| o == exact::Objective::LawnTsp);
-        (inst.len() <= e.max_n && !lawn)
-            .then(|| discrete_exact_row(inst, &base, e, &exact_objective_name(e)))
-    });
-    let names: Vec<String> = match &spec.algorithms {
-        Some(names) => names.clone(),
-        None => algorithms::REGISTRY
-            .iter()
-            .filter(|a| a.discrete.is_some())
-            .map(|a| a.name.to_string())
-            .collect(),
-    };
-    for algo_name in names {
-        let Some(algorithm) = algorithms::find(&algo_name).filter(|a| a.discrete.is_some()) else {
-            let key = (spec.name.clone(), algo_name.clone(), "-".to_string());
-            if !done.contains_key(&key) {
-                rows.push(Row {
-                    algorithm: algo_name.clone(),
-                    objective: "-".into(),
-                    error: format!("{algo_name} does not run on discrete instances"),
-                    ..base.clone()
-                });
-            }
-            continue;
-        };
-        let subject = Subject::Registered(algorithm);
-        let mut seen = std::collections::HashSet::new();
-        for options in config.option_sets() {
-            let name = evaluate::variant_name(algorithm.name, algorithm.objectives, &options);
-            if !seen.insert(name.clone()) {
-                continue;
-            }
-            let pending: Vec<Objective> = algorithm
-                .objectives
-                .iter()
-                .copied()
-                .filter(|o| !done.contains_key(&(spec.name.clone(), name.clone(), o.to_string())))
-                .collect();
-            if pending.is_empty() {
-                continue;
-            }
-            let eval = evaluate::evaluate_discrete(algorithm, inst, &options, &pending, &reference);
-            rows.extend(algorithm_rows(
-                Model::Discrete(inst),
-                &base,
-                subject,
-                &name,
-                &eval,
-            ));
-        }
-    }
-    rows
-}
-
-/// Runs the algorithms with an ortho run on an orthogonal polygon with arbitrary coordinates.
-/// No `[[exact]]` objective applies: no exact solver exists for such polygons (docs/ortho.md).
-fn run_on_ortho(
-    polygon: &crate::ortho::Polygon,
-    base: Row,
-    spec: &InstanceSpec,
-    done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
-    let mut rows = Vec::new();
-    let names: Vec<String> = match &spec.algorithms {
-        Some(names) => names.clone(),
-        None => algorithms::REGISTRY
-            .iter()
-            .filter(|a| a.ortho.is_some())
-            .map(|a| a.name.to_string())
-            .collect(),
-    };
-    for algo_name in names {
-        let Some(algorithm) = algorithms::find(&algo_name).filter(|a| a.ortho.is_some()) else {
-            let key = (spec.name.clone(), algo_name.clone(), "-".to_string());
-            if !done.contains_key(&key) {
-                rows.push(Row {
-                    algorithm: algo_name.clone(),
-                    objective: "-".into(),
-                    error: format!(
-                        "{algo_name} does not run on orthogonal polygons with arbitrary coordinates"
-                    ),
-                    ..base.clone()
-                });
-            }
-            continue;
-        };
-        // Ortho runs take no options: one variant, under the plain name.
-        let pending: Vec<Objective> = algorithm
-            .objectives
-            .iter()
-            .copied()
-            .filter(|o| {
-                !done.contains_key(&(spec.name.clone(), algorithm.name.to_string(), o.to_string()))
-            })
-            .collect();
-        if pending.is_empty() {
-            continue;
-        }
-        let options = algorithms::Options::default();
-        let eval = evaluate::evaluate_ortho(algorithm, polygon, &options, &pending);
-        rows.extend(algorithm_rows(
-            Model::Ortho(polygon),
-            &base,
-            Subject::Registered(algorithm),
-            algorithm.name,
-            &eval,
-        ));
-    }
-    rows
-}
-
-/// The exact row of one `[[exact]]` objective on a discrete instance.
-fn discrete_exact_row(inst: &Discrete, base: &Row, e: &ExactSpec, name: &str) -> Row {
-    use crate::discrete::exact as dexact;
-    let mut row = Row {
-        algorithm: EXACT.into(),
-        objective: name.to_string(),
-        ..base.clone()
-    };
-    let start = Instant::now();
-    let outcome = evaluate::guarded(|| {
-        let objective =
-            exact::Objective::parse(&e.objective, e.turn_cost).map_err(Error::invalid)?;
-        let options = dexact::DiscreteOptions {
-            time_limit: Some(e.time_limit),
-            threads: 1,
-            verbose: false,
-        };
-        Ok(dexact::solve(inst, objective, &options))
-    });
-    row.seconds = start.elapsed().as_secs_f64();
-    match outcome {
-        Err(msg) => row.error = msg,
-        Ok(res) => {
-            row.value = res.value;
-            row.length = res.length;
-            row.turns = res.turns;
-            row.cycles = res.cycles.map(|c| c as u64);
-            row.opt_status = res.status.to_string();
-            row.lower_bound = Some(res.lower_bound);
-            row.lb_source = "exact".into();
-            row.valid = res.walks.as_ref().map(|_| res.valid);
-            if res.status == exact::Status::Optimal {
-                row.opt = res.value;
-            }
-            row.max_coverage = res.max_coverage.map(u64::from);
+            row.max_coverage = res.max_coverage;
             if let Some(m) = res.message.filter(|_| res.status == exact::Status::Error) {
                 row.error = m;
             }
