@@ -1,12 +1,87 @@
-//! An Eulerian multigraph on the pixels of a region and its Euler circuits (Hierholzer).
+//! Euler circuits (Hierholzer's algorithm), once for every multigraph of the crate: the
+//! grid multigraph on the pixels of a region, and multigraphs given by an edge list.
 //!
 //! The milling constructions of Sections 5–7 of *Lawn mowing and milling* build a connected
 //! multigraph with even degrees (contours, strips, matchings, detours, doubled edges) and walk
 //! it once: the closed walk visits every pixel that has an edge and uses every edge once, so
-//! its length is the number of edges.
+//! its length is the number of edges. The exact solvers walk the edge multiset of an integer
+//! solution the same way, and Christofides' lawn tour shortcuts the circuit of its tree plus
+//! matching.
 
 use crate::region::{Dir, Pixel, Region};
 use crate::tour::Walk;
+
+/// Hierholzer's algorithm on any multigraph: `take(v)` removes one unused edge at `v` and
+/// returns its other end, or `None` when `v` has none left. Returns the closed trail through
+/// the edges reachable from `start` in the order the algorithm finishes its vertices: the trail
+/// reversed, `start` at both ends (just `[start]` when `start` has no edge).
+///
+/// # Complexity
+/// O(number of edges) calls of `take`; O(number of edges) extra space.
+pub(crate) fn hierholzer(start: usize, mut take: impl FnMut(usize) -> Option<usize>) -> Vec<usize> {
+    let mut finished = Vec::new();
+    let mut stack = vec![start];
+    while let Some(&v) = stack.last() {
+        match take(v) {
+            Some(w) => stack.push(w),
+            None => {
+                finished.push(v);
+                stack.pop();
+            }
+        }
+    }
+    finished
+}
+
+/// Hierholzer's order on an edge-list multigraph: `edges[k] = (a, b)` has `mult[k]` copies and
+/// each vertex tries its edges in list order. Returns what [`hierholzer`] returns.
+fn edge_list_trail(n: usize, edges: &[(usize, usize)], mult: &[u32], start: usize) -> Vec<usize> {
+    let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
+    let mut left: Vec<u32> = mult.to_vec();
+    for (k, &(a, b)) in edges.iter().enumerate() {
+        if mult[k] > 0 {
+            adj[a].push((b, k));
+            adj[b].push((a, k));
+        }
+    }
+    let mut next = vec![0usize; n];
+    hierholzer(start, |v| {
+        while next[v] < adj[v].len() && left[adj[v][next[v]].1] == 0 {
+            next[v] += 1;
+        }
+        let &(w, k) = adj[v].get(next[v])?;
+        left[k] -= 1;
+        Some(w)
+    })
+}
+
+/// A closed walk through every edge copy of a connected multigraph (Hierholzer's algorithm).
+///
+/// `edges[k] = (a, b)` appears `mult[k]` times. Returns the vertex sequence of the closed walk
+/// (its length is the total multiplicity), starting at `start`. Every vertex must have even
+/// degree and the edges with positive multiplicity must form one connected graph containing
+/// `start`.
+pub(crate) fn euler_walk(
+    n: usize,
+    edges: &[(usize, usize)],
+    mult: &[u32],
+    start: usize,
+) -> Vec<usize> {
+    let mut walk = edge_list_trail(n, edges, mult, start);
+    walk.reverse();
+    walk.pop();
+    walk
+}
+
+/// The Euler circuit from node 0 of a connected multigraph with even degrees (given by its
+/// edges), shortcut to a Hamiltonian tour by skipping repeated nodes.
+pub(crate) fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
+    let mut seen = vec![false; n];
+    edge_list_trail(n, edges, &vec![1; edges.len()], 0)
+        .into_iter()
+        .filter(|&v| !std::mem::replace(&mut seen[v], true))
+        .collect()
+}
 
 /// Edge multiplicities of a multigraph on the grid graph of a region: `mult[i][d]` copies of
 /// the edge from pixel `i` in direction `d` (kept symmetric).
@@ -128,25 +203,14 @@ impl GridMultigraph {
     /// # Complexity
     /// O(number of edges + N).
     pub(crate) fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
-        let edges: usize = self.mult.iter().map(|m| (m[0] + m[1]) as usize).sum();
-        let mut circuit = Vec::with_capacity(edges + 1);
-        let mut stack = Vec::with_capacity(edges + 1);
-        stack.push(start);
-        while let Some(&v) = stack.last() {
-            match Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0) {
-                Some(d) => {
-                    let w = region
-                        .neighbor(v, d)
-                        .expect("edges join pixels of the region");
-                    self.remove(v, w, d);
-                    stack.push(w);
-                }
-                None => {
-                    circuit.push(v);
-                    stack.pop();
-                }
-            }
-        }
+        let mut circuit = hierholzer(start, |v| {
+            let d = Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0)?;
+            let w = region
+                .neighbor(v, d)
+                .expect("edges join pixels of the region");
+            self.remove(v, w, d);
+            Some(w)
+        });
         if circuit.len() > 1 {
             circuit.pop();
         }

@@ -31,7 +31,7 @@
 //! in lawn mode; for free motion and the disk the tour is the list of lattice points, checked
 //! by [`crate::lawn_check`] with Euclidean lengths in milli-units.
 
-use super::euler::GridMultigraph;
+use super::euler::{GridMultigraph, euler_shortcut};
 use super::{Against, Algorithm, Cutter, Guarantee, Objective, Options, Output, Solution};
 use crate::error::{Error, Result};
 use crate::lawn_check::{centre, distance, required_cells};
@@ -362,38 +362,6 @@ fn christofides(p: &Points, mst: &[(usize, usize)]) -> (Vec<usize>, matching::Od
     let mut edges: Vec<(usize, usize)> = mst.to_vec();
     edges.extend_from_slice(&m.pairs);
     (euler_shortcut(n, &edges), m)
-}
-
-/// Hierholzer's Euler circuit of a connected multigraph with even degrees (given by its
-/// edges), shortcut to a Hamiltonian tour by skipping repeated nodes.
-fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
-    let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
-    for (e, &(a, b)) in edges.iter().enumerate() {
-        adj[a].push((b, e));
-        adj[b].push((a, e));
-    }
-    let mut used = vec![false; edges.len()];
-    let mut next = vec![0usize; n];
-    let mut stack = vec![0usize];
-    let mut circuit = Vec::with_capacity(edges.len() + 1);
-    while let Some(&v) = stack.last() {
-        while next[v] < adj[v].len() && used[adj[v][next[v]].1] {
-            next[v] += 1;
-        }
-        if next[v] < adj[v].len() {
-            let (w, e) = adj[v][next[v]];
-            used[e] = true;
-            stack.push(w);
-        } else {
-            circuit.push(v);
-            stack.pop();
-        }
-    }
-    let mut seen = vec![false; n];
-    circuit
-        .into_iter()
-        .filter(|&v| !std::mem::replace(&mut seen[v], true))
-        .collect()
 }
 
 /// Fig. 9: concentric rectangles of pixel centres over the bounding box, each joined to the

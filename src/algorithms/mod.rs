@@ -27,6 +27,7 @@ use crate::discrete::{Discrete, Params};
 use crate::error::Result;
 use crate::region::Region;
 use crate::tour::CycleCover;
+use num_integer::Integer;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -409,7 +410,7 @@ impl Scale {
             Scale::Of { param, plus } => {
                 let (pn, pd) = param.value(p)?;
                 let (num, den, add) = (num * pn + plus * pd, den * pd, add * pd);
-                let g = gcd(gcd(num.abs(), den.abs()), add.abs()).max(1);
+                let g = num.gcd(&den).gcd(&add).max(1);
                 Some((num / g, den / g, add / g))
             }
         }
@@ -439,10 +440,6 @@ impl Scale {
             text
         })
     }
-}
-
-fn gcd(a: i64, b: i64) -> i64 {
-    if b == 0 { a } else { gcd(b, a % b) }
 }
 
 /// A proven upper bound `q ≤ (num · X + add) / den` on the quantity `q` of an output of

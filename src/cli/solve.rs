@@ -69,33 +69,15 @@ pub struct SolveArgs {
     pub coverage4: bool,
 }
 
-/// Splits a command line on spaces; single or double quotes group words.
+/// Splits a command line into words by POSIX shell rules (the `shlex` crate): blanks separate
+/// words, single or double quotes group them, a backslash escapes the next character and a word
+/// starting with `#` begins a comment. A quote left open closes at the end of the line, as it
+/// always has here (shlex alone would refuse the line).
 pub fn split_command(s: &str) -> Vec<String> {
-    let mut words = Vec::new();
-    let mut word = String::new();
-    let mut quote = None;
-    let mut started = false;
-    for c in s.chars() {
-        match (quote, c) {
-            (Some(q), c) if c == q => quote = None,
-            (Some(_), c) => word.push(c),
-            (None, '"' | '\'') => {
-                quote = Some(c);
-                started = true;
-            }
-            (None, c) if c.is_whitespace() => {
-                if started || !word.is_empty() {
-                    words.push(std::mem::take(&mut word));
-                }
-                started = false;
-            }
-            (None, c) => word.push(c),
-        }
-    }
-    if started || !word.is_empty() {
-        words.push(word);
-    }
-    words
+    shlex::split(s)
+        .or_else(|| shlex::split(&format!("{s}\"")))
+        .or_else(|| shlex::split(&format!("{s}'")))
+        .unwrap_or_default()
 }
 
 /// The default of `--time-limit`, in seconds.
@@ -400,5 +382,7 @@ mod tests {
             split_command("python3 'my prog.py' {instance}  \"{tour_out}\" ''"),
             ["python3", "my prog.py", "{instance}", "{tour_out}", ""]
         );
+        assert_eq!(split_command("run 'open quote"), ["run", "open quote"]);
+        assert_eq!(split_command("run \"open 'quote"), ["run", "open 'quote"]);
     }
 }

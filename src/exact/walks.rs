@@ -1,54 +1,10 @@
-//! From integer solutions to closed walks: Euler tours of edge multisets (Hierholzer), walks
-//! of passage multisets, and splicing of walks that traverse a common grid edge.
+//! From integer solutions to closed walks: Euler tours of edge multisets (Hierholzer, shared
+//! with the approximations in [`crate::algorithms::euler`]), walks of passage multisets, and
+//! splicing of walks that traverse a common grid edge.
 
 use std::collections::HashMap;
 
-/// A closed walk through every edge copy of a connected multigraph (Hierholzer's algorithm).
-///
-/// `edges[k] = (a, b)` appears `mult[k]` times. Returns the vertex sequence of the closed walk
-/// (its length is the total multiplicity), starting at `start`. Every vertex must have even
-/// degree and the edges with positive multiplicity must form one connected graph containing
-/// `start`.
-pub(crate) fn euler_walk(
-    n: usize,
-    edges: &[(usize, usize)],
-    mult: &[u32],
-    start: usize,
-) -> Vec<usize> {
-    let mut adj: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
-    let mut left: Vec<u32> = mult.to_vec();
-    for (k, &(a, b)) in edges.iter().enumerate() {
-        if mult[k] > 0 {
-            adj[a].push((b, k));
-            adj[b].push((a, k));
-        }
-    }
-    let mut ptr = vec![0usize; n];
-    let mut stack = vec![start];
-    let mut out = Vec::new();
-    while let Some(&v) = stack.last() {
-        let mut moved = false;
-        while ptr[v] < adj[v].len() {
-            let (w, k) = adj[v][ptr[v]];
-            if left[k] == 0 {
-                ptr[v] += 1;
-                continue;
-            }
-            left[k] -= 1;
-            stack.push(w);
-            moved = true;
-            break;
-        }
-        if !moved {
-            out.push(v);
-            stack.pop();
-        }
-    }
-    // `out` is the closed trail reversed, with the start repeated at both ends.
-    out.reverse();
-    out.pop();
-    out
-}
+pub(crate) use crate::algorithms::euler::euler_walk;
 
 /// One passage through a pixel: the walk enters from side `a` and leaves through side `b`
 /// (unordered; `a == b` is a U-turn). Sides are [`crate::region::Dir`] indices.

@@ -21,6 +21,7 @@ use super::cover::{Rect, compare};
 use super::polygon::{Point, Polygon};
 use super::rational::Rational;
 use super::tour::Tour;
+use petgraph::unionfind::UnionFind;
 use std::collections::HashMap;
 use std::fmt;
 
@@ -525,25 +526,14 @@ fn run_components(rows: &[Vec<Run>]) -> (Vec<usize>, usize) {
         })
         .collect();
     let n = rows.iter().map(Vec::len).sum();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn root(parent: &mut [usize], mut k: usize) -> usize {
-        while parent[k] != k {
-            parent[k] = parent[parent[k]];
-            k = parent[k];
-        }
-        k
-    }
+    let mut pieces = UnionFind::<usize>::new(n);
     for r in 1..rows.len() {
         let (below, above) = (&rows[r - 1], &rows[r]);
         let (mut a, mut b) = (0, 0);
         while a < below.len() && b < above.len() {
             let (s, t) = (below[a], above[b]);
             if s.0 < t.1 && t.0 < s.1 {
-                let (x, y) = (
-                    root(&mut parent, offsets[r - 1] + a),
-                    root(&mut parent, offsets[r] + b),
-                );
-                parent[x.max(y)] = x.min(y);
+                pieces.union(offsets[r - 1] + a, offsets[r] + b);
             }
             if s.1 <= t.1 {
                 a += 1;
@@ -555,7 +545,7 @@ fn run_components(rows: &[Vec<Run>]) -> (Vec<usize>, usize) {
     let mut label = vec![usize::MAX; n];
     let mut count = 0;
     for k in 0..n {
-        let r = root(&mut parent, k);
+        let r = pieces.find_mut(k);
         if label[r] == usize::MAX {
             label[r] = count;
             count += 1;

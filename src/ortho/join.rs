@@ -30,6 +30,7 @@ use super::polygon::Point;
 use super::rational::Rational;
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
+use petgraph::unionfind::UnionFind;
 use std::collections::HashMap;
 
 /// How the candidate links are ranked for the spanning tree.
@@ -202,14 +203,6 @@ fn insert_vertex(walk: &mut Vec<Point>, p: Point) {
     unreachable!("a link ends on its contour walk")
 }
 
-fn find(parent: &mut [usize], mut i: usize) -> usize {
-    while parent[i] != i {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    i
-}
-
 /// Joins `pixel_walks` (closed walks of pixel centres; `component_of` says which walk visits
 /// pixel centre of a pixel of `region`, and that walk visits every such centre) and the
 /// `contour` walks into one closed walk by a spanning tree of straight links ranked by `rank`.
@@ -297,16 +290,14 @@ pub(crate) fn join(
             candidates.sort_by_key(|l| (l.turns, l.length, point(l.from), point(l.to), l.to.0));
         }
     }
-    let mut parent: Vec<usize> = (0..nt + nw).collect();
+    let mut groups = UnionFind::<usize>::new(nt + nw);
     let mut tree: Vec<Link> = Vec::new();
     for link in candidates {
-        let (a, b) = (find(&mut parent, link.from.0), find(&mut parent, link.to.0));
-        if a != b {
-            parent[a] = b;
+        if groups.union(link.from.0, link.to.0) {
             tree.push(link);
         }
     }
-    let roots = (0..nt + nw).filter(|&i| find(&mut parent, i) == i).count();
+    let roots = (0..nt + nw).filter(|&i| groups.find_mut(i) == i).count();
     if roots > 1 {
         return Err(Error::invalid(format!(
             "cannot join the {nt} pixel walk(s) and {nw} contour walk(s) into one tour by \

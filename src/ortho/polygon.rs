@@ -4,6 +4,7 @@ use super::rational::Rational;
 use crate::error::{Error, Result};
 use crate::region::Region;
 use crate::wkt::{Coordinate, parse_valid_rings, to_wkt};
+use num_integer::Integer;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::path::Path;
@@ -282,10 +283,7 @@ impl Polygon {
 
 /// The least common multiple of two positive integers; `None` on overflow.
 pub(crate) fn lcm(a: i128, b: i128) -> Option<i128> {
-    fn gcd(a: i128, b: i128) -> i128 {
-        if b == 0 { a } else { gcd(b, a % b) }
-    }
-    (a / gcd(a, b)).checked_mul(b)
+    (a / a.gcd(&b)).checked_mul(b)
 }
 
 #[cfg(test)]

@@ -2,6 +2,7 @@
 //! the pixel reader ([`number_value`]), reduced fractions for exact polygons ([`exact_value`]).
 
 use super::{MAX_COORD, MIN_COORD};
+use num_integer::Integer;
 
 /// A place in the input; line and column start at 1 and columns count characters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -315,9 +316,6 @@ pub(crate) fn exact_value(text: &str) -> ExactValue {
 }
 
 /// The greatest common divisor (gcd(0, 0) = 1, so that dividing by it is always defined).
-pub(crate) fn gcd(mut a: u128, mut b: u128) -> u128 {
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a.max(1)
+pub(crate) fn gcd(a: u128, b: u128) -> u128 {
+    a.gcd(&b).max(1)
 }
