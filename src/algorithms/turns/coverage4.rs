@@ -71,7 +71,8 @@
 //! shorter closed walk (only its U-turns when only a splice at two U-turns fits the budget);
 //! a reroute O(c · W · S log S) for windows of W moves over the S states its bounds allow; a
 //! transplant and a reversal O(L) per pair of visits tried; a slide chain at most
-//! [`SLIDE_EXPANSIONS`] extensions of O(L) each (finding the visits from the index).
+//! [`SLIDE_EXPANSIONS`](slide::SLIDE_EXPANSIONS) extensions of O(L) each (finding the
+//! visits from the index).
 //! Measured in docs/measured.md.
 
 use crate::checker::walk_cost;
