@@ -1,4 +1,4 @@
-//! Speed of the min-length algorithms of *Lawn mowing and milling* (issue 4), single thread:
+//! Speed of the min-length algorithms of *Lawn mowing and milling*, single thread:
 //! pixels per second at the sizes the issue names. Run with
 //! `cargo bench --bench milling` (add `-- quick` for a 10× smaller run, and algorithm names to run only those).
 //!

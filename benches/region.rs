@@ -1,4 +1,4 @@
-//! Time and memory proportional to N (issue 13): `mowmill info`'s work (parse the instance,
+//! Time and memory proportional to N: `mowmill info`'s work (parse the instance,
 //! `topology::summary`, the minimum strip cover) against `tsp65` (run and check), per pixel, on
 //! the diagonal band and the random-simple and random-holed families at 10^4, 10^5 and 10^6
 //! pixels. Single thread; every time is the median of 5 runs (3 at 10^6 pixels and for

@@ -1,4 +1,4 @@
-//! Speed of the min-turn algorithms of *Optimal covering tours with turn costs* (issue 5),
+//! Speed of the min-turn algorithms of *Optimal covering tours with turn costs*,
 //! single thread: the strip cover and `star-cover` on 10^6 pixels, `strips-matching` and
 //! `strips-double` on 10^4 and 10^5 pixels, `boundary-cc`, `thin-cc` and `thin-merge` on thin
 //! pockets of 10^3 and 10^4 pixels, `thin-euler` on a thin Eulerian pocket, and the

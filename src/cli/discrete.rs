@@ -1,4 +1,4 @@
-//! Discrete milling at the command line (issue 17): the files of the general model (`.dm`,
+//! Discrete milling at the command line: the files of the general model (`.dm`,
 //! `.json` instances, `.vox` voxel regions, `.hex` hexagonal cells) go through `info`,
 //! `validate`, `exact` and `solve` here, and `gen` writes its families (`voxel`, `hex`,
 //! `honeycomb`, `plane`). Grid files keep their own path; a grid region is the special case

@@ -1,4 +1,4 @@
-//! Orthogonal polygons with arbitrary (exact) coordinates at the command line (issue 18): a
+//! Orthogonal polygons with arbitrary (exact) coordinates at the command line: a
 //! `.wkt` file with a non-integral coordinate is read by [`mowmill::ortho`], checked for
 //! feasibility first (can a unit square cutter mill it at all?), and `validate` runs the exact
 //! milling checker on an ortho tour. Integral `.wkt` files keep the pixel path.

@@ -1,5 +1,5 @@
 //! Pictures of an orthogonal polygon with exact coordinates and a tour of the unit square
-//! cutter over it (issue 18's figures), as SVG or PNG, in the conventions of [`crate::draw`]:
+//! cutter over it (the ortho figures), as SVG or PNG, in the conventions of [`crate::draw`]:
 //! title above, caption below, the same palette, fills and turn marks.
 //!
 //! - **Polygon.** Outer rings filled light grey, holes white, every ring outlined dark.

@@ -1,5 +1,5 @@
-//! Deterministic random orthogonal polygons with non-integral coordinates (issue 18's
-//! generators): perturbed integer polygons, thin slivers, and polygons with a feature narrower
+//! Deterministic random orthogonal polygons with non-integral coordinates (the
+//! ortho generators): perturbed integer polygons, thin slivers, and polygons with a feature narrower
 //! than the cutter.
 //!
 //! Every generator is a function of its family, size and seed only (ChaCha8 streams of

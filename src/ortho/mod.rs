@@ -1,5 +1,5 @@
 //! Milling orthogonal polygons with arbitrary (non-integral) coordinates by a unit square
-//! cutter: exact input, an exact checker, and the feasibility test. Issue 18's foundation for
+//! cutter: exact input, an exact checker, and the feasibility test. The foundation for
 //! Corollary 4 of *Lawn mowing and milling* and Theorem 5.7 of *Optimal covering tours with
 //! turn costs*.
 //!
