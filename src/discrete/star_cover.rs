@@ -665,7 +665,7 @@ fn run_discrete(inst: &Discrete, options: &Options) -> Result<Solution<DiscreteC
         )));
     }
     let star = star_cover_in(inst, &options.greedy_order);
-    let (tour, stats) = super::merge::merge(inst, &star.cycles);
+    let (tour, stats) = super::merge::merge_with(inst, &star.cycles, options.merge);
     let mut certificates = BTreeMap::new();
     certificates.insert("rooks".to_string(), star.rooks.len() as i64);
     certificates.insert("rings".to_string(), star.rings as i64);
