@@ -622,9 +622,9 @@ mod tests {
     use super::*;
     use crate::discrete::check::check;
 
-    #[test]
-    fn theorem_4_2_fails_across_a_bridge() {
-        // Straight paths 0..=4 and 5..=9, bridge 2-7 unmatched at both ends.
+    /// Straight paths 0..=4 and 5..=9, bridge 2-7 unmatched at both ends, and the cover by
+    /// the two back-and-forth walks of the paths.
+    fn bridge() -> (Discrete, Vec<VertexWalk>) {
         let mut edges: Vec<(u32, u32)> = (0..4).map(|i| (i, i + 1)).collect();
         edges.extend((5..9).map(|i| (i, i + 1)));
         edges.push((2, 7));
@@ -632,6 +632,12 @@ mod tests {
         collinear.extend((6..9).map(|i| (i, i - 1, i + 1)));
         let inst = Discrete::new(10, &edges, &collinear, None).unwrap();
         let cover = vec![vec![0, 1, 2, 3, 4, 3, 2, 1], vec![5, 6, 7, 8, 9, 8, 7, 6]];
+        (inst, cover)
+    }
+
+    #[test]
+    fn theorem_4_2_fails_across_a_bridge() {
+        let (inst, cover) = bridge();
         let rep = check(&inst, &cover);
         assert_eq!((rep.turns, rep.cycles), (8, 2));
         let (tour, stats) = merge(&inst, &cover);
@@ -653,13 +659,7 @@ mod tests {
         // The bridge instance: the naive order must also cross the bridge (a detour between
         // settled vertices) and stay within t + 4(c - 1); on the star cover of a 5 x 5 grid
         // graph both strategies give one valid tour within the proven bound.
-        let mut edges: Vec<(u32, u32)> = (0..4).map(|i| (i, i + 1)).collect();
-        edges.extend((5..9).map(|i| (i, i + 1)));
-        edges.push((2, 7));
-        let mut collinear: Vec<(u32, u32, u32)> = (1..4).map(|i| (i, i - 1, i + 1)).collect();
-        collinear.extend((6..9).map(|i| (i, i - 1, i + 1)));
-        let inst = Discrete::new(10, &edges, &collinear, None).unwrap();
-        let cover = vec![vec![0, 1, 2, 3, 4, 3, 2, 1], vec![5, 6, 7, 8, 9, 8, 7, 6]];
+        let (inst, cover) = bridge();
         let (tour, stats) = merge_with(&inst, &cover, Merge::Naive);
         let t = check(&inst, &tour);
         assert!(t.valid && tour.len() == 1);
