@@ -69,6 +69,7 @@
 pub mod algorithms;
 pub mod bounds;
 pub mod checker;
+pub mod claims;
 pub mod discrete;
 pub mod draw;
 pub mod error;

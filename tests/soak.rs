@@ -2,6 +2,7 @@
 //! mutations of the committed fixtures; it must return `Ok` or an `Err` with a message, never
 //! panic. 64 cases per reader by default; `PROPTEST_CASES` raises it (`scripts/soak.sh` does).
 
+use mowmill::claims::{read_hunts, read_tight};
 use mowmill::discrete::format::{DiscreteCover, parse_discrete, parse_json, parse_text};
 use mowmill::discrete::lattice::{HexRegion, VoxelRegion};
 use mowmill::gridfile::GridFile;
@@ -10,7 +11,6 @@ use mowmill::harness::manifest::Recorded;
 use mowmill::harness::{rows, stats};
 use mowmill::ortho::Polygon;
 use mowmill::pixel_list::parse_pixel_list;
-use mowmill::tight::claims::{read_hunts, read_tight};
 use mowmill::wkt::{parse_poly, parse_wkt};
 use mowmill::{CycleCover, Result};
 use proptest::prelude::*;

@@ -181,14 +181,14 @@ fn tight_and_claims_commands_write_their_tables_and_gate_on_contradictions() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let csv = std::fs::read_to_string(out.join("tight.csv")).unwrap();
     assert!(csv.starts_with(&tight::TIGHT_COLUMNS.join(",")));
-    let rows = tight::claims::read_tight(&out.join("tight.csv")).unwrap();
+    let rows = mowmill::claims::read_tight(&out.join("tight.csv")).unwrap();
     assert!(
         rows.iter()
             .any(|r| r.family == "thin43" && r.quantity == "gadget_naive_turns")
     );
     assert!(out.join("tight.md").exists() && out.join("claims.md").exists());
     let claims = std::fs::read_to_string(out.join("claims.csv")).unwrap();
-    assert!(claims.starts_with(&tight::claims::CLAIM_COLUMNS.join(",")));
+    assert!(claims.starts_with(&mowmill::claims::CLAIM_COLUMNS.join(",")));
     for id in [
         "Theorem 5",
         "Theorem 7",

@@ -5,7 +5,7 @@
 //! comes from, and every [`Algorithm`](super::Algorithm) lists the [`Claim`]s its outputs are
 //! measured against (which theorem, on which objectives, and whether it is the paper's
 //! algorithm or our reading of its proof on pixels). The claims table
-//! ([`crate::tight::claims`]) has one row per entry of [`THEOREMS`] and takes the row's
+//! ([`crate::claims`]) has one row per entry of [`THEOREMS`] and takes the row's
 //! algorithms from the registry; a theorem that no algorithm claims is "not implemented".
 //!
 //! An entry is one claim of a theorem: a theorem with several bounds (a cycle cover and a tour,

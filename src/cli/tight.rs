@@ -61,7 +61,7 @@ pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
     let results = a.from.join("results.csv");
     if results.exists() {
         let rows = harness::rows::read_rows(&results)?;
-        let mut table = tight::claims::table(&rows, &tight_rows);
+        let mut table = mowmill::claims::table(&rows, &tight_rows);
         add_hunts(&mut table, Path::new("results/hunt"))?;
         write_claims(&table, &a.from, &out)?;
     } else {
@@ -94,11 +94,11 @@ pub fn tight_command(a: TightArgs) -> Result<ExitCode> {
 
 /// Fills the claims table's column "worst found by search" from `dir/summary.csv` (a hunt
 /// suite), or says why it stays empty.
-fn add_hunts(table: &mut [mowmill::tight::claims::ClaimRow], dir: &Path) -> Result<()> {
+fn add_hunts(table: &mut [mowmill::claims::ClaimRow], dir: &Path) -> Result<()> {
     let summary = dir.join("summary.csv");
     if summary.exists() {
-        let hunts = mowmill::tight::claims::read_hunts(&summary)?;
-        mowmill::tight::claims::add_hunts(table, &hunts);
+        let hunts = mowmill::claims::read_hunts(&summary)?;
+        mowmill::claims::add_hunts(table, &hunts);
     } else {
         eprintln!(
             "no {}: the column \"worst found by search\" stays empty (run `mowmill hunt --suite \
@@ -111,12 +111,8 @@ fn add_hunts(table: &mut [mowmill::tight::claims::ClaimRow], dir: &Path) -> Resu
 }
 
 /// Writes claims.csv and claims.md into `out`, prints the table; returns the contradictions.
-pub fn write_claims(
-    table: &[mowmill::tight::claims::ClaimRow],
-    from: &Path,
-    out: &Path,
-) -> Result<usize> {
-    use mowmill::tight::claims;
+pub fn write_claims(table: &[mowmill::claims::ClaimRow], from: &Path, out: &Path) -> Result<usize> {
+    use mowmill::claims;
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     claims::write_csv(table, &out.join("claims.csv"))?;
     let md = claims::markdown(table, &from.display().to_string());
@@ -138,7 +134,7 @@ pub fn claims_command(
     out: Option<&Path>,
     findings: Option<&Path>,
 ) -> Result<ExitCode> {
-    use mowmill::tight::claims;
+    use mowmill::claims;
     let sources = claims::Sources::new(from)?;
     let rows = sources.read_rows()?;
     // Rows that contradict themselves fail the command whichever claim they belong to (an

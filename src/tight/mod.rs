@@ -17,8 +17,6 @@
 //! (the `--coverage4` rewrite of Theorem 5.6): where it falls short the row says `not
 //! reached`, a gap of our construction and not evidence against the theorem.
 
-pub mod claims;
-pub mod evidence;
 pub mod figures;
 
 use crate::algorithms::{self, Merge, Objective as AlgoObjective, Options};
@@ -557,7 +555,7 @@ mod tests {
         let run = TightRun { members: vec![m] };
         let path = std::env::temp_dir().join(format!("mowmill-tight-{}.csv", std::process::id()));
         write_csv(&run, &path).unwrap();
-        let back = claims::read_tight(&path).unwrap();
+        let back = crate::claims::read_tight(&path).unwrap();
         let _ = std::fs::remove_file(&path);
         assert_eq!(back.len(), run.rows().count());
         for (a, b) in back.iter().zip(run.rows()) {
