@@ -379,3 +379,52 @@ fn hunts_against_best_are_reproducible() {
     assert_eq!(a, run("5", "hunt-best-b"));
     assert_ne!(a, run("6", "hunt-best-c"));
 }
+
+/// A hunt killed while it runs keeps what it found: `hunt.csv` and the worst instances are
+/// written at every checkpoint (the first round always sets a worst ratio), only
+/// `manifest.json`, written when the hunt ends, is missing.
+#[test]
+fn a_killed_hunt_keeps_its_checkpoint() {
+    let dir = temp_dir("hunt-killed");
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_mowmill"))
+        .args([
+            "hunt",
+            "--algo",
+            "milling25",
+            "--objective",
+            "length",
+            "--against",
+            "bound",
+            "--family",
+            "random-simple",
+            "--min-n",
+            "20",
+            "--max-n",
+            "40",
+            "--budget",
+            "600",
+            "--seed",
+            "1",
+            "--out",
+            dir.to_str().unwrap(),
+        ])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let grid = dir.join("worst/rank-01.grid");
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    while !grid.exists() && std::time::Instant::now() < deadline {
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+    // A checkpoint may be half written when the kill lands: wait for the next round's.
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(grid.exists(), "no checkpoint within 60 s");
+    assert!(!dir.join("manifest.json").exists());
+    let rows = rows(&dir);
+    assert!(!rows.is_empty());
+    let w = worst(&dir);
+    let n = w[0].region.len();
+    assert!((20..=40).contains(&n), "N = {n}");
+}

@@ -401,8 +401,15 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             Against::Opt => "",
         }
     );
-    let report =
-        pool.install(|| hunt::hunt(subject, &opts, |line| eprintln!("hunt: {name}: {line}")))?;
+    // The files but the manifest are written at every checkpoint: a killed hunt keeps them.
+    let report = pool.install(|| {
+        hunt::hunt(
+            subject,
+            &opts,
+            |line| eprintln!("hunt: {name}: {line}"),
+            |so_far| hunt::output::write_all(&out, so_far, &name, &opts),
+        )
+    })?;
     hunt::output::write_all(&out, &report, &name, &opts)?;
     let best = report.worst.first();
     let manifest = serde_json::json!({

@@ -218,6 +218,9 @@ pub struct HuntReport {
     pub seconds: f64,
 }
 
+/// The longest time between two checkpoints of a running hunt ([`hunt`]), in seconds.
+pub const CHECKPOINT_SECONDS: f64 = 60.0;
+
 /// The share of the evaluations (or of the budget) spent sampling the generator before the
 /// chains start.
 const EXPLORE: f64 = 0.3;
@@ -756,10 +759,15 @@ fn assess(
 }
 
 /// Runs a hunt. `report` is called with each new best and each finding as they happen.
+/// Runs the hunt. `report` receives one line per new worst ratio and finding; `checkpoint`
+/// the report so far (records, the kept worst regions, the findings; no walk solved again)
+/// after every round that found something and at least every [`CHECKPOINT_SECONDS`], so that
+/// a caller can write it out and a killed hunt loses at most that much.
 pub fn hunt(
     subject: Subject<'_>,
     opts: &HuntOptions,
     mut report: impl FnMut(&str),
+    mut checkpoint: impl FnMut(&HuntReport) -> crate::error::Result<()>,
 ) -> crate::error::Result<HuntReport> {
     let start = Instant::now();
     let shape = Shape::of(opts.family);
@@ -813,7 +821,9 @@ pub fn hunt(
     let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
     // The search keeps more distinct worst regions than it saves, to seed and restart chains.
     let pool = opts.keep.max(2 * chains_n);
+    let mut last_checkpoint = Instant::now();
     loop {
+        let found_before = (best, rep.findings.len());
         let remaining = match opts.stop {
             Stop::Evaluations(k) => k.saturating_sub(evaluation),
             Stop::Seconds(s) => {
@@ -981,6 +991,24 @@ pub fn hunt(
                     }
                 }
             }
+        }
+        if found_before != (best, rep.findings.len())
+            || last_checkpoint.elapsed().as_secs_f64() >= CHECKPOINT_SECONDS
+        {
+            let (solves, hits) = *cache.solves.lock().expect("count");
+            checkpoint(&HuntReport {
+                records: rep.records.clone(),
+                worst: worst
+                    .iter()
+                    .take(opts.keep)
+                    .map(|(_, f)| f.clone())
+                    .collect(),
+                findings: rep.findings.clone(),
+                exact_solves: solves,
+                cache_hits: hits,
+                seconds: start.elapsed().as_secs_f64(),
+            })?;
+            last_checkpoint = Instant::now();
         }
     }
     rep.worst = worst.into_iter().take(opts.keep).map(|(_, f)| f).collect();

@@ -2,6 +2,10 @@
 //! instances: `.grid`, the algorithm's walk, the optimal walk, a side-by-side figure with turns
 //! marked), `findings/` (violations, invalid walks, errors, false certificates, each with a
 //! note), `best.{png,svg}` (best ratio against evaluations) and `manifest.json`.
+//!
+//! All but `manifest.json` are also written while the hunt runs ([`write_all`] as the hunt's
+//! checkpoint: after every new worst ratio or finding, and at least once a minute), so a killed
+//! hunt keeps what it found; `manifest.json` is written last, when the hunt ends.
 
 use super::{Found, HuntOptions, HuntReport, Record};
 use crate::draw::{DrawOptions, draw};
@@ -39,8 +43,15 @@ fn opt<T: ToString>(x: Option<T>) -> String {
 }
 
 /// Writes `hunt.csv`; ratios with 6 decimals so that the same run gives the same bytes apart
-/// from `elapsed`.
+/// from `elapsed`. Written beside and renamed over the old file, so that a hunt killed during a
+/// checkpoint leaves the previous checkpoint's file whole.
 pub fn write_csv(path: &Path, records: &[Record]) -> Result<()> {
+    let tmp = path.with_extension("csv.tmp");
+    write_csv_to(&tmp, records)?;
+    std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e))
+}
+
+fn write_csv_to(path: &Path, records: &[Record]) -> Result<()> {
     let mut w = csv::Writer::from_path(path)
         .map_err(|e| Error::invalid(format!("{}: {e}", path.display())))?;
     let csv_err = |e: csv::Error| Error::invalid(format!("{}: {e}", path.display()));
@@ -138,12 +149,20 @@ fn save(
         ("against", opts.against.to_string()),
         ("best_source", f.best_source.clone()),
     ];
-    GridFile::with_meta(f.region.clone(), &meta).write(&dir.join(format!("{stem}.grid")))?;
-    if let Some(w) = &f.walk {
-        w.write(&dir.join(format!("{stem}.walk.json")))?;
-    }
-    if let Some(w) = &f.optimal_walk {
-        w.write(&dir.join(format!("{stem}.optimal.json")))?;
+    // Renamed into place: a hunt killed during a checkpoint leaves whole instance files.
+    let (grid, tmp) = (
+        dir.join(format!("{stem}.grid")),
+        dir.join(format!(".{stem}.grid.tmp")),
+    );
+    GridFile::with_meta(f.region.clone(), &meta).write(&tmp)?;
+    std::fs::rename(&tmp, &grid).map_err(|e| Error::io(&grid, e))?;
+    // A checkpoint's files under the same stem may be another region's: none is left behind.
+    for (walk, suffix) in [(&f.walk, "walk"), (&f.optimal_walk, "optimal")] {
+        let path = dir.join(format!("{stem}.{suffix}.json"));
+        match walk {
+            Some(w) => w.write(&path)?,
+            None => remove_stale(&path)?,
+        }
     }
     let scratch = dir.join(format!(".{stem}.tmp.svg"));
     let left = svg_of(
@@ -166,11 +185,21 @@ fn save(
     )?;
     let path = dir.join(format!("{stem}.svg"));
     std::fs::write(&path, side_by_side(&left, &right)).map_err(|e| Error::io(&path, e))?;
-    if !note.is_empty() {
-        let path = dir.join(format!("{stem}.txt"));
+    let path = dir.join(format!("{stem}.txt"));
+    if note.is_empty() {
+        remove_stale(&path)?;
+    } else {
         std::fs::write(&path, format!("{note}\n")).map_err(|e| Error::io(&path, e))?;
     }
     Ok(())
+}
+
+/// Removes a file an earlier checkpoint wrote, if it is there.
+fn remove_stale(path: &Path) -> Result<()> {
+    match std::fs::remove_file(path) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(Error::io(path, e)),
+        _ => Ok(()),
+    }
 }
 
 /// The best ratio against evaluations.
