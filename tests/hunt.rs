@@ -382,10 +382,12 @@ fn hunts_against_best_are_reproducible() {
 
 /// A hunt killed while it runs keeps what it found: `hunt.csv` and the worst instances are
 /// written at every checkpoint (the first round always sets a worst ratio), only
-/// `manifest.json`, written when the hunt ends, is missing.
+/// `manifest.json`, written when the hunt ends, is missing (an earlier one is removed first).
 #[test]
 fn a_killed_hunt_keeps_its_checkpoint() {
     let dir = temp_dir("hunt-killed");
+    // An earlier run's manifest in the same folder is removed before the hunt starts.
+    std::fs::write(dir.join("manifest.json"), "{}").unwrap();
     let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_mowmill"))
         .args([
             "hunt",

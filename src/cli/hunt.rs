@@ -401,7 +401,14 @@ fn run_one(a: &HuntArgs) -> Result<(Done, ExitCode)> {
             Against::Opt => "",
         }
     );
-    // The files but the manifest are written at every checkpoint: a killed hunt keeps them.
+    // The files but the manifest are written at every checkpoint: a killed hunt keeps them, and
+    // a missing manifest says it did not end (so an earlier run's manifest goes first).
+    match std::fs::remove_file(out.join("manifest.json")) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            return Err(mowmill::Error::io(&out.join("manifest.json"), e).into());
+        }
+        _ => {}
+    }
     let report = pool.install(|| {
         hunt::hunt(
             subject,

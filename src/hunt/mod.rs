@@ -758,7 +758,6 @@ fn assess(
     out
 }
 
-/// Runs a hunt. `report` is called with each new best and each finding as they happen.
 /// Runs the hunt. `report` receives one line per new worst ratio and finding; `checkpoint`
 /// the report so far (records, the kept worst regions, the findings; no walk solved again)
 /// after every round that found something and at least every [`CHECKPOINT_SECONDS`], so that
