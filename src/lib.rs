@@ -68,35 +68,25 @@
 
 pub mod algorithms;
 pub mod bounds;
-pub mod checker;
 pub mod claims;
 pub mod discrete;
 pub mod draw;
-pub mod error;
 pub mod evaluate;
 pub mod exact;
 // Dinic max-flow only serves the cuts of the exact models and the matching LP.
 pub(crate) mod flow;
-pub mod generate;
-pub mod gridfile;
 pub mod harness;
 pub mod hunt;
-pub mod input;
-pub mod instance;
-pub mod lawn_check;
 pub mod model;
 pub mod ortho;
 pub mod outside;
-pub mod pixel_list;
-pub mod region;
-pub mod strip_cover;
 pub mod tight;
-pub mod topology;
-pub mod tour;
-pub mod tsplib;
 pub mod warm_start;
-pub mod wkt;
 
 pub use error::{Error, Result};
+pub use mowmill_core::{
+    checker, error, generate, gridfile, input, instance, lawn_check, pixel_list, region,
+    strip_cover, topology, tour, tsplib, wkt,
+};
 pub use region::{Dir, Pixel, Region, Symmetry};
 pub use tour::{CycleCover, Walk};

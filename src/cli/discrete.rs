@@ -59,18 +59,7 @@ pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
     let inst = read(path)?;
     let cover = DiscreteCover::read(tour)?;
     let report = check::check(&inst, &cover.cycles);
-    super::print_validation(
-        &report,
-        &super::Checked {
-            valid: report.valid,
-            length: report.length,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: report.max_coverage,
-            error: report.error.as_deref(),
-        },
-        as_json,
-    )
+    super::print_validation(&report, &super::Checked::from(&report), as_json)
 }
 
 /// `exact` on a discrete instance (the passage model of [`dexact`]).
@@ -92,7 +81,7 @@ pub fn exact(
         .into());
     }
     let result = dexact::solve(&inst, objective, &opts);
-    if let (Some(out), Some(walks)) = (tour_out, &result.walks) {
+    if let (Some(out), Some(walks)) = (tour_out, &result.cover) {
         DiscreteCover::new(walks.clone()).write(out)?;
     }
     if as_json {
@@ -409,12 +398,8 @@ pub fn draw(
     let inst = read(path)?;
     let cover = tour.map(DiscreteCover::read).transpose()?;
     let walks = cover.as_ref().map(|c| c.cycles.as_slice());
-    let name = path.file_stem().map_or_else(
-        || path.display().to_string(),
-        |s| s.to_string_lossy().into_owned(),
-    );
     let opts = mowmill::draw::DrawOptions {
-        title: Some(title.unwrap_or(name)),
+        title: Some(super::title_or_stem(path, title)),
         caption: Some(mowmill::discrete::draw::caption(&inst, walks)),
         ..mowmill::draw::DrawOptions::default()
     };

@@ -100,18 +100,7 @@ fn grid_validate(file: &Path, tour: &Path, mode: Mode, json: bool) -> anyhow::Re
     let inst = Instance::read(file)?;
     let cover = CycleCover::read(tour)?;
     let report = checker::check(&inst.region, &cover, mode);
-    print_validation(
-        &report,
-        &Checked {
-            valid: report.valid,
-            length: report.length,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: report.max_coverage,
-            error: report.error.as_deref(),
-        },
-        json,
-    )
+    print_validation(&report, &Checked::from(&report), json)
 }
 
 /// `draw` on a grid region, the caption recounting the tour by the milling checker.
@@ -144,6 +133,16 @@ fn grid_draw(
     Ok(ExitCode::SUCCESS)
 }
 
+/// The title `draw` gives a picture: `title`, else the file's stem.
+pub fn title_or_stem(path: &Path, title: Option<String>) -> String {
+    title.unwrap_or_else(|| {
+        path.file_stem().map_or_else(
+            || path.display().to_string(),
+            |s| s.to_string_lossy().into_owned(),
+        )
+    })
+}
+
 /// What a checker recounted, as `validate` prints it (both models' reports have these).
 pub struct Checked<'a> {
     pub valid: bool,
@@ -152,6 +151,19 @@ pub struct Checked<'a> {
     pub cycles: usize,
     pub max_coverage: u32,
     pub error: Option<&'a str>,
+}
+
+impl<'a, V> From<&'a checker::Report<V>> for Checked<'a> {
+    fn from(report: &'a checker::Report<V>) -> Checked<'a> {
+        Checked {
+            valid: report.valid,
+            length: report.length,
+            turns: report.turns,
+            cycles: report.cycles,
+            max_coverage: report.max_coverage,
+            error: report.error.as_deref(),
+        }
+    }
 }
 
 /// Prints `validate`'s answer, the whole report as JSON or one line, and gives its exit code

@@ -94,12 +94,8 @@ pub fn draw(
     let polygon = Polygon::read(path)?;
     let walk = tour.map(Tour::read).transpose()?;
     let erosion = ortho::feasibility(&polygon).ok();
-    let name = path.file_stem().map_or_else(
-        || path.display().to_string(),
-        |s| s.to_string_lossy().into_owned(),
-    );
     let opts = mowmill::draw::DrawOptions {
-        title: Some(title.unwrap_or(name)),
+        title: Some(super::title_or_stem(path, title)),
         ..mowmill::draw::DrawOptions::default()
     };
     ortho::draw(&polygon, walk.as_ref(), erosion.as_ref(), out, &opts)?;

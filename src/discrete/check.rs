@@ -8,7 +8,6 @@
 //! zero); a walk of two vertices goes there and back (length 2, two U-turns).
 
 use super::{Discrete, VertexWalk};
-use serde::Serialize;
 use std::fmt;
 
 /// The first thing wrong with a set of walks.
@@ -67,24 +66,8 @@ impl fmt::Display for Violation {
     }
 }
 
-/// What the checker recounted (the JSON keys are those of the grid checker's report).
-#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Report {
-    pub valid: bool,
-    /// Edges walked over all walks.
-    pub length: u64,
-    /// Turn cost over all walks.
-    pub turns: u64,
-    pub cycles: usize,
-    /// The largest number of visits of one vertex.
-    pub max_coverage: u32,
-    pub error: Option<String>,
-    /// Visits per vertex.
-    #[serde(skip)]
-    pub coverage: Vec<u32>,
-    #[serde(skip)]
-    pub violation: Option<Violation>,
-}
+/// What the checker recounted: the grid checker's report type, with this checker's violations.
+pub type Report = crate::checker::Report<Violation>;
 
 /// Checks that `walks` are closed walks of `inst` visiting every vertex, and recounts them.
 ///

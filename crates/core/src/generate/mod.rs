@@ -141,8 +141,9 @@ mod random_simple;
 mod rect;
 mod registry;
 mod ring;
-// Shared with the discrete generators (`crate::discrete::generate`).
-pub(crate) mod rng;
+// Shared with the discrete generators (`mowmill::discrete::generate`).
+#[doc(hidden)]
+pub mod rng;
 mod spec;
 mod spiral;
 mod staircase;
@@ -278,7 +279,7 @@ impl GenParams {
 ///
 /// # Examples
 /// ```
-/// use mowmill::generate::{generate, Family, GenParams};
+/// use mowmill_core::generate::{generate, Family, GenParams};
 /// let p = GenParams { side: Some(5), k: Some(1), ..GenParams::new(Family::Donut, 7) };
 /// let f = generate(&p).unwrap();
 /// assert_eq!(f.meta("n"), Some("16"));
@@ -330,7 +331,7 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
 /// Grid families say so in the registry ([`FamilyInfo::structured`]); the discrete and
 /// orthogonal ones are the families built for a proof's hard case: slivers and narrow features
 /// of polygons, hubs on a path and bridges between straight paths
-/// ([`crate::discrete::generate::STRUCTURED`]).
+/// (`mowmill::discrete::generate::STRUCTURED`).
 pub fn is_structured(family: &str) -> bool {
     if let Ok(f) = family.parse::<Family>() {
         return f.info().structured;

@@ -80,7 +80,7 @@ pub struct LawnReport {
 }
 
 /// Whether lengths are reported in milli-units (Euclidean motion).
-pub(crate) fn is_milli(cutter: Cutter) -> bool {
+pub fn is_milli(cutter: Cutter) -> bool {
     cutter != Cutter::Square
 }
 
@@ -112,7 +112,7 @@ pub fn distance(cutter: Cutter, a: Pixel, b: Pixel) -> f64 {
 /// # Complexity
 /// O(N) for the square lattice; O(N) with a constant of about 10 hexagon tests per pixel for
 /// the hexagonal one.
-pub(crate) fn required_cells(region: &Region, cutter: Cutter) -> Vec<Pixel> {
+pub fn required_cells(region: &Region, cutter: Cutter) -> Vec<Pixel> {
     match cutter {
         Cutter::Square | Cutter::SquareFree => region.pixels().to_vec(),
         Cutter::Disk => {

@@ -35,8 +35,8 @@ use std::fmt::Write as _;
 /// # Examples
 ///
 /// ```
-/// use mowmill::pixel_list::parse_pixel_list;
-/// use mowmill::{Pixel, Region};
+/// use mowmill_core::pixel_list::parse_pixel_list;
+/// use mowmill_core::{Pixel, Region};
 ///
 /// let r = parse_pixel_list("x,y\n0,0\n1, 0 # right of it\n0 1\n", "l.csv").unwrap();
 /// assert_eq!(r.pixels(), &[Pixel::new(0, 0), Pixel::new(1, 0), Pixel::new(0, 1)]);
@@ -133,8 +133,8 @@ pub fn parse_pixel_list(text: &str, file: &str) -> Result<Region> {
 /// # Examples
 ///
 /// ```
-/// use mowmill::pixel_list::to_pixel_list;
-/// use mowmill::Region;
+/// use mowmill_core::pixel_list::to_pixel_list;
+/// use mowmill_core::Region;
 ///
 /// let text = to_pixel_list(&Region::from_ascii("#.\n##\n"));
 /// assert!(text.ends_with("\n0 0\n1 0\n0 1\n"));

@@ -37,7 +37,7 @@ use crate::region::Region;
 /// # Examples
 ///
 /// ```
-/// use mowmill::wkt::parse_poly;
+/// use mowmill_core::wkt::parse_poly;
 ///
 /// // A 4 x 4 square with a 2 x 2 hole: 12 pixels.
 /// let r = parse_poly("4 0 0 4 0 4 4 0 4\n4 1 1 1 3 3 3 3 1\n", "frame.poly").unwrap();

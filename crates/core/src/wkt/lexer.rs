@@ -114,14 +114,14 @@ impl<'a> Lexer<'a> {
 
 /// The value of a number token, computed exactly so that `3.0000000000000000001` is refused.
 #[derive(Debug, PartialEq)]
-pub(crate) enum NumberValue {
+pub enum NumberValue {
     Integer(i64),
     Fraction,
     OutOfRange,
     Malformed,
 }
 
-pub(crate) fn number_value(text: &str) -> NumberValue {
+pub fn number_value(text: &str) -> NumberValue {
     // Fast path for plain integers such as `-12`, the common case.
     if text.len() <= 11
         && let Ok(value) = text.parse::<i64>()
@@ -232,7 +232,7 @@ fn decimal_parts(text: &str) -> Option<Decimal> {
 
 /// The exact value of a number token as a reduced fraction.
 #[derive(Debug, PartialEq)]
-pub(crate) enum ExactValue {
+pub enum ExactValue {
     /// `num / den` in lowest terms, `den > 0`.
     Fraction {
         num: i128,
@@ -247,7 +247,7 @@ pub(crate) enum ExactValue {
 /// fraction `p/q` of two integers without spaces (`7/3`, `-1/2`; the sign, if any, before
 /// `p`, and `q > 0`). Nothing is rounded: a value whose numerator or denominator in lowest terms
 /// would not fit 38 decimal digits is [`ExactValue::OutOfRange`].
-pub(crate) fn exact_value(text: &str) -> ExactValue {
+pub fn exact_value(text: &str) -> ExactValue {
     const MAX_DIGITS: usize = 38; // 10^38 < 2^127
     let integer = |digits: &str| -> Option<i128> {
         let digits = digits.trim_start_matches('0');
@@ -316,6 +316,6 @@ pub(crate) fn exact_value(text: &str) -> ExactValue {
 }
 
 /// The greatest common divisor (gcd(0, 0) = 1, so that dividing by it is always defined).
-pub(crate) fn gcd(a: u128, b: u128) -> u128 {
+pub fn gcd(a: u128, b: u128) -> u128 {
     a.gcd(&b).max(1)
 }

@@ -434,14 +434,14 @@ impl Region {
     }
 
     /// Number of non-empty rows.
-    pub(crate) fn row_count(&self) -> usize {
+    pub fn row_count(&self) -> usize {
         self.row_y.len()
     }
 
     /// The maximal horizontal runs of row `r` (0 ≤ r < [`Region::row_count`], rows by
     /// ascending y): its y and, per run, its leftmost x, rightmost x and the index of its
     /// leftmost pixel.
-    pub(crate) fn row_runs(&self, r: usize) -> (i32, impl Iterator<Item = (i32, i32, usize)> + '_) {
+    pub fn row_runs(&self, r: usize) -> (i32, impl Iterator<Item = (i32, i32, usize)> + '_) {
         let runs = &self.runs[self.row_run[r] as usize..self.row_run[r + 1] as usize];
         (
             self.row_y[r],

@@ -30,8 +30,8 @@ use std::fmt::Write as _;
 /// # Examples
 ///
 /// ```
-/// use mowmill::wkt::to_wkt;
-/// use mowmill::Region;
+/// use mowmill_core::wkt::to_wkt;
+/// use mowmill_core::Region;
 ///
 /// // Two pixels touching at a corner are two polygons meeting at the point (1, 1).
 /// let r = Region::from_ascii(".#\n#.\n");

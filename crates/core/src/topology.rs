@@ -311,7 +311,7 @@ pub fn local_cut_vertices(region: &Region) -> Vec<bool> {
 /// # Complexity
 /// O(1) when pixel `i` has a side neighbour next to each diagonal, else O(log r) for r runs in
 /// the row of that diagonal.
-pub(crate) fn ring_occupancy(region: &Region, i: usize) -> [bool; 8] {
+pub fn ring_occupancy(region: &Region, i: usize) -> [bool; 8] {
     let side = Dir::ALL.map(|d| region.neighbor(i, d));
     let p = region.pixel(i);
     let mut occupied = [false; 8];
@@ -349,7 +349,7 @@ pub fn ring(p: Pixel) -> [Pixel; 8] {
 /// touch its sides. 1 means the pixel is *simple* (adding or removing it changes neither the
 /// components nor the holes); 2 or more means it is a local cut vertex when it belongs to the
 /// region.
-pub(crate) fn connectivity_number(occupied: [bool; 8]) -> u32 {
+pub fn connectivity_number(occupied: [bool; 8]) -> u32 {
     (0..4)
         .map(|k| {
             let (a, b, c) = (
@@ -370,7 +370,7 @@ fn connectivity_number_at(region: &Region, p: Pixel) -> u32 {
 }
 
 /// Colour classes of the checkerboard: (#black, #white), black when x + y is even.
-pub(crate) fn colour_counts(region: &Region) -> (usize, usize) {
+pub fn colour_counts(region: &Region) -> (usize, usize) {
     let black = region.pixels().iter().filter(|p| p.is_black()).count();
     (black, region.len() - black)
 }
@@ -450,7 +450,7 @@ pub fn strips(region: &Region, horizontal: bool) -> Vec<Strip> {
 /// The biconnected components (blocks) of the grid graph, as pixel lists: iterative
 /// Hopcroft–Tarjan with an edge stack. A bridge is a block of two pixels. Blocks come in the
 /// order the search closes them (the order Theorem 5's tours of the blocks are built in).
-pub(crate) fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
+pub fn biconnected_blocks(region: &Region) -> Vec<Vec<usize>> {
     let mut blocks = Vec::new();
     for_each_block(region, |block| blocks.push(std::mem::take(block)));
     blocks
@@ -529,7 +529,7 @@ fn for_each_block(region: &Region, mut f: impl FnMut(&mut Vec<usize>)) {
 /// What the boundary does at a saddle: a lattice point where two region pixels touch only
 /// diagonally (the other two pixels around it are empty).
 #[derive(Clone, Copy, Debug)]
-pub(crate) enum Saddle<'a> {
+pub enum Saddle<'a> {
     /// Each pixel keeps its own corner, as 4-adjacency has it: rings of different components
     /// stay apart, and a ring may pass a saddle twice (the drawn outline).
     Apart,
@@ -540,13 +540,13 @@ pub(crate) enum Saddle<'a> {
 
 /// A closed boundary ring of a region.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct Ring {
+pub struct Ring {
     /// Corners (collinear points dropped, the first not repeated), traced with the region on
     /// the left (outer boundaries counter-clockwise, holes clockwise), from the lowest, then
     /// leftmost, one.
-    pub(crate) corners: Vec<(i64, i64)>,
+    pub corners: Vec<(i64, i64)>,
     /// Index of a pixel the ring bounds (one on its left).
-    pub(crate) pixel: usize,
+    pub pixel: usize,
 }
 
 /// The region's boundary as closed rings, in the order of their first corner (lowest, then
@@ -560,7 +560,7 @@ pub(crate) struct Ring {
 /// # Complexity
 /// O(N + P log P) time and O(N) extra space for N pixels and P rings (i64 corners, so a pixel
 /// at `i32::MAX` has its far corners), never the area of the bounding box.
-pub(crate) fn boundary_rings(region: &Region, saddle: Saddle) -> Vec<Ring> {
+pub fn boundary_rings(region: &Region, saddle: Saddle) -> Vec<Ring> {
     let mut visited = vec![false; 4 * region.len()];
     let mut rings = Vec::new();
     for i in 0..region.len() {
@@ -637,7 +637,7 @@ fn edge_end(pixel: Pixel, side: Dir) -> (i64, i64) {
 ///
 /// # Complexity
 /// O((n + edges) α(n)) (petgraph's union-find).
-pub(crate) fn graph_components(
+pub fn graph_components(
     n: usize,
     edges: impl IntoIterator<Item = (usize, usize)>,
 ) -> (Vec<u32>, usize) {

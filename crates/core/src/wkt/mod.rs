@@ -3,7 +3,7 @@
 //! [`parse_wkt`] reads one `POLYGON` or `MULTIPOLYGON` (keywords in any case, free whitespace)
 //! whose vertices are integers and whose edges are horizontal or vertical. Numbers may be
 //! written `3`, `-2`, `+3`, `3.0`, `1e1` or `6/2` as long as their value is an integer (the
-//! polygons of [`crate::ortho`] take any such number, integral or not, by the same syntax). The region is
+//! polygons of `mowmill::ortho` take any such number, integral or not, by the same syntax). The region is
 //! the set of pixels whose centre lies inside the geometry: inside the outer ring of a polygon
 //! and inside none of its holes. Repeated and collinear consecutive vertices are merged, and ring
 //! orientation is ignored.
@@ -42,7 +42,8 @@ use crate::region::Region;
 use parser::Parser;
 use validate::Geometry;
 
-pub(crate) mod lexer;
+#[doc(hidden)]
+pub mod lexer;
 mod parser;
 mod poly;
 mod raster;
@@ -52,7 +53,7 @@ mod writer;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use parser::Coordinate;
+pub use parser::Coordinate;
 pub use poly::parse_poly;
 pub use writer::to_wkt;
 
@@ -87,8 +88,8 @@ const MAX_COORD: i64 = crate::region::MAX_COORD as i64 + 1;
 /// # Examples
 ///
 /// ```
-/// use mowmill::wkt::parse_wkt;
-/// use mowmill::Region;
+/// use mowmill_core::wkt::parse_wkt;
+/// use mowmill_core::Region;
 ///
 /// let r = parse_wkt("POLYGON ((0 0, 3 0, 3 2, 0 2, 0 0))", "ex.wkt").unwrap();
 /// assert_eq!(r, Region::rectangle(3, 2));
@@ -104,19 +105,16 @@ pub fn parse_wkt(text: &str, file: &str) -> Result<Region> {
 
 /// A ring of a valid geometry: its corners (repeated and collinear vertices merged, the first
 /// not repeated), the index of its polygon in the geometry, and whether it is a hole.
-pub(crate) struct ValidRing<C> {
-    pub(crate) corners: Vec<(C, C)>,
-    pub(crate) polygon: usize,
-    pub(crate) hole: bool,
+pub struct ValidRing<C> {
+    pub corners: Vec<(C, C)>,
+    pub polygon: usize,
+    pub hole: bool,
 }
 
 /// Parses a WKT `POLYGON` or `MULTIPOLYGON` with coordinates of type `C` and checks it by the
 /// rules of [`parse_wkt`] (all but the pixel limit): the one reader of exact polygons
-/// ([`crate::ortho`]) and of pixel regions.
-pub(crate) fn parse_valid_rings<C: Coordinate>(
-    text: &str,
-    file: &str,
-) -> Result<Vec<ValidRing<C>>> {
+/// (`mowmill::ortho`) and of pixel regions.
+pub fn parse_valid_rings<C: Coordinate>(text: &str, file: &str) -> Result<Vec<ValidRing<C>>> {
     let (rings, _) = Parser::<C>::new(text, file).geometry()?;
     let geometry = Geometry { rings, file };
     geometry.check_rings_meet_at_points()?;

@@ -384,7 +384,8 @@ fn large_random_region_round_trips() {
 fn every_committed_instance_round_trips() {
     // parse_wkt refuses rings that touch themselves, so a round trip also shows the written
     // WKT valid.
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    // The workspace root, two levels above this crate.
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."));
     let mut stack = vec![root.join("instances"), root.join("tests")];
     let mut read = 0;
     while let Some(dir) = stack.pop() {

@@ -19,8 +19,8 @@ use std::fmt::Write as _;
 /// # Examples
 ///
 /// ```
-/// use mowmill::tsplib::to_tsplib;
-/// use mowmill::Region;
+/// use mowmill_core::tsplib::to_tsplib;
+/// use mowmill_core::Region;
 ///
 /// let text = to_tsplib(&Region::rectangle(2, 1), "pair");
 /// assert!(text.starts_with("NAME: pair\nTYPE: TSP\n"));

@@ -97,24 +97,25 @@ impl fmt::Display for Violation {
     }
 }
 
-/// What the checker recounted. The JSON keys of `mowmill validate` are these field names.
+/// What a checker recounted: the grid checker's report, and (with its own `V`) the discrete
+/// checker's, one type for both. The JSON keys of `mowmill validate` are these field names.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
-pub struct Report {
+pub struct Report<V = Violation> {
     pub valid: bool,
-    /// Total number of unit moves over all walks.
+    /// Total number of unit moves (edges walked) over all walks.
     pub length: u64,
     /// Total turn cost over all walks (90° = 1, U-turn = 2).
     pub turns: u64,
     pub cycles: usize,
-    /// The largest number of visits of one pixel of the region.
+    /// The largest number of visits of one pixel (vertex) of the instance.
     pub max_coverage: u32,
     /// The first violation, if any.
     pub error: Option<String>,
-    /// Visits per pixel of the region, by pixel index.
+    /// Visits per pixel (vertex) of the instance, by index.
     #[serde(skip)]
     pub coverage: Vec<u32>,
     #[serde(skip)]
-    pub violation: Option<Violation>,
+    pub violation: Option<V>,
 }
 
 /// Length and turn cost of one closed walk, or the first bad step.

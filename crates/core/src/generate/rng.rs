@@ -4,7 +4,7 @@ use rand::RngExt;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-pub(crate) type Rng = ChaCha8Rng;
+pub type Rng = ChaCha8Rng;
 
 pub(super) fn splitmix(mut z: u64) -> u64 {
     z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
@@ -14,12 +14,12 @@ pub(super) fn splitmix(mut z: u64) -> u64 {
 }
 
 /// An independent ChaCha8 stream for (`seed`, `tag`).
-pub(crate) fn rng_for(seed: u64, tag: u64) -> Rng {
+pub fn rng_for(seed: u64, tag: u64) -> Rng {
     Rng::seed_from_u64(splitmix(seed ^ splitmix(tag)))
 }
 
 /// Uniform in `0..n` (n ≥ 1), through u64 so that 32- and 64-bit machines agree.
-pub(crate) fn below(rng: &mut Rng, n: usize) -> usize {
+pub fn below(rng: &mut Rng, n: usize) -> usize {
     rng.random_range(0..n as u64) as usize
 }
 
@@ -28,7 +28,7 @@ pub(super) fn between(rng: &mut Rng, lo: usize, hi: usize) -> usize {
     lo + below(rng, hi - lo + 1)
 }
 
-pub(crate) fn unit(rng: &mut Rng) -> f64 {
+pub fn unit(rng: &mut Rng) -> f64 {
     rng.random::<f64>()
 }
 

@@ -1,0 +1,26 @@
+//! mowmill's core: what every other layer reads and nothing in it reads back. A grid
+//! [`Region`] and the facts about it ([`topology`], [`strip_cover`]); its readers and writers
+//! ([`instance`], [`gridfile`], [`wkt`], [`pixel_list`], [`tsplib`]); the instance families
+//! ([`generate`]); walks and cycle covers ([`tour`]); and the independent checkers that recount
+//! a walk ([`checker`], [`lawn_check`]). It has no algorithm, no exact model and no HiGHS: a
+//! change to a checker rebuilds this crate and its tests alone (`cargo test -p mowmill-core`).
+//! The `mowmill` crate re-exports every module under the same name.
+
+pub mod checker;
+pub mod error;
+pub mod generate;
+pub mod gridfile;
+pub mod input;
+pub mod instance;
+pub mod lawn_check;
+pub mod pixel_list;
+pub mod region;
+pub mod strip_cover;
+pub mod topology;
+pub mod tour;
+pub mod tsplib;
+pub mod wkt;
+
+pub use error::{Error, Result};
+pub use region::{Dir, Pixel, Region, Symmetry};
+pub use tour::{CycleCover, Walk};
