@@ -133,6 +133,28 @@ pub fn draw(
     opts: &DrawOptions,
 ) -> Result<()> {
     let format = Format::of(out)?;
+    write_picture(&scene(region, cover, opts)?, format, out)
+}
+
+/// Draws two pictures of [`draw`] next to each other into one file (`svg` or `png` by `out`'s
+/// extension), each in its own half of the canvas: an algorithm's walk beside the best known.
+pub fn draw_beside(
+    left: (&Region, Option<&CycleCover>, &DrawOptions),
+    right: (&Region, Option<&CycleCover>, &DrawOptions),
+    out: &Path,
+) -> Result<()> {
+    let format = Format::of(out)?;
+    let left = scene(left.0, left.1, left.2)?;
+    let right = scene(right.0, right.1, right.2)?;
+    write_picture(&Beside(left, right), format, out)
+}
+
+/// The scene [`draw`] renders.
+fn scene<'a>(
+    region: &Region,
+    cover: Option<&CycleCover>,
+    opts: &'a DrawOptions,
+) -> Result<Scene<'a>> {
     let empty = CycleCover::default();
     let cover = cover.unwrap_or(&empty);
     let frame = Frame::of(region, cover)?;
@@ -159,7 +181,7 @@ pub fn draw(
         caption: opts.caption.as_deref(),
         layout,
     };
-    write_picture(&scene, format, out)
+    Ok(scene)
 }
 
 /// The picture formats, chosen by the output file's extension.
@@ -836,6 +858,34 @@ pub(crate) trait Picture {
         k: f64,
         strokes: Strokes,
     ) -> DrawResult<DB>;
+}
+
+/// Two pictures side by side, tops aligned: one plotters area each.
+struct Beside<A, B>(A, B);
+
+impl<A: Picture, B: Picture> Picture for Beside<A, B> {
+    fn size(&self) -> (u32, u32) {
+        let ((wl, hl), (wr, hr)) = (self.0.size(), self.1.size());
+        (wl + wr, hl.max(hr))
+    }
+
+    /// The finer of the two scales, so that both keep whole-number coordinates.
+    fn svg_scale(&self) -> f64 {
+        self.0.svg_scale().max(self.1.svg_scale())
+    }
+
+    fn render<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        k: f64,
+        strokes: Strokes,
+    ) -> DrawResult<DB> {
+        area.fill(&WHITE)?;
+        let split = (f64::from(self.0.size().0) * k).round() as i32;
+        let (left, right) = area.split_horizontally(split);
+        self.0.render(&left, k, strokes)?;
+        self.1.render(&right, k, strokes)
+    }
 }
 
 /// Writes `picture` to `out` in `format`.

@@ -22,9 +22,10 @@
 use crate::discrete::check;
 use crate::discrete::{Discrete, VertexWalk};
 use crate::draw::{
-    AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DETAIL_LIMIT, DrawOptions, FONT_FAMILY, GRID_LINE,
-    JOG, MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, REGION_FILL, STRAND_GAP, STRAND_SPREAD,
-    TITLE_PX, draw_title_and_caption, ensure_fonts,
+    AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DETAIL_LIMIT, DrawOptions, DrawResult, FONT_FAMILY,
+    Format, GRID_LINE, JOG, MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, Picture, REGION_FILL,
+    STRAND_GAP, STRAND_SPREAD, Strokes, TITLE_PX, draw_title_and_caption, ensure_fonts,
+    write_picture,
 };
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -122,35 +123,7 @@ pub fn draw(
         title: opts.title.as_deref(),
         caption: opts.caption.as_deref(),
     };
-    match format {
-        Format::Svg => write_svg(&scene, out),
-        Format::Png => write_png(&scene, out),
-    }
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Format {
-    Svg,
-    Png,
-}
-
-impl Format {
-    /// The format named by the extension of `out` (the messages of [`crate::draw::draw`]).
-    fn of(out: &Path) -> Result<Format> {
-        let ext = out.extension().map(|e| e.to_string_lossy().to_lowercase());
-        match ext.as_deref() {
-            Some("svg") => Ok(Format::Svg),
-            Some("png") => Ok(Format::Png),
-            Some(other) => Err(Error::invalid(format!(
-                "{}: cannot draw to a .{other} file; use .svg or .png",
-                out.display()
-            ))),
-            None => Err(Error::invalid(format!(
-                "{}: no file extension; use .svg or .png",
-                out.display()
-            ))),
-        }
-    }
+    write_picture(&scene, format, out)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -787,21 +760,6 @@ struct Scene<'a> {
     caption: Option<&'a str>,
 }
 
-/// How lines reach the backend.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Strokes {
-    /// One polyline per line: small SVG files that stay editable.
-    Polylines,
-    /// One segment at a time with round joins: plotters fills a wide polyline as a single
-    /// even-odd polygon, which would leave gaps where a walk crosses or retraces itself.
-    Segments,
-}
-
-type DrawResult<DB> = std::result::Result<
-    (),
-    plotters::drawing::DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>,
->;
-
 /// Strokes the polyline through `pts` (closed: back to the first), `w` backend pixels wide.
 fn stroke<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
@@ -990,45 +948,25 @@ fn render<DB: DrawingBackend>(
     area.present()
 }
 
-/// Writes an SVG; below one output pixel per edge length the canvas is enlarged so that
-/// vertices keep distinct whole-number coordinates (SVG coordinates from plotters are
-/// integers).
-fn write_svg(scene: &Scene, out: &Path) -> Result<()> {
-    let k = (1.0 / scene.layout.pixel_size).ceil().max(1.0);
-    let size = (
-        scene.layout.width * k as u32,
-        scene.layout.height * k as u32,
-    );
-    let mut svg = String::new();
-    {
-        let area = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-        render(&area, scene, k, Strokes::Polylines)
-            .map_err(|e| Error::invalid(format!("drawing failed: {e}")))?;
+impl Picture for Scene<'_> {
+    fn size(&self) -> (u32, u32) {
+        (self.layout.width, self.layout.height)
     }
-    std::fs::write(out, svg).map_err(|e| Error::io(out, e))
-}
 
-/// Writes a PNG, drawn at up to 3× and averaged down, which smooths the lines and marks
-/// (plotters draws shapes without anti-aliasing).
-fn write_png(scene: &Scene, out: &Path) -> Result<()> {
-    let (w, h) = (scene.layout.width as usize, scene.layout.height as usize);
-    let k = [3, 2, 1]
-        .into_iter()
-        .find(|k| w * h * k * k <= 16_000_000)
-        .unwrap_or(1);
-    let (bw, bh) = (w * k, h * k);
-    let mut big = vec![0u8; bw * bh * 3];
-    {
-        let area = BitMapBackend::with_buffer(&mut big, (bw as u32, bh as u32)).into_drawing_area();
-        render(&area, scene, k as f64, Strokes::Segments)
-            .map_err(|e| Error::invalid(format!("drawing failed: {e}")))?;
+    /// Below one output pixel per unit the SVG canvas is enlarged so that every vertex keeps
+    /// whole-number coordinates.
+    fn svg_scale(&self) -> f64 {
+        (1.0 / self.layout.pixel_size).ceil().max(1.0)
     }
-    let small = crate::draw::downsample(&big, w, h, k);
-    let mut backend = BitMapBackend::new(out, (w as u32, h as u32));
-    backend
-        .blit_bitmap((0, 0), (w as u32, h as u32), &small)
-        .and_then(|()| backend.present())
-        .map_err(|e| Error::io(out, std::io::Error::other(e.to_string())))
+
+    fn render<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        k: f64,
+        strokes: Strokes,
+    ) -> DrawResult<DB> {
+        render(area, self, k, strokes)
+    }
 }
 
 #[cfg(test)]

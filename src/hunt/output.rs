@@ -8,12 +8,10 @@
 //! hunt keeps what it found; `manifest.json` is written last, when the hunt ends.
 
 use super::{Found, HuntOptions, HuntReport, Record};
-use crate::draw::{DrawOptions, draw};
+use crate::draw::{DrawOptions, draw_beside};
 use crate::error::{Error, Result};
 use crate::gridfile::GridFile;
 use crate::harness::plots::{Figure, render};
-use crate::region::Region;
-use crate::tour::CycleCover;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt::Write as _;
@@ -80,54 +78,6 @@ fn write_csv_to(path: &Path, records: &[Record]) -> Result<()> {
     w.flush().map_err(|e| Error::io(path, e))
 }
 
-/// Draws `region` with `walk` to an SVG string (via a scratch file).
-fn svg_of(
-    region: &Region,
-    walk: Option<&CycleCover>,
-    title: String,
-    scratch: &Path,
-) -> Result<String> {
-    let opts = DrawOptions {
-        title: Some(title),
-        ..DrawOptions::default()
-    };
-    draw(region, walk, scratch, &opts)?;
-    let text = std::fs::read_to_string(scratch).map_err(|e| Error::io(scratch, e))?;
-    let _ = std::fs::remove_file(scratch);
-    Ok(text)
-}
-
-/// The attribute `name="..."` of an SVG's opening tag, as a number.
-fn svg_size(svg: &str, name: &str) -> f64 {
-    let start = svg.find("<svg").unwrap_or(0);
-    let tag = &svg[start..start + svg[start..].find('>').unwrap_or(0)];
-    tag.split(&format!("{name}=\""))
-        .nth(1)
-        .and_then(|s| s.split('"').next())
-        .and_then(|s| s.trim_end_matches("px").parse().ok())
-        .unwrap_or(400.0)
-}
-
-/// Two SVG pictures side by side in one SVG.
-fn side_by_side(left: &str, right: &str) -> String {
-    let strip = |s: &str| {
-        s.lines()
-            .filter(|l| !l.trim_start().starts_with("<?xml"))
-            .collect::<Vec<_>>()
-            .join("\n")
-    };
-    let (wl, hl) = (svg_size(left, "width"), svg_size(left, "height"));
-    let (wr, hr) = (svg_size(right, "width"), svg_size(right, "height"));
-    let right = strip(right).replacen("<svg", &format!("<svg x=\"{wl}\""), 1);
-    format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\">\n{}\n{}\n</svg>\n",
-        wl + wr,
-        hl.max(hr),
-        strip(left),
-        right
-    )
-}
-
 /// Saves one instance with its walks and figure as `dir/stem.*`.
 fn save(
     dir: &Path,
@@ -164,27 +114,23 @@ fn save(
             None => remove_stale(&path)?,
         }
     }
-    let scratch = dir.join(format!(".{stem}.tmp.svg"));
-    let left = svg_of(
-        &f.region,
-        f.walk.as_ref(),
-        format!("{algo}: {} {}", opts.objective, f.value),
-        &scratch,
+    let titled = |title: String| DrawOptions {
+        title: Some(title),
+        ..DrawOptions::default()
+    };
+    let left = titled(format!("{algo}: {} {}", opts.objective, f.value));
+    let right = titled(match (f.optimal_walk.is_some(), f.reference) {
+        (true, Some(r)) if !f.best_source.is_empty() => {
+            format!("best known ({}): {} {r}", f.best_source, opts.objective)
+        }
+        (true, Some(r)) => format!("optimal: {} {r}", opts.objective),
+        _ => "no optimal walk".to_string(),
+    });
+    draw_beside(
+        (&f.region, f.walk.as_ref(), &left),
+        (&f.region, f.optimal_walk.as_ref(), &right),
+        &dir.join(format!("{stem}.svg")),
     )?;
-    let right = svg_of(
-        &f.region,
-        f.optimal_walk.as_ref(),
-        match (f.optimal_walk.is_some(), f.reference) {
-            (true, Some(r)) if !f.best_source.is_empty() => {
-                format!("best known ({}): {} {r}", f.best_source, opts.objective)
-            }
-            (true, Some(r)) => format!("optimal: {} {r}", opts.objective),
-            _ => "no optimal walk".to_string(),
-        },
-        &scratch,
-    )?;
-    let path = dir.join(format!("{stem}.svg"));
-    std::fs::write(&path, side_by_side(&left, &right)).map_err(|e| Error::io(&path, e))?;
     let path = dir.join(format!("{stem}.txt"));
     if note.is_empty() {
         remove_stale(&path)?;
