@@ -53,7 +53,7 @@ mod turns;
 pub use matching::{self as endpoint_matching, turn_distance};
 #[doc(hidden)]
 pub use turns::{boundary_cc, coverage4, merge, strips_matching};
-pub(crate) use turns::{star_cover, strips_double, thin, thin_euler};
+pub(crate) use turns::{star_cover, strips_double, thin, thin_euler, visits};
 
 /// What a result is measured by. It serializes as its [`Display`](fmt::Display) text
 /// (`turns`, `weighted-c50`).

@@ -54,6 +54,7 @@
 
 use super::{Discrete, VertexWalk};
 use crate::algorithms::Merge;
+use crate::algorithms::visits::Visits;
 use petgraph::unionfind::UnionFind;
 
 const NONE: u32 = u32::MAX;
@@ -102,10 +103,9 @@ struct Walks<'a> {
     cycles: UnionFind<u32>,
     /// Nodes per merged cycle, at its union-find root.
     size: Vec<usize>,
-    /// The input nodes at each vertex: `visit_nodes[visit_start[v]..visit_start[v + 1]]`.
-    visit_start: Vec<u32>,
-    visit_nodes: Vec<u32>,
-    known_settled: Vec<bool>,
+    /// The input nodes at each vertex (detour copies are left out: each belongs to the
+    /// cycle of the node it copies), and which are settled.
+    index: Visits,
     stats: MergeStats,
 }
 
@@ -119,9 +119,7 @@ impl<'a> Walks<'a> {
             cycle: Vec::new(),
             cycles: UnionFind::new(cycles.len()),
             size: Vec::new(),
-            visit_start: Vec::new(),
-            visit_nodes: Vec::new(),
-            known_settled: vec![false; inst.len()],
+            index: Visits::default(),
             stats: MergeStats::default(),
         };
         for (c, walk) in cycles.iter().enumerate() {
@@ -144,26 +142,12 @@ impl<'a> Walks<'a> {
             w.size.push(walk.len());
         }
         let n = inst.len();
-        let mut start = vec![0u32; n + 1];
-        for &v in &w.vert {
-            start[v as usize + 1] += 1;
-        }
-        for v in 0..n {
-            start[v + 1] += start[v];
-        }
-        let mut fill = start.clone();
-        let mut flat = vec![0u32; w.vert.len()];
-        for (node, &v) in w.vert.iter().enumerate() {
-            flat[fill[v as usize] as usize] = node as u32;
-            fill[v as usize] += 1;
-        }
-        w.visit_start = start;
-        w.visit_nodes = flat;
+        w.index = Visits::of(&w.vert, n);
         w
     }
 
     fn visits(&self, v: usize) -> &[u32] {
-        &self.visit_nodes[self.visit_start[v] as usize..self.visit_start[v + 1] as usize]
+        self.index.at(v)
     }
 
     fn root_of(&mut self, node: u32) -> u32 {
@@ -171,23 +155,9 @@ impl<'a> Walks<'a> {
     }
 
     fn settled(&mut self, v: usize) -> bool {
-        if self.known_settled[v] {
-            return true;
-        }
-        let (a, b) = (
-            self.visit_start[v] as usize,
-            self.visit_start[v + 1] as usize,
-        );
-        let Some(&first) = self.visit_nodes.get(a) else {
-            return true;
-        };
-        let root = self.root_of(first);
-        let settled = (a + 1..b).all(|k| {
-            let node = self.visit_nodes[k];
-            self.root_of(node) == root
-        });
-        self.known_settled[v] = settled;
-        settled
+        let (cycles, cycle) = (&mut self.cycles, &self.cycle);
+        self.index
+            .settled(v, |node| cycles.find_mut(cycle[node as usize]))
     }
 
     /// The turn at `n` between walk neighbours `a` and `b`; 4 for a one-node walk.

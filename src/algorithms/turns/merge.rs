@@ -37,6 +37,7 @@
 //! continuous "extend the end links" construction, so the tests assert t + 2c − 2 on every
 //! instance instead of assuming it.
 
+use super::visits::Visits;
 use crate::algorithms::{Merge, Objective, Options, Output, Solution};
 use crate::checker::{Mode, check};
 use crate::error::Result;
@@ -91,13 +92,9 @@ struct Walks<'a> {
     size: Vec<usize>,
     /// Visits per region pixel, kept up to date by detours (exchanges keep visits).
     coverage: Vec<u32>,
-    /// The nodes of the input cover at each pixel, in compressed rows:
-    /// `visit_nodes[visit_start[p]..visit_start[p + 1]]` (detour copies are left out: each
-    /// belongs to the cycle of the node it copies).
-    visit_start: Vec<u32>,
-    visit_nodes: Vec<u32>,
-    /// Pixels known to be settled (settledness only grows, so a `true` is kept for good).
-    known_settled: Vec<bool>,
+    /// The input nodes at each pixel (detour copies are left out: each belongs to the
+    /// cycle of the node it copies), and which are settled.
+    index: Visits,
     stats: MergeStats,
 }
 
@@ -122,9 +119,7 @@ impl<'a> Walks<'a> {
             cycles: UnionFind::new(cover.cycles.len()),
             size: Vec::new(),
             coverage: vec![0; region.len()],
-            visit_start: Vec::new(),
-            visit_nodes: Vec::new(),
-            known_settled: vec![false; region.len()],
+            index: Visits::default(),
             stats: MergeStats::default(),
         };
         for (c, walk) in cover.cycles.iter().enumerate() {
@@ -162,48 +157,20 @@ impl<'a> Walks<'a> {
             w.recount_turn(n);
         }
         let n = region.len();
-        let mut start = vec![0u32; n + 1];
-        for &p in &w.pix {
-            start[p as usize + 1] += 1;
-        }
-        for p in 0..n {
-            start[p + 1] += start[p];
-        }
-        let mut fill = start.clone();
-        let mut flat = vec![0u32; w.pix.len()];
-        for (node, &p) in w.pix.iter().enumerate() {
-            flat[fill[p as usize] as usize] = node as u32;
-            fill[p as usize] += 1;
-        }
-        w.visit_start = start;
-        w.visit_nodes = flat;
+        w.index = Visits::of(&w.pix, n);
         w
     }
 
     fn visits(&self, p: usize) -> &[u32] {
-        &self.visit_nodes[self.visit_start[p] as usize..self.visit_start[p + 1] as usize]
+        self.index.at(p)
     }
 
     /// Whether every visit of pixel `p` already lies in one merged cycle. Settledness only
     /// grows as cycles merge.
     fn settled(&mut self, p: usize) -> bool {
-        if self.known_settled[p] {
-            return true;
-        }
-        let (a, b) = (
-            self.visit_start[p] as usize,
-            self.visit_start[p + 1] as usize,
-        );
-        let Some(&first) = self.visit_nodes.get(a) else {
-            return true;
-        };
-        let root = self.root_of(first);
-        let settled = (a + 1..b).all(|k| {
-            let node = self.visit_nodes[k];
-            self.root_of(node) == root
-        });
-        self.known_settled[p] = settled;
-        settled
+        let (cycles, cycle) = (&mut self.cycles, &self.cycle);
+        self.index
+            .settled(p, |node| cycles.find_mut(cycle[node as usize]))
     }
 
     /// Whether detours between nodes `x` and `z` are allowed: only between settled pixels (see
@@ -538,11 +505,11 @@ impl<'a> Walks<'a> {
         }
         let region = self.region;
         for p in 0..region.len() {
-            for k in self.visit_start[p]..self.visit_start[p + 1] {
-                let x = self.visit_nodes[k as usize];
+            for k in self.index.range(p) {
+                let x = self.index.node(k);
                 for q in region.neighbors(p) {
-                    for l in self.visit_start[q]..self.visit_start[q + 1] {
-                        let z = self.visit_nodes[l as usize];
+                    for l in self.index.range(q) {
+                        let z = self.index.node(l);
                         if x < z
                             && self.cycle[x as usize] != self.cycle[z as usize]
                             && self.root_of(x) != self.root_of(z)

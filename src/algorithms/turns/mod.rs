@@ -16,3 +16,4 @@ pub(crate) mod strips_double;
 pub mod strips_matching;
 pub(crate) mod thin;
 pub(crate) mod thin_euler;
+pub(crate) mod visits;
