@@ -26,18 +26,18 @@ use serde::Serialize;
 
 /// A proven lower bound and where it comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub struct Bound {
+pub struct LowerBound {
     pub value: u64,
     pub source: &'static str,
 }
 
-impl Bound {
-    pub fn new(value: u64, source: &'static str) -> Bound {
-        Bound { value, source }
+impl LowerBound {
+    pub fn new(value: u64, source: &'static str) -> LowerBound {
+        LowerBound { value, source }
     }
 
     /// The larger of two bounds (the first on ties).
-    pub fn max(self, other: Bound) -> Bound {
+    pub fn max(self, other: LowerBound) -> LowerBound {
         if other.value > self.value {
             other
         } else {
@@ -50,18 +50,18 @@ impl Bound {
 ///
 /// # Complexity
 /// O(N).
-pub fn length_lower_bound(region: &Region) -> Bound {
+pub fn length_lower_bound(region: &Region) -> LowerBound {
     let n = region.len() as u64;
     if n <= 1 {
-        return Bound::new(0, "single pixel");
+        return LowerBound::new(0, "single pixel");
     }
     let (black, white) = colour_counts(region);
     let parity = if n % 2 == 1 {
-        Bound::new(n + 1, "n + 1 (odd n, even closed walks)")
+        LowerBound::new(n + 1, "n + 1 (odd n, even closed walks)")
     } else {
-        Bound::new(n, "n")
+        LowerBound::new(n, "n")
     };
-    parity.max(Bound::new(
+    parity.max(LowerBound::new(
         2 * black.max(white) as u64,
         "2 max(#black, #white)",
     ))
@@ -71,13 +71,13 @@ pub fn length_lower_bound(region: &Region) -> Bound {
 ///
 /// # Complexity
 /// O(N).
-pub fn lawn_tsp_lower_bound(region: &Region) -> Bound {
+pub fn lawn_tsp_lower_bound(region: &Region) -> LowerBound {
     if region.len() <= 1 {
-        return Bound::new(0, "single pixel");
+        return LowerBound::new(0, "single pixel");
     }
     let b = region.bbox();
     let bbox = 2 * (b.width() as u64 - 1) + 2 * (b.height() as u64 - 1);
-    length_lower_bound(region).max(Bound::new(bbox, "bounding box perimeter"))
+    length_lower_bound(region).max(LowerBound::new(bbox, "bounding box perimeter"))
 }
 
 /// Lower bound on the turns of any cycle cover of the region (hence of any tour): per
@@ -85,9 +85,9 @@ pub fn lawn_tsp_lower_bound(region: &Region) -> Bound {
 ///
 /// # Complexity
 /// O(N √N) worst case (Hopcroft–Karp), near-linear on grid regions.
-pub fn turn_lower_bound(region: &Region) -> Bound {
+pub fn turn_lower_bound(region: &Region) -> LowerBound {
     if region.is_empty() {
-        return Bound::new(0, "empty region");
+        return LowerBound::new(0, "empty region");
     }
     let labels = components(region);
     let cover = strip_cover(region);
@@ -99,12 +99,12 @@ pub fn turn_lower_bound(region: &Region) -> Bound {
     let strips: u64 = per_component.iter().sum();
     let total: u64 = per_component.iter().map(|&s| s.max(4)).sum();
     if total > strips {
-        Bound::new(
+        LowerBound::new(
             total,
             "min strip cover (Lemma 4.2), at least 4 per closed walk",
         )
     } else {
-        Bound::new(total, "min strip cover (Lemma 4.2)")
+        LowerBound::new(total, "min strip cover (Lemma 4.2)")
     }
 }
 

@@ -310,7 +310,7 @@ pub fn evaluate<M: InstanceModel>(
         Err(failed) => return failed,
     };
     // The cheap bounds once per evaluation (the objectives of a model may share one).
-    let mut bounds: BTreeMap<Objective, (M::Bound, String)> = BTreeMap::new();
+    let mut bounds: BTreeMap<Objective, (M::LowerBound, String)> = BTreeMap::new();
     for objective in wanted {
         // A weighted objective is measured on the output it is carried by.
         let output = solution
@@ -423,7 +423,7 @@ fn judge_on<M: InstanceModel>(
     options: &Options,
     objective: Objective,
     cover: M::Cover,
-    (cheap, cheap_source): (M::Bound, String),
+    (cheap, cheap_source): (M::LowerBound, String),
     reference: &Reference,
 ) -> Result<Checked<M::Cover>> {
     let report = instance.recount(&cover, objective, options)?;

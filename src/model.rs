@@ -41,7 +41,7 @@ pub trait InstanceModel {
     /// The walks an algorithm returns on this model.
     type Cover: Clone;
     /// A lower bound in the model's exact numbers (an integer, or a rational on polygons).
-    type Bound: Clone;
+    type LowerBound: Clone;
 
     /// The instance as the [`Model`] the guarantees and parameters are read from.
     fn model(&self) -> Model<'_>;
@@ -68,8 +68,11 @@ pub trait InstanceModel {
     ) -> Result<Recount>;
 
     /// The cheap lower bound on the optimum of `objective` (no exact solve), with its source.
-    fn cheap_bound(&self, objective: Objective, options: &Options)
-    -> Result<(Self::Bound, String)>;
+    fn cheap_bound(
+        &self,
+        objective: Objective,
+        options: &Options,
+    ) -> Result<(Self::LowerBound, String)>;
 
     /// The objective whose cheap bound `objective` shares (computed once per evaluation).
     fn bound_shared_by(objective: Objective) -> Objective {
@@ -78,7 +81,7 @@ pub trait InstanceModel {
 
     /// `bound` as an integer in the units of a recount with `unit` (rounded down: still a
     /// bound).
-    fn bound_in_units(bound: &Self::Bound, objective: Objective, unit: u64) -> Result<u64>;
+    fn bound_in_units(bound: &Self::LowerBound, objective: Objective, unit: u64) -> Result<u64>;
 
     /// Whether the benchmark runs `algorithm` on this instance when a family names none.
     fn runs_by_default(&self, algorithm: &Algorithm) -> bool;
@@ -135,7 +138,7 @@ fn milling_value(objective: Objective, length: u64, turns: u64) -> u64 {
 
 impl InstanceModel for Region {
     type Cover = CycleCover;
-    type Bound = u64;
+    type LowerBound = u64;
 
     fn model(&self) -> Model<'_> {
         Model::Grid(self)
@@ -235,7 +238,7 @@ impl InstanceModel for Region {
 
 impl InstanceModel for Discrete {
     type Cover = DiscreteCover;
-    type Bound = u64;
+    type LowerBound = u64;
 
     fn model(&self) -> Model<'_> {
         Model::Discrete(self)
@@ -324,7 +327,7 @@ impl InstanceModel for Discrete {
             cycles: res.cycles,
             status: res.status,
             lower_bound: res.lower_bound,
-            valid: res.walks.as_ref().map(|_| res.valid),
+            valid: res.cover.as_ref().map(|_| res.valid),
             max_coverage: res.max_coverage.map(u64::from),
             message: res.message,
         })
@@ -354,7 +357,7 @@ fn in_units(r: Rational, unit: u64) -> Result<u64> {
 /// the lower bound, which is rounded down (still a bound).
 impl InstanceModel for Polygon {
     type Cover = crate::ortho::Tour;
-    type Bound = Rational;
+    type LowerBound = Rational;
 
     fn model(&self) -> Model<'_> {
         Model::Ortho(self)

@@ -77,7 +77,7 @@ mod milling;
 mod turns;
 pub(crate) mod walks;
 
-use crate::bounds::{self, Bound};
+use crate::bounds::{self, LowerBound};
 use crate::checker::{self, Mode};
 use crate::region::Region;
 use crate::topology;
@@ -168,7 +168,7 @@ impl Objective {
     }
 
     /// The objective's value of a checked cover.
-    pub fn value_of(self, report: &checker::Report) -> u64 {
+    pub fn value_of<V>(self, report: &checker::Report<V>) -> u64 {
         match self {
             Objective::Length | Objective::LawnTsp => report.length,
             Objective::CcTurns | Objective::TourTurns => report.turns,
@@ -289,10 +289,11 @@ impl fmt::Display for Status {
     }
 }
 
-/// The answer of an exact solve. The JSON keys `objective, value, lower_bound, status,
-/// seconds, rounds, length, turns, cycles, valid` are a stable contract.
+/// The answer of an exact solve, on any model: `W` is the model's walks (a grid
+/// [`CycleCover`], or the vertex walks of a discrete instance). The JSON keys `objective, value,
+/// lower_bound, status, seconds, rounds, length, turns, cycles, valid` are a stable contract.
 #[derive(Clone, Debug, Serialize)]
-pub struct ExactResult {
+pub struct ExactResult<W = CycleCover> {
     pub objective: String,
     /// The checker's recount of the objective for `cover`.
     pub value: Option<u64>,
@@ -314,27 +315,96 @@ pub struct ExactResult {
     pub lp_bound: Option<u64>,
     /// The turn cost C of `weighted`.
     pub turn_cost: Option<u32>,
-    /// Number of pixels.
+    /// Number of pixels (vertices).
     pub n: usize,
     /// The cap on visits per pixel the optimum is taken under (`--max-coverage`), if any.
     pub coverage_cap: Option<u32>,
-    /// The checker's largest number of visits of one pixel in `cover`.
+    /// The checker's largest number of visits of one pixel (vertex) in `cover`.
     pub max_coverage: Option<u32>,
     #[serde(skip)]
-    pub cover: Option<CycleCover>,
+    pub cover: Option<W>,
+}
+
+impl<W> ExactResult<W> {
+    /// The result before its walks are checked: no value, status `error` until
+    /// [`certify`](Self::certify).
+    pub(crate) fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
+        ExactResult {
+            objective: objective.to_string(),
+            value: None,
+            lower_bound: lower.0,
+            status: Status::Error,
+            seconds: 0.0,
+            rounds,
+            length: None,
+            turns: None,
+            cycles: None,
+            valid: false,
+            message: None,
+            lb_source: lower.1.to_string(),
+            lp_bound: None,
+            turn_cost: objective.turn_cost(),
+            n: 0,
+            coverage_cap: None,
+            max_coverage: None,
+            cover: None,
+        }
+    }
+
+    /// Takes `cover` with the checker's `report` of it when the report is a valid answer to
+    /// `objective` (valid, one walk for a tour, within the coverage cap, not below the proven
+    /// bound); otherwise the message says why not, prefixed `internal:` (a solver defect).
+    pub(crate) fn accept<V>(
+        &mut self,
+        objective: Objective,
+        cover: W,
+        report: &checker::Report<V>,
+    ) -> Option<String> {
+        let value = objective.value_of(report);
+        if !report.valid {
+            Some(format!(
+                "internal: the checker rejected the cover: {}",
+                report.error.clone().unwrap_or_default()
+            ))
+        } else if objective.is_tour() && report.cycles != 1 {
+            Some(format!(
+                "internal: a tour with {} closed walks",
+                report.cycles
+            ))
+        } else if self.coverage_cap.is_some_and(|c| report.max_coverage > c) {
+            Some(format!(
+                "internal: a pixel visited {} times, above the cap",
+                report.max_coverage
+            ))
+        } else if value < self.lower_bound {
+            Some(format!(
+                "internal: value {value} below the proven bound {}",
+                self.lower_bound
+            ))
+        } else {
+            self.value = Some(value);
+            self.length = Some(report.length);
+            self.turns = Some(report.turns);
+            self.cycles = Some(report.cycles);
+            self.max_coverage = Some(report.max_coverage);
+            self.valid = true;
+            self.cover = Some(cover);
+            None
+        }
+    }
 }
 
 /// What an objective's solver hands back before checking.
 struct Answer {
     stop: Stop,
     cover: Option<CycleCover>,
-    lower: Bound,
+    lower: LowerBound,
     lp_bound: Option<u64>,
     rounds: u32,
 }
 
 impl Answer {
-    fn trivial(cover: CycleCover, lower: Bound) -> Answer {
+    fn trivial(cover: CycleCover, lower: LowerBound) -> Answer {
         Answer {
             stop: Stop::Optimal,
             cover: Some(cover),
@@ -344,7 +414,7 @@ impl Answer {
         }
     }
 
-    fn stopped(stop: Stop, lower: Bound) -> Answer {
+    fn stopped(stop: Stop, lower: LowerBound) -> Answer {
         Answer {
             stop,
             cover: None,
@@ -433,7 +503,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
     let answer = if region.is_empty() {
         Answer::stopped(
             Stop::Error("the region is empty".into()),
-            Bound {
+            LowerBound {
                 value: 0,
                 source: "empty region",
             },
@@ -443,7 +513,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
             Stop::Error(
                 "a coverage cap applies to cc-turns, turns, weighted and weighted-cc only".into(),
             ),
-            Bound {
+            LowerBound {
                 value: 0,
                 source: "none",
             },
@@ -478,26 +548,11 @@ fn assemble(
     seconds: f64,
     cap: Option<u32>,
 ) -> ExactResult {
-    let mut r = ExactResult {
-        objective: objective.to_string(),
-        value: None,
-        lower_bound: a.lower.value,
-        status: Status::Error,
-        seconds,
-        rounds: a.rounds,
-        length: None,
-        turns: None,
-        cycles: None,
-        valid: false,
-        message: None,
-        lb_source: a.lower.source.to_string(),
-        lp_bound: a.lp_bound,
-        turn_cost: objective.turn_cost(),
-        n: region.len(),
-        coverage_cap: cap,
-        max_coverage: None,
-        cover: None,
-    };
+    let mut r = ExactResult::unchecked(objective, (a.lower.value, a.lower.source), a.rounds);
+    r.seconds = seconds;
+    r.lp_bound = a.lp_bound;
+    r.n = region.len();
+    r.coverage_cap = cap;
     let mut message = match &a.stop {
         Stop::Error(m) => Some(m.clone()),
         Stop::Infeasible => Some(if objective.is_tour() && objective != Objective::LawnTsp {
@@ -509,36 +564,7 @@ fn assemble(
     };
     if let Some(cover) = a.cover {
         let report = checker::check(region, &cover, objective.mode());
-        let value = objective.value_of(&report);
-        if !report.valid {
-            message = Some(format!(
-                "internal: the checker rejected the cover: {}",
-                report.error.unwrap_or_default()
-            ));
-        } else if objective.is_tour() && report.cycles != 1 {
-            message = Some(format!(
-                "internal: a tour with {} closed walks",
-                report.cycles
-            ));
-        } else if cap.is_some_and(|c| report.max_coverage > c) {
-            message = Some(format!(
-                "internal: a pixel visited {} times, above the cap",
-                report.max_coverage
-            ));
-        } else if value < a.lower.value {
-            message = Some(format!(
-                "internal: value {value} below the proven bound {}",
-                a.lower.value
-            ));
-        } else {
-            r.value = Some(value);
-            r.length = Some(report.length);
-            r.turns = Some(report.turns);
-            r.cycles = Some(report.cycles);
-            r.max_coverage = Some(report.max_coverage);
-            r.valid = true;
-            r.cover = Some(cover);
-        }
+        message = r.accept(objective, cover, &report).or(message);
     }
     r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
     r.message = message;
@@ -560,9 +586,9 @@ fn checked_warm_start<'c>(
     (rep.valid && (!objective.is_tour() || rep.cycles == 1)).then_some(c)
 }
 
-fn to_answer(s: Solved, cover: Option<CycleCover>, source_lower: Bound) -> Answer {
+fn to_answer(s: Solved, cover: Option<CycleCover>, source_lower: LowerBound) -> Answer {
     let lower = if s.lower > source_lower.value {
-        Bound {
+        LowerBound {
             value: s.lower,
             source: s.lower_source,
         }
@@ -729,7 +755,7 @@ fn solve_lawn(
 }
 
 /// The best cheap bound for an objective (no LP; the bounds of [`crate::bounds`]).
-pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
+pub fn cheap_lower_bound(region: &Region, objective: Objective) -> LowerBound {
     match objective {
         Objective::Length => bounds::length_lower_bound(region),
         Objective::CcTurns | Objective::TourTurns => bounds::turn_lower_bound(region),
@@ -737,7 +763,7 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
             // Both bounds hold for the same tour.
             let l = bounds::length_lower_bound(region).value;
             let t = bounds::turn_lower_bound(region).value;
-            Bound::new(
+            LowerBound::new(
                 l + u64::from(turn_cost) * t,
                 "length bound + C * turn bound",
             )
@@ -745,7 +771,7 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> Bound {
         Objective::WeightedCc { turn_cost } => {
             // A one-pixel walk has length 0, so only the turns bound a cycle cover.
             let t = bounds::turn_lower_bound(region).value;
-            Bound::new(u64::from(turn_cost) * t, "C * turn bound")
+            LowerBound::new(u64::from(turn_cost) * t, "C * turn bound")
         }
         Objective::LawnTsp => bounds::lawn_tsp_lower_bound(region),
     }
@@ -757,9 +783,9 @@ pub fn lp_lower_bound(
     region: &Region,
     objective: Objective,
     time_limit: Option<f64>,
-) -> Option<Bound> {
+) -> Option<LowerBound> {
     lp_relaxation_bound(region, objective, time_limit)
-        .map(|v| Bound::new(v, "lp relaxation with cuts"))
+        .map(|v| LowerBound::new(v, "lp relaxation with cuts"))
 }
 
 /// The largest available bound: the cheap ones and, when `lp_time_limit` is given, the LP
@@ -768,7 +794,7 @@ pub fn best_lower_bound(
     region: &Region,
     objective: Objective,
     lp_time_limit: Option<f64>,
-) -> Bound {
+) -> LowerBound {
     let cheap = cheap_lower_bound(region, objective);
     match lp_time_limit.and_then(|t| lp_lower_bound(region, objective, Some(t))) {
         Some(lp) => cheap.max(lp),

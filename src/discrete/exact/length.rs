@@ -1,7 +1,7 @@
 //! The `length` model: edge multiplicities with even degrees and connectivity cuts, whose
 //! optimum is the shortest closed walk visiting every vertex (see the parent module).
 
-use super::{Answer, Lower, is_bipartite, is_connected, to_answer, tree_walks};
+use super::{Answer, LowerBound, is_bipartite, is_connected, to_answer, tree_walks};
 use crate::discrete::{Discrete, VertexWalk};
 use crate::exact::cuts::violated_cuts;
 use crate::exact::driver::{self, CutModel, Stop};
@@ -155,7 +155,7 @@ impl CutModel for LengthModel<'_> {
 
 pub(super) fn solve_length(inst: &Discrete, deadline: &Deadline, settings: &Settings) -> Answer {
     let n = inst.len();
-    let lower = Lower {
+    let lower = LowerBound {
         value: if n >= 2 { n as u64 } else { 0 },
         source: "every vertex visited",
     };
@@ -163,7 +163,7 @@ pub(super) fn solve_length(inst: &Discrete, deadline: &Deadline, settings: &Sett
         return Answer::stopped(Stop::Infeasible, lower);
     }
     if n == 1 {
-        let only = Lower {
+        let only = LowerBound {
             value: 0,
             source: "the only tour",
         };

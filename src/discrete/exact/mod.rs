@@ -105,16 +105,16 @@ mod rooks;
 #[cfg(test)]
 mod tests;
 
-use super::check::{self, Report};
+use super::check;
 use super::{Discrete, VertexWalk};
+use crate::bounds::LowerBound;
 use crate::exact::driver::{Solved, Stop};
 use crate::exact::lp::{Deadline, Settings};
-use crate::exact::{Objective, Status, certify};
+use crate::exact::{ExactResult, Objective, certify};
 use crate::topology::graph_components;
 use length::solve_length;
 use passage::solve_passages;
 pub use rooks::{ROOK_MILP_LIMIT, RookPlacement, channels, rook_placement};
-use serde::Serialize;
 
 const NONE: u32 = u32::MAX;
 
@@ -139,68 +139,21 @@ impl Default for DiscreteOptions {
     }
 }
 
-/// The answer of an exact discrete solve: the fields of [`crate::exact::ExactResult`] with
-/// vertex walks in place of a grid cover.
-#[derive(Clone, Debug, Serialize)]
-pub struct DiscreteExactResult {
-    pub objective: String,
-    /// The checker's recount of the objective for `walks`.
-    pub value: Option<u64>,
-    /// A proven lower bound on the optimum.
-    pub lower_bound: u64,
-    pub status: Status,
-    pub seconds: f64,
-    /// Rounds of cut separation (LP and MIP).
-    pub rounds: u32,
-    pub length: Option<u64>,
-    pub turns: Option<u64>,
-    pub cycles: Option<usize>,
-    /// Whether the checker accepted `walks`.
-    pub valid: bool,
-    pub message: Option<String>,
-    /// Which bound `lower_bound` is.
-    pub lb_source: String,
-    /// The LP relaxation bound with the cuts found, when the LP phase ran.
-    pub lp_bound: Option<u64>,
-    /// The turn cost C of `weighted` and `weighted-cc`.
-    pub turn_cost: Option<u32>,
-    /// Number of vertices.
-    pub n: usize,
-    /// The checker's largest number of visits of one vertex.
-    pub max_coverage: Option<u32>,
-    #[serde(skip)]
-    pub walks: Option<Vec<VertexWalk>>,
-}
-
-/// The objective's value of checked walks.
-pub fn value_of(objective: Objective, report: &Report) -> u64 {
-    match objective {
-        Objective::Length | Objective::LawnTsp => report.length,
-        Objective::CcTurns | Objective::TourTurns => report.turns,
-        Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
-            report.length + u64::from(turn_cost) * report.turns
-        }
-    }
-}
-
-/// A bound and where it comes from.
-#[derive(Clone, Copy, Debug)]
-struct Lower {
-    value: u64,
-    source: &'static str,
-}
+/// The answer of an exact discrete solve: the grid solver's result type, with vertex walks in
+/// place of a grid cover (`cover`) and no coverage cap.
+pub type DiscreteExactResult = ExactResult<Vec<VertexWalk>>;
 
 /// What a solver hands back before checking.
 struct Answer {
     stop: Stop,
     walks: Option<Vec<VertexWalk>>,
-    lower: Lower,
+    lower: LowerBound,
     lp_bound: Option<u64>,
     rounds: u32,
 }
 
 impl Answer {
-    fn trivial(walks: Vec<VertexWalk>, lower: Lower) -> Answer {
+    fn trivial(walks: Vec<VertexWalk>, lower: LowerBound) -> Answer {
         Answer {
             stop: Stop::Optimal,
             walks: Some(walks),
@@ -210,7 +163,7 @@ impl Answer {
         }
     }
 
-    fn stopped(stop: Stop, lower: Lower) -> Answer {
+    fn stopped(stop: Stop, lower: LowerBound) -> Answer {
         Answer {
             stop,
             walks: None,
@@ -247,7 +200,7 @@ pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> D
         threads: opts.threads.max(1),
         verbose: opts.verbose,
     };
-    let none = Lower {
+    let none = LowerBound {
         value: 0,
         source: "none",
     };
@@ -269,25 +222,11 @@ pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> D
 /// The checked result: the walks are recounted, and the status is `optimal` only when the
 /// recount equals the proven bound.
 fn assemble(inst: &Discrete, objective: Objective, a: Answer, seconds: f64) -> DiscreteExactResult {
-    let mut r = DiscreteExactResult {
-        objective: objective.to_string(),
-        value: None,
-        lower_bound: a.lower.value,
-        status: Status::Error,
-        seconds,
-        rounds: a.rounds,
-        length: None,
-        turns: None,
-        cycles: None,
-        valid: false,
-        message: None,
-        lb_source: a.lower.source.to_string(),
-        lp_bound: a.lp_bound,
-        turn_cost: objective.turn_cost(),
-        n: inst.len(),
-        max_coverage: None,
-        walks: None,
-    };
+    let mut r =
+        DiscreteExactResult::unchecked(objective, (a.lower.value, a.lower.source), a.rounds);
+    r.seconds = seconds;
+    r.lp_bound = a.lp_bound;
+    r.n = inst.len();
     let mut message = match &a.stop {
         Stop::Error(m) => Some(m.clone()),
         Stop::Infeasible => Some("no covering tour exists: the graph is not connected".into()),
@@ -295,40 +234,16 @@ fn assemble(inst: &Discrete, objective: Objective, a: Answer, seconds: f64) -> D
     };
     if let Some(walks) = a.walks {
         let report = check::check(inst, &walks);
-        let value = value_of(objective, &report);
-        if !report.valid {
-            message = Some(format!(
-                "internal: the checker rejected the walks: {}",
-                report.error.unwrap_or_default()
-            ));
-        } else if objective.is_tour() && report.cycles != 1 {
-            message = Some(format!(
-                "internal: a tour with {} closed walks",
-                report.cycles
-            ));
-        } else if value < a.lower.value {
-            message = Some(format!(
-                "internal: value {value} below the proven bound {}",
-                a.lower.value
-            ));
-        } else {
-            r.value = Some(value);
-            r.length = Some(report.length);
-            r.turns = Some(report.turns);
-            r.cycles = Some(report.cycles);
-            r.max_coverage = Some(report.max_coverage);
-            r.valid = true;
-            r.walks = Some(walks);
-        }
+        message = r.accept(objective, walks, &report).or(message);
     }
     r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
     r.message = message;
     r
 }
 
-fn to_answer(s: Solved, walks: Option<Vec<VertexWalk>>, cheap: Lower) -> Answer {
+fn to_answer(s: Solved, walks: Option<Vec<VertexWalk>>, cheap: LowerBound) -> Answer {
     let lower = if s.lower > cheap.value {
-        Lower {
+        LowerBound {
             value: s.lower,
             source: s.lower_source,
         }

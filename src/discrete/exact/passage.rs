@@ -4,7 +4,7 @@
 //! formulation and why it is exact).
 
 use super::rooks::{channels, rook_placement};
-use super::{Answer, Lower, NONE, is_connected, to_answer, tree_walks};
+use super::{Answer, LowerBound, NONE, is_connected, to_answer, tree_walks};
 use crate::discrete::{Discrete, VertexWalk};
 use crate::exact::Objective;
 use crate::exact::cuts::violated_cuts;
@@ -892,14 +892,14 @@ impl CutModel for PassageModel<'_> {
 /// The cheap bound of a turn objective: a greedy rook placement (turns of any cycle cover,
 /// [`rook_placement`]), plus the length bound `V` for `weighted` tours (every vertex visited;
 /// both hold for the same tour).
-pub(super) fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> Lower {
+pub(super) fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> LowerBound {
     let rooks = rook_placement(inst, Some(0.0)).size;
     match goal {
-        Goal::CycleCover | Goal::Tour => Lower {
+        Goal::CycleCover | Goal::Tour => LowerBound {
             value: rooks,
             source: "greedy rook placement",
         },
-        Goal::Weighted(c) => Lower {
+        Goal::Weighted(c) => LowerBound {
             value: if inst.len() >= 2 {
                 inst.len() as u64
             } else {
@@ -907,7 +907,7 @@ pub(super) fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> Lower {
             } + u64::from(c) * rooks,
             source: "V + C * greedy rook placement",
         },
-        Goal::WeightedCycleCover(c) => Lower {
+        Goal::WeightedCycleCover(c) => LowerBound {
             value: u64::from(c) * rooks,
             source: "C * greedy rook placement",
         },
@@ -928,7 +928,7 @@ pub(super) fn solve_passages(
         }
         if inst.len() == 1 {
             // The one-vertex walk: length 0, 4 turns; the only tour.
-            let only = Lower {
+            let only = LowerBound {
                 value: 4 * goal.turn_cost().map_or(1, u64::from),
                 source: "the only tour",
             };

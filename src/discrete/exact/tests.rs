@@ -2,7 +2,7 @@
 //! grid solver, rook placements, and the models' invariants.
 
 use super::*;
-use crate::exact::{self, ExactOptions};
+use crate::exact::{self, ExactOptions, Status};
 use crate::gridfile::GridFile;
 use crate::region::{Pixel, Region};
 use rand::{RngExt, SeedableRng};
@@ -25,10 +25,10 @@ fn optimum(inst: &Discrete, objective: Objective) -> Option<u64> {
         Status::Infeasible => None,
         Status::Optimal => {
             assert!(r.valid);
-            let walks = r.walks.as_ref().expect("an optimal result has walks");
+            let walks = r.cover.as_ref().expect("an optimal result has walks");
             let rep = check::check(inst, walks);
             assert!(rep.valid, "{objective}: {:?}", rep.error);
-            assert_eq!(Some(value_of(objective, &rep)), r.value);
+            assert_eq!(Some(objective.value_of(&rep)), r.value);
             if objective.is_tour() {
                 assert_eq!(rep.cycles, 1);
             }
