@@ -4,7 +4,7 @@
     python3 scripts/tour_check.py INSTANCE.grid|.gg|.csv TOUR.json
 
 prints {"valid", "length", "turns", "error"} as JSON. Python integers do not wrap, so a move
-from x = 2^31 - 1 to x = -2^31 is not a unit move here. Rules as in src/checker.rs (milling):
+from x = 2^31 - 1 to x = -2^31 is not a unit move here. Rules as in crates/core/src/checker.rs (milling):
 every step of a closed walk (wrap-around included) moves to a 4-neighbour, every visited pixel
 is in the region, every pixel of the region is visited; turns 0 / 1 / 2 per vertex, a
 one-pixel walk has length 0 and 4 turns. Only the plain formats are read: `.grid` (`;`

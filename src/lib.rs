@@ -67,14 +67,11 @@
 //! ```
 
 pub mod algorithms;
-pub mod bounds;
 pub mod claims;
 pub mod discrete;
 pub mod draw;
 pub mod evaluate;
-pub mod exact;
 // Dinic max-flow only serves the cuts of the exact models and the matching LP.
-pub(crate) mod flow;
 pub mod harness;
 pub mod hunt;
 pub mod model;
@@ -84,9 +81,12 @@ pub mod tight;
 pub mod warm_start;
 
 pub use error::{Error, Result};
+pub(crate) use mowmill_core::flow;
 pub use mowmill_core::{
-    checker, error, generate, gridfile, input, instance, lawn_check, pixel_list, region,
+    bounds, checker, error, generate, gridfile, input, instance, lawn_check, pixel_list, region,
     strip_cover, topology, tour, tsplib, wkt,
 };
+/// The exact models (their own crate, `mowmill-exact`: HiGHS and the core, no algorithm).
+pub use mowmill_exact as exact;
 pub use region::{Dir, Pixel, Region, Symmetry};
 pub use tour::{CycleCover, Walk};

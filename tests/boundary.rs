@@ -307,7 +307,7 @@ const SHORT_ARMS: &[&str] = &[
     "........#.\n....#...#.\n#...######\n#...#...#.\n#...#...#.\n#...#...#.\n#########.\n",
 ];
 
-/// splitmix64, for small random shapes independent of `src/generate/`.
+/// splitmix64, for small random shapes independent of `crates/core/src/generate/`.
 struct Rng(u64);
 
 impl Rng {

@@ -34,7 +34,7 @@ use std::fmt;
 use theorems::{Claim, Paper, Theorem};
 
 // Shared pieces (no algorithm of their own): implementation detail.
-pub(crate) mod euler;
+pub(crate) use mowmill_core::euler;
 pub(crate) mod precondition;
 pub(crate) mod tsp_local;
 pub(crate) mod walks;

@@ -2,12 +2,17 @@
 //! [`Region`] and the facts about it ([`topology`], [`strip_cover`]); its readers and writers
 //! ([`instance`], [`gridfile`], [`wkt`], [`pixel_list`], [`tsplib`]); the instance families
 //! ([`generate`]); walks and cycle covers ([`tour`]); and the independent checkers that recount
-//! a walk ([`checker`], [`lawn_check`]). It has no algorithm, no exact model and no HiGHS: a
+//! a walk ([`checker`], [`lawn_check`]); with them the cheap proven lower bounds ([`bounds`])
+//! and the two graph routines every layer shares: Euler circuits ([`euler`]) and maximum flow
+//! ([`flow`]). It has no algorithm, no exact model and no HiGHS: a
 //! change to a checker rebuilds this crate and its tests alone (`cargo test -p mowmill-core`).
 //! The `mowmill` crate re-exports every module under the same name.
 
+pub mod bounds;
 pub mod checker;
 pub mod error;
+pub mod euler;
+pub mod flow;
 pub mod generate;
 pub mod gridfile;
 pub mod input;

@@ -1,15 +1,15 @@
 //! From integer solutions to closed walks: Euler tours of edge multisets (Hierholzer, shared
-//! with the approximations in [`crate::algorithms::euler`]), walks of passage multisets, and
+//! with the approximations in [`crate::euler`]), walks of passage multisets, and
 //! splicing of walks that traverse a common grid edge.
 
 use std::collections::HashMap;
 
-pub(crate) use crate::algorithms::euler::euler_walk;
+pub use crate::euler::euler_walk;
 
 /// One passage through a pixel: the walk enters from side `a` and leaves through side `b`
 /// (unordered; `a == b` is a U-turn). Sides are [`crate::region::Dir`] indices.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Passage {
+pub struct Passage {
     pub pixel: usize,
     pub a: u8,
     pub b: u8,
@@ -20,7 +20,7 @@ pub(crate) struct Passage {
 ///
 /// The passages at each side of a pixel are paired with those at the facing side of the
 /// neighbour in order; any pairing gives walks with the same total cost.
-pub(crate) fn passage_walks(
+pub fn passage_walks(
     n: usize,
     passages: &[Passage],
     neighbor: impl Fn(usize, u8) -> usize,
@@ -77,7 +77,7 @@ fn edge_key(a: usize, b: usize) -> (usize, usize) {
 /// Merges closed walks that traverse a common grid edge into one, keeping every passage (so
 /// length and turns are unchanged): walk B is cut open at its traversal of the edge and
 /// inserted into walk A at A's traversal of it.
-pub(crate) fn splice_walks(mut walks: Vec<Vec<usize>>) -> Vec<Vec<usize>> {
+pub fn splice_walks(mut walks: Vec<Vec<usize>>) -> Vec<Vec<usize>> {
     let mut out = Vec::new();
     while let Some(mut a) = walks.pop() {
         loop {

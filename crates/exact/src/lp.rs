@@ -16,7 +16,7 @@ use std::time::Instant;
 
 /// One linear constraint `lo <= Σ val[k] · x[idx[k]] <= hi`.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Row {
+pub struct Row {
     pub idx: Vec<u32>,
     pub val: Vec<f64>,
     pub lo: f64,
@@ -25,12 +25,12 @@ pub(crate) struct Row {
 
 impl Row {
     /// `Σ terms >= lo`.
-    pub(crate) fn at_least(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64) -> Row {
+    pub fn at_least(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64) -> Row {
         Row::range(terms, lo, f64::INFINITY)
     }
 
     /// `lo <= Σ terms <= hi`, merging repeated columns.
-    pub(crate) fn range(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64, hi: f64) -> Row {
+    pub fn range(terms: impl IntoIterator<Item = (usize, f64)>, lo: f64, hi: f64) -> Row {
         let mut t: Vec<(usize, f64)> = terms.into_iter().collect();
         t.sort_unstable_by_key(|&(i, _)| i);
         let mut idx: Vec<u32> = Vec::with_capacity(t.len());
@@ -48,7 +48,7 @@ impl Row {
     }
 
     /// The row's activity at `x`.
-    pub(crate) fn activity(&self, x: &[f64]) -> f64 {
+    pub fn activity(&self, x: &[f64]) -> f64 {
         self.idx
             .iter()
             .zip(&self.val)
@@ -57,7 +57,7 @@ impl Row {
     }
 
     /// How far `x` violates the row (0 when satisfied).
-    pub(crate) fn violation(&self, x: &[f64]) -> f64 {
+    pub fn violation(&self, x: &[f64]) -> f64 {
         let a = self.activity(x);
         (self.lo - a).max(a - self.hi).max(0.0)
     }
@@ -65,7 +65,7 @@ impl Row {
 
 /// A minimization model: columns with costs, bounds and integrality, and rows.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Formulation {
+pub struct Formulation {
     pub cost: Vec<f64>,
     pub lo: Vec<f64>,
     pub hi: Vec<f64>,
@@ -74,7 +74,7 @@ pub(crate) struct Formulation {
 }
 
 impl Formulation {
-    pub(crate) fn add_col(&mut self, cost: f64, lo: f64, hi: f64, integer: bool) -> usize {
+    pub fn add_col(&mut self, cost: f64, lo: f64, hi: f64, integer: bool) -> usize {
         self.cost.push(cost);
         self.lo.push(lo);
         self.hi.push(hi);
@@ -82,16 +82,16 @@ impl Formulation {
         self.cost.len() - 1
     }
 
-    pub(crate) fn num_cols(&self) -> usize {
+    pub fn num_cols(&self) -> usize {
         self.cost.len()
     }
 
-    pub(crate) fn objective(&self, x: &[f64]) -> f64 {
+    pub fn objective(&self, x: &[f64]) -> f64 {
         self.cost.iter().zip(x).map(|(c, v)| c * v).sum()
     }
 
     /// Whether `x` satisfies bounds, integrality and every row (including `extra`).
-    pub(crate) fn is_feasible(&self, x: &[f64], extra: &[Row]) -> bool {
+    pub fn is_feasible(&self, x: &[f64], extra: &[Row]) -> bool {
         const TOL: f64 = 1e-6;
         x.len() == self.num_cols()
             && (0..x.len()).all(|j| {
@@ -137,36 +137,36 @@ fn add_row_to_problem(pb: &mut RowProblem, cols: &[Col], r: &Row) {
 
 /// Wall-clock budget of one exact solve.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Deadline {
+pub struct Deadline {
     start: Instant,
     limit: Option<f64>,
 }
 
 impl Deadline {
-    pub(crate) fn new(limit: Option<f64>) -> Deadline {
+    pub fn new(limit: Option<f64>) -> Deadline {
         Deadline {
             start: Instant::now(),
             limit,
         }
     }
 
-    pub(crate) fn elapsed(&self) -> f64 {
+    pub fn elapsed(&self) -> f64 {
         self.start.elapsed().as_secs_f64()
     }
 
     /// Seconds left, `None` without a limit.
-    pub(crate) fn remaining(&self) -> Option<f64> {
+    pub fn remaining(&self) -> Option<f64> {
         self.limit.map(|l| (l - self.elapsed()).max(0.0))
     }
 
-    pub(crate) fn expired(&self) -> bool {
+    pub fn expired(&self) -> bool {
         self.remaining().is_some_and(|r| r <= 0.0)
     }
 }
 
 /// Solver settings shared by every HiGHS call of one exact solve.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Settings {
+pub struct Settings {
     pub threads: usize,
     pub verbose: bool,
 }
@@ -212,7 +212,7 @@ fn configure(model: &mut Model, s: &Settings) {
 
 /// How a HiGHS call ended.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Outcome {
+pub enum Outcome {
     Optimal,
     TimeLimit,
     Infeasible,
@@ -232,7 +232,7 @@ fn outcome(status: HighsModelStatus) -> Outcome {
 
 /// An LP solution with reduced costs.
 #[derive(Clone, Debug)]
-pub(crate) struct LpSolution {
+pub struct LpSolution {
     pub outcome: Outcome,
     pub objective: f64,
     pub x: Vec<f64>,
@@ -241,7 +241,7 @@ pub(crate) struct LpSolution {
 
 /// The LP relaxation of a formulation, kept alive between rounds of cuts so that each
 /// re-solve starts from the previous optimal basis.
-pub(crate) struct IncrementalLp {
+pub struct IncrementalLp {
     model: Option<Model>,
     cols: Vec<Col>,
     /// HiGHS's run clock accumulates over the runs of one model, and so does its time limit.
@@ -250,7 +250,7 @@ pub(crate) struct IncrementalLp {
 }
 
 impl IncrementalLp {
-    pub(crate) fn new(f: &Formulation, settings: Settings) -> IncrementalLp {
+    pub fn new(f: &Formulation, settings: Settings) -> IncrementalLp {
         let (pb, cols) = f.to_problem(false, &[]);
         let mut model = pb.optimise(Sense::Minimise);
         configure(&mut model, &settings);
@@ -265,7 +265,7 @@ impl IncrementalLp {
         }
     }
 
-    pub(crate) fn add_rows(&mut self, rows: &[Row]) {
+    pub fn add_rows(&mut self, rows: &[Row]) {
         let Some(model) = self.model.as_mut() else {
             return;
         };
@@ -280,7 +280,7 @@ impl IncrementalLp {
         self.rows += rows.len();
     }
 
-    pub(crate) fn solve(&mut self, deadline: &Deadline) -> LpSolution {
+    pub fn solve(&mut self, deadline: &Deadline) -> LpSolution {
         let failed = |m: String| LpSolution {
             outcome: Outcome::Failed(m),
             objective: f64::NAN,
@@ -314,7 +314,7 @@ impl IncrementalLp {
 
 /// A MIP answer: the best solution found (if any) and the proven dual bound.
 #[derive(Clone, Debug)]
-pub(crate) struct MipSolution {
+pub struct MipSolution {
     pub outcome: Outcome,
     pub x: Option<Vec<f64>>,
     pub objective: f64,
@@ -324,7 +324,7 @@ pub(crate) struct MipSolution {
 
 /// Solves `f` plus `extra` rows as a MIP from scratch, with an optional start solution.
 /// `abs_gap`, when given, replaces the proof gap (for heuristic solves that may stop early).
-pub(crate) fn solve_mip(
+pub fn solve_mip(
     f: &Formulation,
     extra: &[Row],
     start: Option<&[f64]>,
@@ -379,7 +379,7 @@ pub(crate) fn solve_mip(
 }
 
 /// The smallest integer at least `b`, tolerating round-off of HiGHS's bounds.
-pub(crate) fn ceil_bound(b: f64) -> Option<u64> {
+pub fn ceil_bound(b: f64) -> Option<u64> {
     if !b.is_finite() || b <= 0.0 {
         return if b.is_finite() || b == f64::NEG_INFINITY {
             Some(0)

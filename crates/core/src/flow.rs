@@ -1,10 +1,10 @@
 //! Maximum flow and minimum cuts on small undirected graphs with real capacities (Dinic's
 //! algorithm), for the Gomory–Hu trees of the exact models' connectivity cuts
-//! ([`crate::exact`]) and of the matching LP's odd-set cuts
-//! ([`crate::algorithms::matching`]).
+//! (`mowmill_exact`) and of the matching LP's odd-set cuts
+//! (`mowmill::algorithms::matching`).
 
 /// Maximum flow by Dinic's algorithm on an undirected graph with real capacities.
-pub(crate) struct FlowGraph {
+pub struct FlowGraph {
     n: usize,
     head: Vec<usize>,
     /// Arc k: to[k], cap[k]; arc k ^ 1 is its reverse.
@@ -17,7 +17,7 @@ pub(crate) struct FlowGraph {
 const NIL: usize = usize::MAX;
 
 impl FlowGraph {
-    pub(crate) fn new(n: usize, edges: &[(usize, usize, f64)]) -> FlowGraph {
+    pub fn new(n: usize, edges: &[(usize, usize, f64)]) -> FlowGraph {
         let mut g = FlowGraph {
             n,
             head: vec![NIL; n],
@@ -40,7 +40,7 @@ impl FlowGraph {
 
     /// Max flow from `s` to `t` (stops once it reaches `stop_at`); the source side of a minimum
     /// cut is left in `side`.
-    pub(crate) fn max_flow(&mut self, s: usize, t: usize, stop_at: f64, side: &mut [bool]) -> f64 {
+    pub fn max_flow(&mut self, s: usize, t: usize, stop_at: f64, side: &mut [bool]) -> f64 {
         const EPS: f64 = 1e-9;
         self.cap.copy_from_slice(&self.base);
         let mut flow = 0.0;

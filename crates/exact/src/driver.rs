@@ -31,7 +31,7 @@ use super::lp::{
 use std::collections::HashSet;
 
 /// What a model gives the driver.
-pub(crate) trait CutModel {
+pub trait CutModel {
     fn formulation(&self) -> &Formulation;
     /// Cuts violated by `x` (fractional or integral), as rows of the formulation.
     /// Cuts violated by `x`; past `deadline` a separation may stop early with the cuts found.
@@ -58,7 +58,7 @@ pub(crate) trait CutModel {
 
 /// Why the driver stopped.
 #[derive(Clone, Debug, PartialEq)]
-pub(crate) enum Stop {
+pub enum Stop {
     Optimal,
     TimeLimit,
     Infeasible,
@@ -67,7 +67,7 @@ pub(crate) enum Stop {
 
 /// The driver's answer: the best feasible solution, its value and the proven bound.
 #[derive(Clone, Debug)]
-pub(crate) struct Solved {
+pub struct Solved {
     pub stop: Stop,
     pub best: Option<Vec<f64>>,
     pub upper: Option<u64>,
@@ -79,7 +79,7 @@ pub(crate) struct Solved {
 
 /// Rounds a proven real bound up to the next multiple of `step` (the spacing of the
 /// objective's values on integer solutions, [`CutModel::step`]).
-pub(crate) fn step_bound(b: f64, step: u64) -> Option<u64> {
+pub fn step_bound(b: f64, step: u64) -> Option<u64> {
     let step = step.max(1);
     ceil_bound(b).map(|v| v.div_ceil(step) * step)
 }
@@ -427,7 +427,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
 
 /// Runs the loop. `start` is a feasible solution (the caller validated it), `lower` a proven
 /// bound with its source.
-pub(crate) fn run<M: CutModel>(
+pub fn run<M: CutModel>(
     model: &M,
     start: Option<Vec<f64>>,
     lower: (u64, &'static str),
@@ -444,11 +444,7 @@ pub(crate) fn run<M: CutModel>(
 }
 
 /// The LP relaxation's bound with all its cuts (the LP phase alone), if it converges in time.
-pub(crate) fn lp_bound<M: CutModel>(
-    model: &M,
-    deadline: &Deadline,
-    settings: &Settings,
-) -> Option<u64> {
+pub fn lp_bound<M: CutModel>(model: &M, deadline: &Deadline, settings: &Settings) -> Option<u64> {
     let mut l = Loop::new(model, (0, ""), deadline, settings);
     let _ = l.lp_phase(true);
     l.s.lp_bound

@@ -18,7 +18,7 @@ use crate::tour::Walk;
 ///
 /// # Complexity
 /// O(number of edges) calls of `take`; O(number of edges) extra space.
-pub(crate) fn hierholzer(start: usize, mut take: impl FnMut(usize) -> Option<usize>) -> Vec<usize> {
+pub fn hierholzer(start: usize, mut take: impl FnMut(usize) -> Option<usize>) -> Vec<usize> {
     let mut finished = Vec::new();
     let mut stack = vec![start];
     while let Some(&v) = stack.last() {
@@ -61,12 +61,7 @@ fn edge_list_trail(n: usize, edges: &[(usize, usize)], mult: &[u32], start: usiz
 /// (its length is the total multiplicity), starting at `start`. Every vertex must have even
 /// degree and the edges with positive multiplicity must form one connected graph containing
 /// `start`.
-pub(crate) fn euler_walk(
-    n: usize,
-    edges: &[(usize, usize)],
-    mult: &[u32],
-    start: usize,
-) -> Vec<usize> {
+pub fn euler_walk(n: usize, edges: &[(usize, usize)], mult: &[u32], start: usize) -> Vec<usize> {
     let mut walk = edge_list_trail(n, edges, mult, start);
     walk.reverse();
     walk.pop();
@@ -75,7 +70,7 @@ pub(crate) fn euler_walk(
 
 /// The Euler circuit from node 0 of a connected multigraph with even degrees (given by its
 /// edges), shortcut to a Hamiltonian tour by skipping repeated nodes.
-pub(crate) fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
+pub fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
     let mut seen = vec![false; n];
     edge_list_trail(n, edges, &vec![1; edges.len()], 0)
         .into_iter()
@@ -86,31 +81,31 @@ pub(crate) fn euler_shortcut(n: usize, edges: &[(usize, usize)]) -> Vec<usize> {
 /// Edge multiplicities of a multigraph on the grid graph of a region: `mult[i][d]` copies of
 /// the edge from pixel `i` in direction `d` (kept symmetric).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct GridMultigraph {
+pub struct GridMultigraph {
     mult: Vec<[u32; 4]>,
 }
 
 impl GridMultigraph {
     /// The empty multigraph on `n` pixels.
-    pub(crate) fn new(n: usize) -> Self {
+    pub fn new(n: usize) -> Self {
         GridMultigraph {
             mult: vec![[0; 4]; n],
         }
     }
 
     /// Copies of the edge from `i` in direction `d`.
-    pub(crate) fn count(&self, i: usize, d: Dir) -> u32 {
+    pub fn count(&self, i: usize, d: Dir) -> u32 {
         self.mult[i][d.index()]
     }
 
     /// Adds one copy of the edge from `i` to its neighbour `j` in direction `d`.
-    pub(crate) fn add(&mut self, i: usize, j: usize, d: Dir) {
+    pub fn add(&mut self, i: usize, j: usize, d: Dir) {
         self.mult[i][d.index()] += 1;
         self.mult[j][d.opposite().index()] += 1;
     }
 
     /// Removes one copy of the edge from `i` to `j` (direction `d`); false if there is none.
-    pub(crate) fn remove(&mut self, i: usize, j: usize, d: Dir) -> bool {
+    pub fn remove(&mut self, i: usize, j: usize, d: Dir) -> bool {
         if self.mult[i][d.index()] == 0 {
             return false;
         }
@@ -122,7 +117,7 @@ impl GridMultigraph {
     /// Replaces the edges at every pixel `i` with `pick(i)` by those of `other` (a multigraph
     /// on the same pixels). Stays symmetric when every edge between a picked and an unpicked
     /// pixel has the same count in both.
-    pub(crate) fn copy_rows_from(&mut self, other: &GridMultigraph, pick: impl Fn(usize) -> bool) {
+    pub fn copy_rows_from(&mut self, other: &GridMultigraph, pick: impl Fn(usize) -> bool) {
         for (i, (mine, theirs)) in self.mult.iter_mut().zip(&other.mult).enumerate() {
             if pick(i) {
                 *mine = *theirs;
@@ -132,7 +127,7 @@ impl GridMultigraph {
 
     /// Adds the edges of `sub`, a multigraph on a sub-region whose pixel `i` is pixel `map[i]`
     /// here and whose edges are edges here too (a block of the region).
-    pub(crate) fn add_rows_mapped(&mut self, sub: &GridMultigraph, map: &[usize]) {
+    pub fn add_rows_mapped(&mut self, sub: &GridMultigraph, map: &[usize]) {
         for (row, &g) in sub.mult.iter().zip(map) {
             for (mine, theirs) in self.mult[g].iter_mut().zip(row) {
                 *mine += theirs;
@@ -141,7 +136,7 @@ impl GridMultigraph {
     }
 
     /// Adds the edge between two adjacent pixels, looked up in `region`.
-    pub(crate) fn add_between(&mut self, region: &Region, a: usize, b: usize) {
+    pub fn add_between(&mut self, region: &Region, a: usize, b: usize) {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -150,7 +145,7 @@ impl GridMultigraph {
     }
 
     /// Removes one copy of the edge between two adjacent pixels; false if there is none.
-    pub(crate) fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
+    pub fn remove_between(&mut self, region: &Region, a: usize, b: usize) -> bool {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -159,7 +154,7 @@ impl GridMultigraph {
     }
 
     /// Whether the edge between two adjacent pixels has at least one copy.
-    pub(crate) fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
+    pub fn has_between(&self, region: &Region, a: usize, b: usize) -> bool {
         let d = region
             .pixel(a)
             .dir_to(region.pixel(b))
@@ -168,7 +163,7 @@ impl GridMultigraph {
     }
 
     /// Adds every step of a closed walk of region pixels (wrap-around included).
-    pub(crate) fn add_closed_walk(&mut self, region: &Region, walk: &[usize]) {
+    pub fn add_closed_walk(&mut self, region: &Region, walk: &[usize]) {
         if walk.len() < 2 {
             return;
         }
@@ -178,7 +173,7 @@ impl GridMultigraph {
     }
 
     /// Adds every step of an open path of region pixels.
-    pub(crate) fn add_path(&mut self, region: &Region, path: &[usize]) {
+    pub fn add_path(&mut self, region: &Region, path: &[usize]) {
         for w in path.windows(2) {
             self.add_between(region, w[0], w[1]);
         }
@@ -202,7 +197,7 @@ impl GridMultigraph {
     ///
     /// # Complexity
     /// O(number of edges + N).
-    pub(crate) fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
+    pub fn euler_circuit(&mut self, region: &Region, start: usize) -> Vec<usize> {
         let mut circuit = hierholzer(start, |v| {
             let d = Dir::ALL.into_iter().find(|d| self.mult[v][d.index()] > 0)?;
             let w = region
@@ -218,7 +213,7 @@ impl GridMultigraph {
     }
 
     /// The Euler circuit as a walk of pixels; a single pixel when there are no edges.
-    pub(crate) fn into_walk(mut self, region: &Region, start: usize) -> Walk {
+    pub fn into_walk(mut self, region: &Region, start: usize) -> Walk {
         self.euler_circuit(region, start)
             .into_iter()
             .map(|i| region.pixel(i))

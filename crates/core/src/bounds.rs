@@ -14,9 +14,9 @@
 //!   every closed walk turns through at least 360°, which is 4 turns (a U-turn is 2), so each
 //!   component costs at least 4.
 //!
-//! The bound for an exact objective ([`exact::cheap_lower_bound`](crate::exact::cheap_lower_bound))
+//! The bound for an exact objective (`mowmill_exact::cheap_lower_bound`)
 //! and the LP relaxations of the exact models (with all their connectivity cuts, stronger and
-//! costing an LP solve: [`exact::lp_lower_bound`](crate::exact::lp_lower_bound)) live with the
+//! costing an LP solve: `mowmill_exact::lp_lower_bound`) live with the
 //! exact models, which use the bounds here.
 
 use crate::region::Region;

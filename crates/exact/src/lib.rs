@@ -69,18 +69,27 @@
 //! as for every objective, only when the checker's recount of the returned cover equals the
 //! proven bound.
 
-pub(crate) mod cuts;
-pub(crate) mod driver;
+// The building blocks below are public for the discrete exact models (`mowmill::discrete::exact`),
+// which assemble their formulations from them; they are not part of the documented surface.
+#[doc(hidden)]
+pub mod cuts;
+#[doc(hidden)]
+pub mod driver;
 mod lawn;
-pub(crate) mod lp;
+#[doc(hidden)]
+pub mod lp;
 mod milling;
 mod turns;
-pub(crate) mod walks;
+#[doc(hidden)]
+pub mod walks;
 
-use crate::bounds::{self, LowerBound};
-use crate::checker::{self, Mode};
+// The core's modules under the paths the models use (this crate is built on the core alone:
+// it cannot reach an algorithm, the registry or the harness).
+pub(crate) use mowmill_core::{bounds, checker, euler, flow, region, strip_cover, topology, tour};
+
+use crate::bounds::LowerBound;
+use crate::checker::Mode;
 use crate::region::Region;
-use crate::topology;
 use crate::tour::CycleCover;
 use driver::{CutModel, Solved, Stop};
 use lp::{Deadline, Settings};
@@ -231,7 +240,7 @@ pub struct ExactOptions {
     pub max_coverage: Option<u32>,
     /// Without a `warm_start`, ask this source for one (its time counts in the solve's). The
     /// exact solver knows no algorithm: the caller passes the source, usually
-    /// [`crate::warm_start::from_registry`] (the best cover of the registered approximation
+    /// `mowmill::warm_start::from_registry` (the best cover of the registered approximation
     /// algorithms). `None`: no warm start unless `warm_start` is given.
     pub starts: Option<StartFn>,
 }
@@ -328,7 +337,8 @@ pub struct ExactResult<W = CycleCover> {
 impl<W> ExactResult<W> {
     /// The result before its walks are checked: no value, status `error` until
     /// [`certify`](Self::certify).
-    pub(crate) fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
+    #[doc(hidden)]
+    pub fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
         ExactResult {
             objective: objective.to_string(),
             value: None,
@@ -354,7 +364,8 @@ impl<W> ExactResult<W> {
     /// Takes `cover` with the checker's `report` of it when the report is a valid answer to
     /// `objective` (valid, one walk for a tour, within the coverage cap, not below the proven
     /// bound); otherwise the message says why not, prefixed `internal:` (a solver defect).
-    pub(crate) fn accept<V>(
+    #[doc(hidden)]
+    pub fn accept<V>(
         &mut self,
         objective: Objective,
         cover: W,
@@ -429,7 +440,8 @@ impl Answer {
 /// checker's recount of the walk (`value`) equals the proven lower bound and nothing went
 /// wrong (`message` holds the first problem found, e.g. a walk the checker rejects); a time
 /// limit without any walk says so in `message`.
-pub(crate) fn certify(
+#[doc(hidden)]
+pub fn certify(
     stop: &Stop,
     value: Option<u64>,
     lower_bound: u64,
@@ -468,8 +480,8 @@ pub(crate) fn certify(
 ///
 /// # Examples
 /// ```
-/// use mowmill::exact::{solve, ExactOptions, Objective, Status};
-/// use mowmill::Region;
+/// use mowmill_exact::{solve, ExactOptions, Objective, Status};
+/// use mowmill_core::Region;
 /// let r = Region::rectangle(3, 3);
 /// let res = solve(&r, Objective::Length, &ExactOptions::default());
 /// assert_eq!(res.status, Status::Optimal);

@@ -17,7 +17,7 @@ use crate::topology::graph_components;
 /// Components of the positive-weight support come first; on a connected support, Gusfield's
 /// algorithm yields a minimum cut for every pair of nodes (through the Gomory–Hu tree), and
 /// each tree cut below the threshold is returned once.
-pub(crate) fn violated_cuts(
+pub fn violated_cuts(
     n: usize,
     edges: &[(usize, usize, f64)],
     threshold: f64,
@@ -77,7 +77,7 @@ pub(crate) fn violated_cuts(
 
 /// The weight of the cut `S` in the given graph.
 #[cfg(test)]
-pub(crate) fn cut_weight(edges: &[(usize, usize, f64)], s: &[bool]) -> f64 {
+pub fn cut_weight(edges: &[(usize, usize, f64)], s: &[bool]) -> f64 {
     edges
         .iter()
         .filter(|&&(a, b, _)| s[a] != s[b])
