@@ -163,6 +163,23 @@ fn load_as_discrete(from: &Path, name: &str) -> Option<crate::discrete::Discrete
     Some(crate::discrete::Discrete::from_region(&inst.region))
 }
 
+/// The registered algorithm and the options of a row's algorithm column (a variant name such
+/// as `strips-matching[merge=naive,coverage4]` runs with its options, as the run did).
+fn rerun_of(
+    variant: &str,
+) -> Result<(
+    &'static crate::algorithms::Algorithm,
+    crate::algorithms::Options,
+)> {
+    let (name, options) = crate::evaluate::parse_variant(variant)?;
+    let a = crate::algorithms::find(name).ok_or_else(|| {
+        Error::invalid(format!(
+            "{name} is not a registered algorithm (an outside algorithm's walk is not kept)"
+        ))
+    })?;
+    Ok((a, options))
+}
+
 /// A claim's name in file names: lower-case letters and digits, anything else `-`.
 fn claim_slug(claim: &str) -> String {
     claim
@@ -206,9 +223,15 @@ fn save_discrete_finding(
         c.statement,
         c.implementation
     );
-    let run = crate::algorithms::find(algo).and_then(|a| a.discrete);
+    let (run, options) = match rerun_of(algo) {
+        Ok((a, options)) => (a.discrete, options),
+        Err(e) => {
+            let _ = writeln!(note, "not re-run: {e}");
+            (None, crate::algorithms::Options::default())
+        }
+    };
     if let Some(run) = run {
-        match run(&inst, &crate::algorithms::Options::default()) {
+        match run(&inst, &options) {
             Ok(sol) => {
                 if let Some(out) = sol.outputs.iter().find(|o| o.objective.name() == objective) {
                     let rep = check::check(&inst, &out.cover.cycles);
@@ -247,7 +270,8 @@ fn save_discrete_finding(
 
 /// Saves the violating instances of every violated claim into `dir`: for each (at most
 /// [`FINDINGS_LISTED`] per claim) the instance file copied from `from/instances/`, the
-/// algorithm's output re-run on it (algorithms are deterministic) as tour JSON, its figure
+/// algorithm's output re-run on it with the row's variant options (algorithms are deterministic)
+/// as tour JSON (a note says why where it cannot be re-run), its figure
 /// (PNG) and a note naming the claim, the values and whether the violating algorithm is the
 /// paper's or our reading. Returns the files written.
 pub fn save_findings(
@@ -255,7 +279,7 @@ pub fn save_findings(
     sources: &Sources,
     dir: &Path,
 ) -> Result<Vec<std::path::PathBuf>> {
-    use crate::algorithms::{self, Objective, Options};
+    use crate::algorithms::Objective;
     use crate::checker;
     let mut written = Vec::new();
     for c in table.iter().filter(|c| is_violated(c)) {
@@ -307,10 +331,17 @@ pub fn save_findings(
                 c.statement,
                 c.implementation
             );
-            let Some(a) = algorithms::find(algo) else {
-                continue;
+            let (a, options) = match rerun_of(algo) {
+                Ok(found) => found,
+                Err(e) => {
+                    let _ = writeln!(note, "not re-run: {e}");
+                    let path = dir.join(format!("{stem}.md"));
+                    std::fs::write(&path, note).map_err(|e| Error::io(&path, e))?;
+                    written.push(path);
+                    continue;
+                }
             };
-            match (a.run)(&inst.region, &Options::default()) {
+            match (a.run)(&inst.region, &options) {
                 Ok(sol) => {
                     if let Some(out) = sol.outputs.iter().find(|o| o.objective.name() == objective)
                     {
