@@ -262,8 +262,9 @@ impl Rows<'_> {
 }
 
 const FIG5: &str = "turn-cost paper, Fig. 5 and Section 5.3";
-const FIG16: &str = "milling paper, Theorem 5 and Fig. 16 (B_k of issue 7)";
-const FIG6: &str = "turn-cost paper, Fig. 6 and Theorem 5.9 (reconstruction of issue 7)";
+const FIG16: &str =
+    "milling paper, Theorem 5 and Fig. 16 (the band B_k stands in for the figure: docs/claims.md)";
+const FIG6: &str = "turn-cost paper, Fig. 6 and Theorem 5.9 (as reconstructed in docs/claims.md)";
 
 fn family_region(p: &GenParams) -> Result<Region> {
     Ok(generate(p)?.region)
