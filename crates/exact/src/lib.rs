@@ -336,9 +336,8 @@ pub struct ExactResult<W = CycleCover> {
 
 impl<W> ExactResult<W> {
     /// The result before its walks are checked: no value, status `error` until
-    /// [`certify`](Self::certify).
-    #[doc(hidden)]
-    pub fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
+    /// [`certify`].
+    fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
         ExactResult {
             objective: objective.to_string(),
             value: None,
@@ -364,8 +363,7 @@ impl<W> ExactResult<W> {
     /// Takes `cover` with the checker's `report` of it when the report is a valid answer to
     /// `objective` (valid, one walk for a tour, within the coverage cap, not below the proven
     /// bound); otherwise the message says why not, prefixed `internal:` (a solver defect).
-    #[doc(hidden)]
-    pub fn accept<V>(
+    fn accept<V>(
         &mut self,
         objective: Objective,
         cover: W,
@@ -405,17 +403,20 @@ impl<W> ExactResult<W> {
     }
 }
 
-/// What an objective's solver hands back before checking.
-struct Answer {
-    stop: Stop,
-    cover: Option<CycleCover>,
-    lower: LowerBound,
-    lp_bound: Option<u64>,
-    rounds: u32,
+/// What an objective's solver hands back before its walks are checked, on any model (`W`: a
+/// grid cover, or the vertex walks of a discrete instance).
+#[doc(hidden)]
+pub struct Answer<W = CycleCover> {
+    pub stop: Stop,
+    pub cover: Option<W>,
+    pub lower: LowerBound,
+    pub lp_bound: Option<u64>,
+    pub rounds: u32,
 }
 
-impl Answer {
-    fn trivial(cover: CycleCover, lower: LowerBound) -> Answer {
+impl<W> Answer<W> {
+    /// An optimum known without a solve (a one-pixel instance).
+    pub fn trivial(cover: W, lower: LowerBound) -> Self {
         Answer {
             stop: Stop::Optimal,
             cover: Some(cover),
@@ -425,7 +426,8 @@ impl Answer {
         }
     }
 
-    fn stopped(stop: Stop, lower: LowerBound) -> Answer {
+    /// No walks: the solve stopped (infeasible, an error) before it began.
+    pub fn stopped(stop: Stop, lower: LowerBound) -> Self {
         Answer {
             stop,
             cover: None,
@@ -434,14 +436,66 @@ impl Answer {
             rounds: 0,
         }
     }
+
+    /// The driver's answer with the walks decoded from its solution; the bound is the better
+    /// of the driver's and the cheap one.
+    pub fn from_solved(s: Solved, cover: Option<W>, cheap: LowerBound) -> Self {
+        let lower = if s.lower > cheap.value {
+            LowerBound {
+                value: s.lower,
+                source: s.lower_source,
+            }
+        } else {
+            cheap
+        };
+        Answer {
+            stop: s.stop,
+            cover,
+            lower,
+            lp_bound: s.lp_bound,
+            rounds: s.rounds,
+        }
+    }
+
+    /// The checked result: the walks recounted by the model's `check`er, the status `optimal`
+    /// only when the recount equals the proven bound. `n` is the instance's size, `cap` the
+    /// coverage cap, `infeasible` the message of an infeasible model.
+    pub fn into_result<V>(
+        self,
+        objective: Objective,
+        (seconds, n, cap): (f64, usize, Option<u32>),
+        infeasible: &str,
+        check: impl FnOnce(&W) -> checker::Report<V>,
+    ) -> ExactResult<W> {
+        let mut r = ExactResult::unchecked(
+            objective,
+            (self.lower.value, self.lower.source),
+            self.rounds,
+        );
+        r.seconds = seconds;
+        r.lp_bound = self.lp_bound;
+        r.n = n;
+        r.coverage_cap = cap;
+        let mut message = match &self.stop {
+            Stop::Error(m) => Some(m.clone()),
+            Stop::Infeasible => Some(infeasible.to_string()),
+            _ => None,
+        };
+        if let Some(cover) = self.cover {
+            let report = check(&cover);
+            message = r.accept(objective, cover, &report).or(message);
+        }
+        r.status = certify(&self.stop, r.value, r.lower_bound, &mut message);
+        r.message = message;
+        r
+    }
 }
 
 /// The status of a solve, the one rule for both models' certificates: `optimal` only when the
 /// checker's recount of the walk (`value`) equals the proven lower bound and nothing went
 /// wrong (`message` holds the first problem found, e.g. a walk the checker rejects); a time
 /// limit without any walk says so in `message`.
-#[doc(hidden)]
-pub fn certify(
+pub(crate) fn certify(
     stop: &Stop,
     value: Option<u64>,
     lower_bound: u64,
@@ -560,27 +614,17 @@ fn assemble(
     seconds: f64,
     cap: Option<u32>,
 ) -> ExactResult {
-    let mut r = ExactResult::unchecked(objective, (a.lower.value, a.lower.source), a.rounds);
-    r.seconds = seconds;
-    r.lp_bound = a.lp_bound;
-    r.n = region.len();
-    r.coverage_cap = cap;
-    let mut message = match &a.stop {
-        Stop::Error(m) => Some(m.clone()),
-        Stop::Infeasible => Some(if objective.is_tour() && objective != Objective::LawnTsp {
-            "no covering tour exists: the region is not connected".to_string()
-        } else {
-            "the model is infeasible".to_string()
-        }),
-        _ => None,
+    let infeasible = if objective.is_tour() && objective != Objective::LawnTsp {
+        "no covering tour exists: the region is not connected"
+    } else {
+        "the model is infeasible"
     };
-    if let Some(cover) = a.cover {
-        let report = checker::check(region, &cover, objective.mode());
-        message = r.accept(objective, cover, &report).or(message);
-    }
-    r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
-    r.message = message;
-    r
+    a.into_result(
+        objective,
+        (seconds, region.len(), cap),
+        infeasible,
+        |cover| checker::check(region, cover, objective.mode()),
+    )
 }
 
 fn not_connected(region: &Region) -> bool {
@@ -596,24 +640,6 @@ fn checked_warm_start<'c>(
     let c = opts.warm_start.as_ref()?;
     let rep = checker::check(region, c, objective.mode());
     (rep.valid && (!objective.is_tour() || rep.cycles == 1)).then_some(c)
-}
-
-fn to_answer(s: Solved, cover: Option<CycleCover>, source_lower: LowerBound) -> Answer {
-    let lower = if s.lower > source_lower.value {
-        LowerBound {
-            value: s.lower,
-            source: s.lower_source,
-        }
-    } else {
-        source_lower
-    };
-    Answer {
-        stop: s.stop,
-        cover,
-        lower,
-        lp_bound: s.lp_bound,
-        rounds: s.rounds,
-    }
 }
 
 fn solve_length(
@@ -650,7 +676,7 @@ fn solve_length(
         .best
         .as_ref()
         .map(|x| CycleCover::tour(model.walk(&model.multiplicities(x))));
-    to_answer(s, cover, lower)
+    Answer::from_solved(s, cover, lower)
 }
 
 fn solve_turns(
@@ -703,7 +729,7 @@ fn solve_turns(
         .best
         .as_ref()
         .map(|x| CycleCover::new(model.walks(&model.counts(x))));
-    to_answer(s, cover, lower)
+    Answer::from_solved(s, cover, lower)
 }
 
 /// The passage model's goal for a turn objective.
@@ -763,7 +789,7 @@ fn solve_lawn(
         .best
         .as_ref()
         .map(|x| CycleCover::tour(model.walk(&model.order(x))));
-    to_answer(s, cover, lower)
+    Answer::from_solved(s, cover, lower)
 }
 
 /// The best cheap bound for an objective (no LP; the bounds of [`crate::bounds`]).

@@ -1,7 +1,7 @@
 //! The `length` model: edge multiplicities with even degrees and connectivity cuts, whose
 //! optimum is the shortest closed walk visiting every vertex (see the parent module).
 
-use super::{Answer, LowerBound, is_bipartite, is_connected, to_answer, tree_walks};
+use super::{Answer, LowerBound, is_bipartite, is_connected, tree_walks};
 use crate::discrete::{Discrete, VertexWalk};
 use crate::exact::cuts::violated_cuts;
 use crate::exact::driver::{self, CutModel, Stop};
@@ -183,5 +183,5 @@ pub(super) fn solve_length(inst: &Discrete, deadline: &Deadline, settings: &Sett
         .best
         .as_ref()
         .map(|x| vec![model.walk(&model.multiplicities(x))]);
-    to_answer(s, walks, lower)
+    Answer::from_solved(s, walks, lower)
 }

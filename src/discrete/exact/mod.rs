@@ -108,9 +108,9 @@ mod tests;
 use super::check;
 use super::{Discrete, VertexWalk};
 use crate::bounds::LowerBound;
-use crate::exact::driver::{Solved, Stop};
+use crate::exact::driver::Stop;
 use crate::exact::lp::{Deadline, Settings};
-use crate::exact::{ExactResult, Objective, certify};
+use crate::exact::{ExactResult, Objective};
 use crate::topology::graph_components;
 use length::solve_length;
 use passage::solve_passages;
@@ -143,36 +143,8 @@ impl Default for DiscreteOptions {
 /// place of a grid cover (`cover`) and no coverage cap.
 pub type DiscreteExactResult = ExactResult<Vec<VertexWalk>>;
 
-/// What a solver hands back before checking.
-struct Answer {
-    stop: Stop,
-    walks: Option<Vec<VertexWalk>>,
-    lower: LowerBound,
-    lp_bound: Option<u64>,
-    rounds: u32,
-}
-
-impl Answer {
-    fn trivial(walks: Vec<VertexWalk>, lower: LowerBound) -> Answer {
-        Answer {
-            stop: Stop::Optimal,
-            walks: Some(walks),
-            lower,
-            lp_bound: None,
-            rounds: 0,
-        }
-    }
-
-    fn stopped(stop: Stop, lower: LowerBound) -> Answer {
-        Answer {
-            stop,
-            walks: None,
-            lower,
-            lp_bound: None,
-            rounds: 0,
-        }
-    }
-}
+/// What a solver hands back before checking: the exact crate's answer with vertex walks.
+type Answer = crate::exact::Answer<Vec<VertexWalk>>;
 
 /// Solves `objective` on a discrete instance exactly, within `opts.time_limit`.
 ///
@@ -222,41 +194,13 @@ pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> D
 /// The checked result: the walks are recounted, and the status is `optimal` only when the
 /// recount equals the proven bound.
 fn assemble(inst: &Discrete, objective: Objective, a: Answer, seconds: f64) -> DiscreteExactResult {
-    let mut r =
-        DiscreteExactResult::unchecked(objective, (a.lower.value, a.lower.source), a.rounds);
-    r.seconds = seconds;
-    r.lp_bound = a.lp_bound;
-    r.n = inst.len();
-    let mut message = match &a.stop {
-        Stop::Error(m) => Some(m.clone()),
-        Stop::Infeasible => Some("no covering tour exists: the graph is not connected".into()),
-        _ => None,
-    };
-    if let Some(walks) = a.walks {
-        let report = check::check(inst, &walks);
-        message = r.accept(objective, walks, &report).or(message);
-    }
-    r.status = certify(&a.stop, r.value, r.lower_bound, &mut message);
-    r.message = message;
-    r
-}
-
-fn to_answer(s: Solved, walks: Option<Vec<VertexWalk>>, cheap: LowerBound) -> Answer {
-    let lower = if s.lower > cheap.value {
-        LowerBound {
-            value: s.lower,
-            source: s.lower_source,
-        }
-    } else {
-        cheap
-    };
-    Answer {
-        stop: s.stop,
-        walks,
-        lower,
-        lp_bound: s.lp_bound,
-        rounds: s.rounds,
-    }
+    let infeasible = "no covering tour exists: the graph is not connected";
+    a.into_result(
+        objective,
+        (seconds, inst.len(), None),
+        infeasible,
+        |walks| check::check(inst, walks),
+    )
 }
 
 fn is_connected(inst: &Discrete) -> bool {

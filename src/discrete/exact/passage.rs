@@ -4,7 +4,7 @@
 //! formulation and why it is exact).
 
 use super::rooks::{channels, rook_placement};
-use super::{Answer, LowerBound, NONE, is_connected, to_answer, tree_walks};
+use super::{Answer, LowerBound, NONE, is_connected, tree_walks};
 use crate::discrete::{Discrete, VertexWalk};
 use crate::exact::Objective;
 use crate::exact::cuts::violated_cuts;
@@ -979,5 +979,5 @@ pub(super) fn solve_passages(
         }
         model.walks(&counts)
     });
-    to_answer(s, walks, lower)
+    Answer::from_solved(s, walks, lower)
 }
