@@ -7,6 +7,11 @@
 //! runs an algorithm and judges its output; the command line, the benchmark runner and the
 //! tight families all call it.
 //!
+//! This crate is the top of a workspace of three (docs/layout.md): the science core
+//! `mowmill-core` (regions, readers, families, walks, checkers, bounds) and the exact models
+//! `mowmill-exact` sit below it and cannot reach up; their modules are re-exported here under
+//! the paths below.
+//!
 //! # Public surface
 //!
 //! Only what a library user (and the `mowmill` binary, the tests, examples and benches) needs:
@@ -71,7 +76,6 @@ pub mod claims;
 pub mod discrete;
 pub mod draw;
 pub mod evaluate;
-// Dinic max-flow only serves the cuts of the exact models and the matching LP.
 pub mod harness;
 pub mod hunt;
 pub mod model;
@@ -81,6 +85,7 @@ pub mod tight;
 pub mod warm_start;
 
 pub use error::{Error, Result};
+// Dinic max-flow (in the core) serves the cuts of the exact models and the matching LP.
 pub(crate) use mowmill_core::flow;
 pub use mowmill_core::{
     bounds, checker, error, generate, gridfile, input, instance, lawn_check, pixel_list, region,
