@@ -80,6 +80,19 @@ impl Subject<'_> {
         }
     }
 
+    /// The theorems the subject claims for `objective` on `model` (none for outside
+    /// algorithms: their claims are their guarantees).
+    pub fn theorems_on(
+        &self,
+        objective: Objective,
+        model: Model<'_>,
+    ) -> Vec<&'static crate::algorithms::theorems::Theorem> {
+        match self {
+            Subject::Registered(a) => a.theorems_on(objective, model),
+            Subject::Outside(_) => Vec::new(),
+        }
+    }
+
     pub fn guarantees(&self) -> &[Guarantee] {
         match self {
             Subject::Registered(a) => a.guarantees,

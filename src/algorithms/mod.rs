@@ -860,6 +860,23 @@ impl Algorithm {
                 .any(|c| self.objectives.contains(c))
     }
 
+    /// The theorems it claims for its outputs of `objective` whose condition holds on the
+    /// instance (the ids a result row carries in its `theorems` column), in claim order.
+    pub fn theorems_on(&self, objective: Objective, model: Model<'_>) -> Vec<&'static Theorem> {
+        let mut list: Vec<&'static Theorem> = Vec::new();
+        for c in self
+            .claims
+            .iter()
+            .filter(|c| c.objectives.contains(&objective))
+        {
+            if c.theorem.when.applies_to(model) && !list.iter().any(|t| std::ptr::eq(*t, c.theorem))
+            {
+                list.push(c.theorem);
+            }
+        }
+        list
+    }
+
     /// The paper it comes from: that of its guarantees' and claims' theorems.
     pub fn paper(&self) -> Paper {
         self.guarantees

@@ -199,6 +199,12 @@ impl Theorem {
     pub fn cite(&self) -> String {
         format!("{} of {}", self.id, self.paper.title())
     }
+
+    /// The theorem's id in result rows (their `theorems` column) and claims tables: the paper's
+    /// short name and the theorem's number, e.g. `milling:Theorem 5`.
+    pub fn key(&self) -> String {
+        format!("{}:{}", self.paper.short(), self.id)
+    }
 }
 
 /// An algorithm's claim to realize a theorem: its outputs of `objectives` are measured against

@@ -3,6 +3,21 @@
 
 use super::*;
 
+/// Whether the header line of the CSV file at `path` names `column`.
+fn has_column(path: &Path, column: &str) -> Result<bool> {
+    use std::io::{BufRead, Read};
+    let file = crate::harness::rows::open_regular(
+        path,
+        crate::harness::rows::MAX_RESULTS_BYTES,
+        "a results.csv",
+    )?;
+    let mut header = String::new();
+    std::io::BufReader::new(file.take(1 << 16))
+        .read_line(&mut header)
+        .map_err(|e| Error::io(path, e))?;
+    Ok(header.trim_end().split(',').any(|c| c == column))
+}
+
 /// The results directories a claims table is computed from. With more than one, each row's
 /// instance is named `RUN/INSTANCE` (RUN the directory's name), so that equal instance names of
 /// different runs (the same family, parameters and index under another master seed) never meet.
@@ -43,7 +58,20 @@ impl Sources {
     pub fn read_rows(&self) -> Result<Vec<Row>> {
         let mut rows = Vec::new();
         for (name, dir) in &self.dirs {
-            let mut read = crate::harness::rows::read_results(&dir.join("results.csv"))?;
+            let path = dir.join("results.csv");
+            let mut read = crate::harness::rows::read_results(&path)?;
+            // Claims join on the rows' theorem ids: rows written before the column existed
+            // cannot say which conditioned theorems apply to them.
+            if !has_column(&path, "theorems")? {
+                return Err(Error::parse(
+                    &path.display().to_string(),
+                    1,
+                    1,
+                    "expected a header with the `theorems` column (this results.csv was written \
+                     by an older mowmill, whose rows do not say which theorems apply to them: \
+                     run its suite again)",
+                ));
+            }
             // An inconsistent row (below its proven bound, or a value that is not its own
             // count) is an invalid result: it is evidence of nothing and breaks its claims.
             for r in &mut read {

@@ -6,22 +6,8 @@ use super::*;
 pub(super) fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Measured<'a> {
     let theorem = claim.theorem;
     let mut m = Measured::default();
-    let applies = |r: &Row| {
-        theorem.when == When::Always
-            // A lattice instance: the row carries its number of directions d.
-            || (theorem.when == When::Lattice && r.d.is_some())
-            || (theorem.when == When::NonTrivial && r.n >= 2)
-            // A simple polygon: a grid region or orthogonal polygon without holes.
-            || (theorem.when == When::Simple
-                && r.holes == 0
-                && matches!(r.model.as_str(), "" | "grid" | "ortho"))
-            || crate::algorithms::find(&r.algorithm).is_some_and(|a| {
-                a.guarantees
-                    .iter()
-                    .filter(|g| g.when == theorem.when)
-                    .any(|g| r.guarantee.contains(&g.to_string()))
-            })
-    };
+    // The harness wrote the ids of the theorems whose condition held on the row's instance.
+    let applies = |r: &Row| r.cites(theorem);
     let coverage4 = matches!(
         theorem.measure,
         Measure::Coverage4SameTurns | Measure::Coverage4LengthCoverage

@@ -108,6 +108,11 @@ pub struct Row {
     /// write their exact lengths over a common denominator (see `evaluate`).
     #[serde(default)]
     pub unit: Option<u64>,
+    /// The ids ([`Theorem::key`](crate::algorithms::theorems::Theorem::key)) of the theorems the
+    /// row's algorithm claims for its objective whose condition holds on the instance, joined by
+    /// `; ` (empty for exact rows and outside algorithms): the claims table joins on them.
+    #[serde(default)]
+    pub theorems: String,
 }
 
 impl Row {
@@ -198,6 +203,12 @@ impl Row {
             };
         }
         true
+    }
+
+    /// Whether the row carries `theorem`'s id in its `theorems` column.
+    pub fn cites(&self, theorem: &crate::algorithms::theorems::Theorem) -> bool {
+        let key = theorem.key();
+        self.theorems.split("; ").any(|k| k == key)
     }
 
     /// The row as messages name it: instance, algorithm, objective.

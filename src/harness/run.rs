@@ -879,6 +879,12 @@ fn algorithm_rows<C>(
             .map(|g| g.to_string())
             .collect::<Vec<_>>()
             .join("; "),
+        theorems: subject
+            .theorems_on(objective, model)
+            .iter()
+            .map(|t| t.key())
+            .collect::<Vec<_>>()
+            .join("; "),
         seconds: eval.seconds,
         merge: if merge {
             eval.options.merge.to_string()
