@@ -333,7 +333,7 @@ impl Search {
                 "thin-merge tour\n{}",
                 r.to_ascii()
             );
-            let exact = solve(&r, Objective::TourTurns, &self.opts);
+            let exact = solve(&r, Objective::Turns, &self.opts);
             match (exact.status, exact.value) {
                 (Status::Optimal, Some(opt)) => {
                     c.tours_decided += 1;

@@ -124,11 +124,9 @@ fn main() {
                             length: rep.length,
                             max_coverage: cov,
                         };
-                        for g in algo
-                            .guarantees
-                            .iter()
-                            .filter(|g| g.objective == out.objective && g.against != Against::Opt)
-                        {
+                        for g in algo.guarantees.iter().filter(|g| {
+                            g.objective == out.objective && g.bound.against != Against::Opt
+                        }) {
                             if g.decide(&m, nn, None, None) == Some(false) {
                                 t.violated += 1;
                                 eprintln!("{name} {label}: {g} violated ({m:?})");

@@ -34,7 +34,7 @@ struct Args {
 
 fn parse_args() -> Result<Args, String> {
     let mut a = Args {
-        objectives: vec![Objective::Length, Objective::CcTurns, Objective::TourTurns],
+        objectives: vec![Objective::Length, Objective::CcTurns, Objective::Turns],
         sizes: vec![50, 100, 150, 200],
         seeds: 5,
         time_limit: 120.0,
@@ -97,7 +97,7 @@ fn parse_args() -> Result<Args, String> {
         a.objectives = names
             .split(',')
             .map(|s| match s {
-                "weighted" => Ok(Objective::Weighted { turn_cost }),
+                "weighted" => Ok(Objective::Weighted(turn_cost)),
                 _ => s.parse::<Objective>(),
             })
             .collect::<Result<_, _>>()?;

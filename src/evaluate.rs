@@ -206,11 +206,8 @@ pub fn cheap_bound(region: &Region, objective: Objective, cutter: Cutter) -> (u6
             let b = bounds::turn_lower_bound(region);
             (b.value, b.source.to_string())
         }
-        Objective::Weighted(_) | Objective::WeightedCc(_) => {
-            let b = crate::exact::cheap_lower_bound(
-                region,
-                exact_objective(objective).expect("milling objective"),
-            );
+        Objective::Weighted(_) | Objective::WeightedCc(_) | Objective::LawnTsp => {
+            let b = crate::exact::cheap_lower_bound(region, objective);
             (b.value, b.source.to_string())
         }
         Objective::LawnLength => {
@@ -470,21 +467,13 @@ fn judge_on<M: InstanceModel>(
     };
     let model = instance.model();
     let n = model.len() as u64;
-    // A bound on a length is written in the units of the lengths: its constant and its N
-    // scale by `unit` (1 on pixels and graphs).
+    // A bound on a length is written in the units of the lengths (1 on pixels and graphs).
     let applicable: Vec<_> = subject
         .applicable_to(objective, model, options)
         .into_iter()
-        .map(|mut g| {
-            let on_length = g.quantity == algorithms::Quantity::Length
-                || (g.quantity == algorithms::Quantity::Value && objective == Objective::Length);
-            if on_length && unit != 1 {
-                g.add = g.add.saturating_mul(unit as i64);
-                if g.against == algorithms::Against::N {
-                    g.num = g.num.saturating_mul(unit as i64);
-                }
-            }
-            g
+        .map(|g| Guarantee {
+            bound: g.bound.in_units(unit, objective == Objective::Length),
+            ..g
         })
         .collect();
     let (verdicts, within_guarantee) = verdicts(&applicable, &measured, n, opt, lower_bound);
@@ -593,7 +582,7 @@ pub fn discrete_cheap_bound(inst: &Discrete, objective: Objective) -> (u64, Stri
         Objective::Weighted(c) | Objective::WeightedCc(c) => {
             (length + u64::from(c) * rooks(), "n + C rooks".to_string())
         }
-        Objective::LawnLength => (0, "none".to_string()),
+        Objective::LawnLength | Objective::LawnTsp => (0, "none".to_string()),
     }
 }
 
@@ -608,18 +597,10 @@ pub fn exact_counterpart(objective: Objective) -> Option<Objective> {
     }
 }
 
-/// The exact solver's objective of a milling objective (`None` for lawn tours, see
-/// [`exact_counterpart`]).
+/// The exact solver's objective of an algorithm objective (one objective type: itself, or
+/// `None` for lawn tours, see [`exact_counterpart`]).
 pub fn exact_objective(objective: Objective) -> Option<crate::exact::Objective> {
-    use crate::exact::Objective as E;
-    Some(match exact_counterpart(objective)? {
-        Objective::Length => E::Length,
-        Objective::CcTurns => E::CcTurns,
-        Objective::Turns => E::TourTurns,
-        Objective::Weighted(c) => E::Weighted { turn_cost: c },
-        Objective::WeightedCc(c) => E::WeightedCc { turn_cost: c },
-        Objective::LawnLength => return None,
-    })
+    exact_counterpart(objective)
 }
 
 /// The checker's recount of `cover` for `objective`: the milling checker, or for lawn tours the

@@ -88,8 +88,8 @@ pub use error::{Error, Result};
 // Dinic max-flow (in the core) serves the cuts of the exact models and the matching LP.
 pub(crate) use mowmill_core::flow;
 pub use mowmill_core::{
-    bounds, checker, error, generate, gridfile, input, instance, lawn_check, pixel_list, region,
-    strip_cover, topology, tour, tsplib, wkt,
+    bounds, checker, error, generate, gridfile, input, instance, lawn_check, objective, pixel_list,
+    region, strip_cover, topology, tour, tsplib, wkt,
 };
 /// The exact models (their own crate, `mowmill-exact`: HiGHS and the core, no algorithm).
 pub use mowmill_exact as exact;

@@ -130,7 +130,7 @@ pub struct ExactOutcome {
 /// The value of `objective` from a recount's length and turns.
 fn milling_value(objective: Objective, length: u64, turns: u64) -> u64 {
     match objective {
-        Objective::Length | Objective::LawnLength => length,
+        Objective::Length | Objective::LawnLength | Objective::LawnTsp => length,
         Objective::Turns | Objective::CcTurns => turns,
         Objective::Weighted(c) | Objective::WeightedCc(c) => length + u64::from(c) * turns,
     }

@@ -128,7 +128,13 @@ impl OutsideAlgorithm {
         let objectives: Vec<Objective> = spec
             .objectives
             .iter()
-            .map(|o| o.parse::<Objective>())
+            .map(|o| match o.parse::<Objective>() {
+                Ok(Objective::LawnTsp) => Err(format!(
+                    "{o:?} is the exact solver's reference, not an output: expected one of {}",
+                    Objective::NAMES.join(", ")
+                )),
+                other => other,
+            })
             .collect::<std::result::Result<_, _>>()
             .map_err(|e| format!("objectives: {e}"))?;
         if objectives.is_empty() {
@@ -176,18 +182,13 @@ impl OutsideAlgorithm {
                 realized: Realized::ByAlgorithms,
                 tight: None,
             }));
-            guarantees.push(Guarantee {
-                theorem,
+            guarantees.push(Guarantee::new(
                 objective,
-                quantity: Quantity::Value,
-                num,
-                den,
-                add: 0,
-                against,
-                when: When::Always,
-                scale: crate::algorithms::Scale::One,
+                crate::algorithms::theorems::Bound::new(Quantity::Value, num, den, 0, against),
+                When::Always,
+                theorem,
                 source,
-            });
+            ));
         }
         Ok(OutsideAlgorithm {
             name: spec.name.clone(),

@@ -44,7 +44,7 @@ pub fn from_registry(request: &StartRequest<'_>) -> Option<CycleCover> {
     }
     let cost = |rep: &checker::Report| match objective {
         Objective::Length => rep.length,
-        Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
+        Objective::Weighted(turn_cost) | Objective::WeightedCc(turn_cost) => {
             rep.length + u64::from(turn_cost) * rep.turns
         }
         _ => rep.turns,

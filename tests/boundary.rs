@@ -289,7 +289,7 @@ fn thin_pockets_with_short_arms_are_optimal() {
         let (cc, _) = turns(&r, &sol);
         assert_eq!(Some(cc), exact(&r, Objective::CcTurns), "thin-cc\n{text}");
         let (_, tour) = turns(&r, &run("thin-merge", &r));
-        let opt = exact(&r, Objective::TourTurns).expect("small tour solve");
+        let opt = exact(&r, Objective::Turns).expect("small tour solve");
         assert!(3 * tour.unwrap() <= 4 * opt, "thin-merge\n{text}");
     }
 }
@@ -431,7 +431,7 @@ fn covers_equal_the_exact_optimum_on_small_random_regions() {
             None => skipped += 1,
         }
         let (_, tour) = turns(&r, &run("thin-merge", &r));
-        match exact(&r, Objective::TourTurns) {
+        match exact(&r, Objective::Turns) {
             Some(opt) => {
                 decided += 1;
                 assert!(3 * tour.unwrap() <= 4 * opt, "thin-merge\n{}", r.to_ascii());

@@ -377,7 +377,7 @@ fn exact_optimum_is_the_brute_force_optimum_on_tiny_regions() {
             let tour_turns = cheapest_walks(r, 0, 1)[(1 << r.len()) - 1];
             for (o, brute) in [
                 (exact::Objective::Length, tour_len),
-                (exact::Objective::TourTurns, tour_turns),
+                (exact::Objective::Turns, tour_turns),
                 (exact::Objective::CcTurns, brute_cc_turns(r)),
             ] {
                 match proven(r, o) {
@@ -449,7 +449,7 @@ fn exact_optimum_is_invariant_under_the_symmetries_of_the_square() {
         for o in [
             exact::Objective::Length,
             exact::Objective::CcTurns,
-            exact::Objective::TourTurns,
+            exact::Objective::Turns,
         ] {
             let values: Vec<Option<u64>> = Symmetry::all()
                 .map(|s| proven(&c.region.transformed(s), o))

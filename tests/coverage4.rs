@@ -324,8 +324,8 @@ fn capping_coverage_at_four_costs_optimal_tours_nothing() {
             max_coverage: cap,
             ..mowmill::warm_start::exact_options()
         };
-        let free = solve(&region, Objective::TourTurns, &opts(None));
-        let capped = solve(&region, Objective::TourTurns, &opts(Some(4)));
+        let free = solve(&region, Objective::Turns, &opts(None));
+        let capped = solve(&region, Objective::Turns, &opts(Some(4)));
         assert!(capped.valid, "{family} {n} {seed}: {:?}", capped.message);
         assert!(capped.max_coverage.unwrap() <= 4);
         assert_eq!(capped.coverage_cap, Some(4));
@@ -353,9 +353,9 @@ fn coverage_cap_is_enforced_by_the_exact_model() {
         max_coverage: Some(1),
         ..mowmill::warm_start::exact_options()
     };
-    let square = solve(&Region::rectangle(2, 2), Objective::TourTurns, &opts);
+    let square = solve(&Region::rectangle(2, 2), Objective::Turns, &opts);
     assert_eq!((square.status, square.value), (Status::Optimal, Some(4)));
-    let row = solve(&Region::rectangle(3, 1), Objective::TourTurns, &opts);
+    let row = solve(&Region::rectangle(3, 1), Objective::Turns, &opts);
     assert!(row.value.is_none(), "{row:?}");
     assert_ne!(row.status, Status::Optimal);
     let length = solve(&Region::rectangle(2, 2), Objective::Length, &opts);

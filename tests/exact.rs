@@ -76,15 +76,15 @@ fn hand_fixtures_have_their_known_optima() {
     let rect = fixture("rect-2x3.grid");
     assert_eq!(value(&rect, Objective::Length), 6);
     assert_eq!(value(&rect, Objective::CcTurns), 4);
-    assert_eq!(value(&rect, Objective::TourTurns), 4);
+    assert_eq!(value(&rect, Objective::Turns), 4);
     let row = fixture("row-1x4.grid");
     assert_eq!(value(&row, Objective::Length), 6);
     assert_eq!(value(&row, Objective::CcTurns), 4);
-    assert_eq!(value(&row, Objective::TourTurns), 4);
+    assert_eq!(value(&row, Objective::Turns), 4);
     let sq3 = fixture("square-3x3.grid");
     assert_eq!(value(&sq3, Objective::Length), 10);
     assert_eq!(value(&sq3, Objective::CcTurns), 8);
-    assert_eq!(value(&sq3, Objective::TourTurns), 8);
+    assert_eq!(value(&sq3, Objective::Turns), 8);
     assert_eq!(value(&fixture("square-5x5.grid"), Objective::Length), 26);
 }
 
@@ -94,23 +94,23 @@ fn small_special_cases() {
     for o in [
         Objective::Length,
         Objective::CcTurns,
-        Objective::TourTurns,
+        Objective::Turns,
         Objective::LawnTsp,
     ] {
         let r = solved(&one, o);
         assert_eq!(r.length, Some(0));
     }
-    assert_eq!(value(&one, Objective::TourTurns), 4);
-    assert_eq!(value(&one, Objective::Weighted { turn_cost: 3 }), 12);
+    assert_eq!(value(&one, Objective::Turns), 4);
+    assert_eq!(value(&one, Objective::Weighted(3)), 12);
     let two = Region::rectangle(2, 1);
     assert_eq!(value(&two, Objective::Length), 2);
-    assert_eq!(value(&two, Objective::TourTurns), 4);
-    assert_eq!(value(&two, Objective::Weighted { turn_cost: 2 }), 10);
+    assert_eq!(value(&two, Objective::Turns), 4);
+    assert_eq!(value(&two, Objective::Weighted(2)), 10);
     // A plus: two doubled strips cover it with 8 turns, but one tour needs 10 (they only
     // cross at the centre, which no free splice can join).
     let plus = Region::from_ascii(".#.\n###\n.#.\n");
     assert_eq!(value(&plus, Objective::CcTurns), 8);
-    assert_eq!(value(&plus, Objective::TourTurns), 10);
+    assert_eq!(value(&plus, Objective::Turns), 10);
     assert_eq!(value(&plus, Objective::Length), 8);
 }
 
@@ -135,22 +135,14 @@ fn weighted_cycle_covers_by_hand() {
     ];
     for (ascii, at_50, at_1) in cases {
         let r = Region::from_ascii(ascii);
-        assert_eq!(
-            value(&r, Objective::WeightedCc { turn_cost: 50 }),
-            at_50,
-            "{ascii}"
-        );
-        assert_eq!(
-            value(&r, Objective::WeightedCc { turn_cost: 1 }),
-            at_1,
-            "{ascii}"
-        );
+        assert_eq!(value(&r, Objective::WeightedCc(50)), at_50, "{ascii}");
+        assert_eq!(value(&r, Objective::WeightedCc(1)), at_1, "{ascii}");
         // With C = 0 every pixel is a free one-pixel walk.
-        assert_eq!(value(&r, Objective::WeightedCc { turn_cost: 0 }), 0);
+        assert_eq!(value(&r, Objective::WeightedCc(0)), 0);
     }
     let spur = solved(
         &Region::from_ascii("..#..\n#####\n"),
-        Objective::WeightedCc { turn_cost: 50 },
+        Objective::WeightedCc(50),
     );
     assert_eq!(
         (spur.length, spur.turns, spur.cycles),
@@ -162,11 +154,7 @@ fn weighted_cycle_covers_by_hand() {
 #[test]
 fn disconnected_regions_have_cycle_covers_but_no_tours() {
     let r = Region::from_ascii("##.#\n##..\n");
-    for o in [
-        Objective::Length,
-        Objective::TourTurns,
-        Objective::Weighted { turn_cost: 1 },
-    ] {
+    for o in [Objective::Length, Objective::Turns, Objective::Weighted(1)] {
         let res = solve(&r, o, &opts());
         assert_eq!(res.status, Status::Infeasible, "{o}");
         assert!(res.value.is_none() && !res.valid && res.message.is_some());
@@ -174,7 +162,7 @@ fn disconnected_regions_have_cycle_covers_but_no_tours() {
     // A 2x2 block (4 turns) and an isolated pixel (4 turns).
     assert_eq!(value(&r, Objective::CcTurns), 8);
     // Weighted: the block (4 + 4C) and the isolated pixel (4C).
-    assert_eq!(value(&r, Objective::WeightedCc { turn_cost: 5 }), 44);
+    assert_eq!(value(&r, Objective::WeightedCc(5)), 44);
     // The lawn tour may leave the grass.
     assert_eq!(value(&r, Objective::LawnTsp), 8);
 }
@@ -191,7 +179,7 @@ fn lawn_tsp_of_a_scattered_lawn() {
 
 #[test]
 fn json_has_the_contract_keys() {
-    let r = solve(&Region::rectangle(3, 2), Objective::TourTurns, &opts());
+    let r = solve(&Region::rectangle(3, 2), Objective::Turns, &opts());
     let v = serde_json::to_value(&r).expect("serializes");
     for k in [
         "objective",
@@ -214,17 +202,20 @@ fn json_has_the_contract_keys() {
 
 #[test]
 fn objective_names_round_trip() {
-    for name in Objective::NAMES {
-        let o: Objective = name.parse().expect("known name");
-        assert_eq!(o.to_string(), name);
+    for name in Objective::EXACT_NAMES {
+        let cost = name.starts_with("weighted").then_some(50);
+        let o = Objective::parse(name, cost).expect("known name");
+        assert_eq!(o.name(), name);
+        // The results spell the weighted ones with their cost, and read them back.
+        assert_eq!(o.to_string().parse::<Objective>(), Ok(o));
     }
     assert_eq!(
         Objective::parse("weighted", Some(5)),
-        Ok(Objective::Weighted { turn_cost: 5 })
+        Ok(Objective::Weighted(5))
     );
     assert_eq!(
         Objective::parse("weighted-cc", Some(50)),
-        Ok(Objective::WeightedCc { turn_cost: 50 })
+        Ok(Objective::WeightedCc(50))
     );
     assert!(Objective::parse("weighted", None).is_err());
     assert!(Objective::parse("weighted-cc", None).is_err());
@@ -238,7 +229,7 @@ fn time_limit_gives_a_checked_incumbent_and_a_bound() {
     let r = Region::rectangle(14, 13);
     let res = solve(
         &r,
-        Objective::TourTurns,
+        Objective::Turns,
         &ExactOptions {
             time_limit: Some(0.1),
             ..mowmill::warm_start::exact_options()
@@ -362,8 +353,8 @@ proptest! {
     #[test]
     fn tours_match_brute_force(r in tiny_region(8, true)) {
         prop_assert_eq!(value(&r, Objective::Length), brute_tour(&r, 1, 0).expect("connected"));
-        prop_assert_eq!(value(&r, Objective::TourTurns), brute_tour(&r, 0, 1).expect("connected"));
-        prop_assert_eq!(value(&r, Objective::Weighted { turn_cost: 2 }), brute_tour(&r, 1, 2).expect("connected"));
+        prop_assert_eq!(value(&r, Objective::Turns), brute_tour(&r, 0, 1).expect("connected"));
+        prop_assert_eq!(value(&r, Objective::Weighted(2)), brute_tour(&r, 1, 2).expect("connected"));
     }
 
     #[test]
@@ -398,12 +389,9 @@ fn small_region() -> impl Strategy<Value = Region> {
 /// The exact objective an approximation's output is compared with.
 fn exact_objective(o: AlgoObjective) -> Objective {
     match o {
-        AlgoObjective::Length => Objective::Length,
-        AlgoObjective::CcTurns => Objective::CcTurns,
-        AlgoObjective::Turns => Objective::TourTurns,
+        // One objective type: a milling objective is its own exact objective.
         AlgoObjective::LawnLength => Objective::LawnTsp,
-        AlgoObjective::Weighted(c) => Objective::Weighted { turn_cost: c },
-        AlgoObjective::WeightedCc(c) => Objective::WeightedCc { turn_cost: c },
+        other => other,
     }
 }
 
@@ -413,7 +401,7 @@ proptest! {
     #[test]
     fn optimum_lies_between_bounds_and_every_valid_tour(r in small_region()) {
         let mut opt = HashMap::new();
-        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::LawnTsp] {
+        for o in [Objective::Length, Objective::CcTurns, Objective::Turns, Objective::LawnTsp] {
             let v = value(&r, o);
             let cheap = mowmill::exact::cheap_lower_bound(&r, o).value;
             prop_assert!(cheap <= v, "{o}: cheap bound {cheap} > optimum {v}");
@@ -422,9 +410,9 @@ proptest! {
             }
             opt.insert(o, v);
         }
-        prop_assert!(opt[&Objective::CcTurns] <= opt[&Objective::TourTurns]);
+        prop_assert!(opt[&Objective::CcTurns] <= opt[&Objective::Turns]);
         prop_assert!(opt[&Objective::LawnTsp] <= opt[&Objective::Length]);
-        prop_assert_eq!(value(&r, Objective::Weighted { turn_cost: 0 }), opt[&Objective::Length]);
+        prop_assert_eq!(value(&r, Objective::Weighted(0)), opt[&Objective::Length]);
         // Every approximation that applies gives a valid cover no better than the optimum.
         for alg in algorithms::REGISTRY {
             if (alg.precondition)(&r).is_err() {
@@ -456,8 +444,8 @@ proptest! {
     /// one-pixel walks, with 4k ≤ turns, so the value is at least N − ⌊cc/4⌋ + C · cc.
     #[test]
     fn weighted_cycle_cover_lies_between_independent_bounds(r in small_region(), c in 0u32..60) {
-        let wcc = value(&r, Objective::WeightedCc { turn_cost: c });
-        let tour = value(&r, Objective::Weighted { turn_cost: c });
+        let wcc = value(&r, Objective::WeightedCc(c));
+        let tour = value(&r, Objective::Weighted(c));
         let cc = solved(&r, Objective::CcTurns);
         let (cc_opt, cc_len) = (cc.value.unwrap(), cc.length.unwrap());
         let c64 = u64::from(c);
@@ -468,14 +456,14 @@ proptest! {
             let n = r.len() as u64;
             prop_assert!(wcc + cc_opt / 4 >= n + c64 * cc_opt, "weighted-cc {wcc}, N {n}, cc {cc_opt}");
         }
-        let cheap = mowmill::exact::cheap_lower_bound(&r, Objective::WeightedCc { turn_cost: c }).value;
+        let cheap = mowmill::exact::cheap_lower_bound(&r, Objective::WeightedCc(c)).value;
         prop_assert!(cheap <= wcc);
     }
 
     #[test]
     fn symmetries_keep_the_optimum(r in small_region(), s in 1u8..8) {
         let t = r.transformed(Symmetry(s));
-        for o in [Objective::Length, Objective::CcTurns, Objective::TourTurns, Objective::Weighted { turn_cost: 1 }, Objective::WeightedCc { turn_cost: 3 }] {
+        for o in [Objective::Length, Objective::CcTurns, Objective::Turns, Objective::Weighted(1), Objective::WeightedCc(3)] {
             prop_assert_eq!(value(&r, o), value(&t, o), "{}", o);
         }
     }

@@ -77,7 +77,7 @@ fn decide_all(name: &str, region: &Region, merge: Merge, label: &str) -> (u64, f
             .iter()
             .filter(|g| g.objective == out.objective)
         {
-            if g.against == Against::Opt {
+            if g.bound.against == Against::Opt {
                 continue;
             }
             assert_eq!(
@@ -116,9 +116,9 @@ fn both_algorithms_register_coverage_and_length_bounds() {
             ] {
                 assert!(
                     algo.guarantees.iter().any(|g| g.objective == objective
-                        && g.quantity == quantity
-                        && g.against == against
-                        && (g.num, g.den, g.add) == (4, 1, 0)),
+                        && g.bound.quantity == quantity
+                        && g.bound.against == against
+                        && (g.bound.num, g.bound.den, g.bound.add) == (4, 1, 0)),
                     "{name}: no {quantity:?} <= 4 {against:?} for {objective}"
                 );
             }

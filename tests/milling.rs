@@ -492,7 +492,7 @@ mod against_exact {
             max_coverage: 0,
         };
         for g in algo.guarantees.iter().filter(|g| g.when.applies(r)) {
-            if g.quantity == mowmill::algorithms::Quantity::MaxCoverage {
+            if g.bound.quantity == mowmill::algorithms::Quantity::MaxCoverage {
                 continue;
             }
             assert_eq!(

@@ -209,7 +209,7 @@ fn against_exact_optima_on_small_regions() {
         let what = format!("random-simple n {n} seed {}", 200 + seed);
         let (cc, tour) = run(&polygon, &what, &mut stats).unwrap();
         let opt_cc = exact::solve(&region, exact::Objective::CcTurns, &opts);
-        let opt_tour = exact::solve(&region, exact::Objective::TourTurns, &opts);
+        let opt_tour = exact::solve(&region, exact::Objective::Turns, &opts);
         // Every instance is decided: none skipped (n <= 24 solves in well under the limit).
         assert!(
             opt_cc.status == Status::Optimal && opt_tour.status == Status::Optimal,

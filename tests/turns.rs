@@ -291,7 +291,7 @@ fn exact_optima(region: &Region) -> Option<(u64, u64)> {
         ..mowmill::warm_start::exact_options()
     };
     let cc = exact::solve(region, exact::Objective::CcTurns, &opts);
-    let tour = exact::solve(region, exact::Objective::TourTurns, &opts);
+    let tour = exact::solve(region, exact::Objective::Turns, &opts);
     (cc.status == Status::Optimal && tour.status == Status::Optimal)
         .then(|| (cc.value.unwrap(), tour.value.unwrap()))
 }
@@ -323,9 +323,9 @@ fn check_against_opt(
         for g in algo
             .guarantees
             .iter()
-            .filter(|g| g.quantity == Quantity::Value)
+            .filter(|g| g.bound.quantity == Quantity::Value)
         {
-            assert_eq!(g.against, Against::Opt);
+            assert_eq!(g.bound.against, Against::Opt);
             let (value, opt) = match g.objective {
                 Objective::CcTurns => (r.cc.turns, opt_cc),
                 Objective::Turns => (r.tour.as_ref().unwrap().turns, opt_tour),

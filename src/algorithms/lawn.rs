@@ -652,18 +652,13 @@ const fn rectilinear(
     theorem: &'static super::theorems::Theorem,
     source: &'static str,
 ) -> Guarantee {
-    Guarantee {
-        objective: Objective::LawnLength,
-        quantity: crate::algorithms::Quantity::Value,
-        num,
-        den,
-        add,
-        against: Against::Opt,
-        when: super::When::Always,
-        scale: super::Scale::One,
-        source,
+    Guarantee::new(
+        Objective::LawnLength,
+        super::theorems::Bound::new(super::Quantity::Value, num, den, add, Against::Opt),
+        super::When::Always,
         theorem,
-    }
+        source,
+    )
 }
 
 /// The registry entry of `lawn-mst`: a doubled minimum spanning tree of the cell centres,

@@ -21,7 +21,6 @@
 //! ratio for any of them under these objectives, and none is claimed: their rows carry no
 //! guarantee.
 
-use crate::checker::Mode;
 use crate::discrete::format::DiscreteCover;
 use crate::discrete::{Discrete, Params};
 use crate::error::Result;
@@ -31,7 +30,9 @@ use num_integer::Integer;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::fmt;
-use theorems::{Claim, Paper, Theorem};
+use theorems::{Bound, Claim, Paper, Theorem};
+
+pub use crate::objective::{Objective, canonical_objective};
 
 // Shared pieces (no algorithm of their own): implementation detail.
 pub(crate) use mowmill_core::euler;
@@ -54,157 +55,6 @@ pub use matching::{self as endpoint_matching, turn_distance};
 #[doc(hidden)]
 pub use turns::{boundary_cc, coverage4, merge, strips_matching};
 pub(crate) use turns::{star_cover, strips_double, thin, thin_euler, visits};
-
-/// What a result is measured by. It serializes as its [`Display`](fmt::Display) text
-/// (`turns`, `weighted-c50`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Objective {
-    /// Length of a milling tour (one closed walk inside the region).
-    Length,
-    /// Total turns of a milling cycle cover.
-    CcTurns,
-    /// Turns of a milling tour.
-    Turns,
-    /// Length of a lawn-mowing tour (may leave the region), in the motion's metric.
-    LawnLength,
-    /// Length + C · turns of a milling tour, C the turn cost.
-    Weighted(u32),
-    /// Length + C · turns of a milling cycle cover.
-    WeightedCc(u32),
-}
-
-impl Objective {
-    pub const ALL: [Objective; 4] = [
-        Objective::Length,
-        Objective::CcTurns,
-        Objective::Turns,
-        Objective::LawnLength,
-    ];
-
-    /// Every objective name the CLI accepts (`weighted` and `weighted-cc` need a turn cost).
-    pub const NAMES: [&'static str; 6] = [
-        "length",
-        "cc-turns",
-        "turns",
-        "lawn-length",
-        "weighted",
-        "weighted-cc",
-    ];
-
-    /// The name without the turn cost.
-    pub fn name(self) -> &'static str {
-        match self {
-            Objective::Length => "length",
-            Objective::CcTurns => "cc-turns",
-            Objective::Turns => "turns",
-            Objective::LawnLength => "lawn-length",
-            Objective::Weighted(_) => "weighted",
-            Objective::WeightedCc(_) => "weighted-cc",
-        }
-    }
-
-    /// The objective named `name` (or an alias); `turn_cost` is required by, and only
-    /// accepted with, `weighted` and `weighted-cc`.
-    pub fn parse(name: &str, turn_cost: Option<u32>) -> std::result::Result<Objective, String> {
-        match (canonical_objective(name), turn_cost) {
-            ("weighted", Some(c)) => Ok(Objective::Weighted(c)),
-            ("weighted-cc", Some(c)) => Ok(Objective::WeightedCc(c)),
-            (w @ ("weighted" | "weighted-cc"), None) => {
-                Err(format!("objective {w} needs --turn-cost C"))
-            }
-            (_, Some(_)) => Err(format!(
-                "--turn-cost applies to objectives weighted and weighted-cc, not {name}"
-            )),
-            (_, None) => name.parse(),
-        }
-    }
-
-    /// The turn cost C of the weighted objectives.
-    pub fn turn_cost(self) -> Option<u32> {
-        match self {
-            Objective::Weighted(c) | Objective::WeightedCc(c) => Some(c),
-            _ => None,
-        }
-    }
-
-    /// The outputs a weighted objective is measured on, in order of preference (a tour is a
-    /// cycle cover); empty for the others, which are outputs of their own.
-    pub fn carriers(self) -> &'static [Objective] {
-        match self {
-            Objective::Weighted(_) => &[Objective::Turns, Objective::Length],
-            Objective::WeightedCc(_) => &[Objective::CcTurns, Objective::Turns, Objective::Length],
-            _ => &[],
-        }
-    }
-
-    /// The checker mode the outputs of this objective are validated in.
-    pub fn mode(self) -> Mode {
-        match self {
-            Objective::LawnLength => Mode::Lawn,
-            _ => Mode::Milling,
-        }
-    }
-
-    /// Whether outputs must be a single closed walk.
-    pub fn is_tour(self) -> bool {
-        !matches!(self, Objective::CcTurns | Objective::WeightedCc(_))
-    }
-}
-
-impl Serialize for Objective {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        s.collect_str(self)
-    }
-}
-
-impl std::str::FromStr for Objective {
-    type Err = String;
-
-    /// Parses an objective name or one of its [aliases](canonical_objective); the weighted
-    /// ones as the results write them, with their turn cost: `weighted-c50`, `weighted-cc-c50`.
-    fn from_str(s: &str) -> std::result::Result<Objective, String> {
-        let name = canonical_objective(s);
-        if let Some((w, c)) = name.rsplit_once("-c")
-            && let Ok(c) = c.parse::<u32>()
-            && matches!(w, "weighted" | "weighted-cc")
-        {
-            return Objective::parse(w, Some(c));
-        }
-        if matches!(name, "weighted" | "weighted-cc") {
-            return Objective::parse(name, None);
-        }
-        Objective::ALL
-            .into_iter()
-            .find(|o| o.name() == name)
-            .ok_or_else(|| {
-                format!(
-                    "unknown objective {s:?}: expected one of {}",
-                    Objective::ALL.map(|o| o.name()).join(", ")
-                )
-            })
-    }
-}
-
-/// The one spelling of an objective name in the CLI, JSON, CSV and configs. Old spellings
-/// stay accepted: `tour-turns` (the exact solver's name for `turns` before the names were
-/// unified). Other names come back unchanged.
-pub fn canonical_objective(name: &str) -> &str {
-    match name {
-        "tour-turns" => "turns",
-        other => other,
-    }
-}
-
-/// The name, with the turn cost for the weighted objectives (`weighted-c50`, as the exact
-/// rows of a bench name theirs).
-impl fmt::Display for Objective {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.turn_cost() {
-            Some(c) => write!(f, "{}-c{c}", self.name()),
-            None => f.write_str(self.name()),
-        }
-    }
-}
 
 /// What a guarantee's factor multiplies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -442,21 +292,19 @@ impl Scale {
     }
 }
 
-/// A proven upper bound `q ≤ (num · X + add) / den` on the quantity `q` of an output of
-/// `objective`, X being OPT (of that objective), N or 1, on the instances `when` names.
-/// Quantities other than the value are bounded against N or 1 only (no optimum of theirs is
-/// computed per row). With a [`Scale`] other than one, `num` multiplies an instance parameter
-/// (Table 1's discrete rows): [`Guarantee::on`] puts the instance's value in before deciding.
+/// A proven upper bound ([`Bound`]: `q ≤ (num · X + add) / den` on the quantity `q`, X being
+/// OPT, N or 1) on the outputs of `objective`, on the instances `when` names, citing the
+/// theorem it comes from. Quantities other than the value are bounded against N or 1 only (no
+/// optimum of theirs is computed per row). With a [`Scale`] other than one, `num` multiplies
+/// an instance parameter (Table 1's discrete rows): [`Guarantee::on`] puts the instance's value
+/// in before deciding. It may be the theorem's own bound or a weaker one we prove (its
+/// `source` says which).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Guarantee {
     pub objective: Objective,
-    pub quantity: Quantity,
-    pub num: i64,
-    pub den: i64,
-    pub add: i64,
-    pub against: Against,
+    #[serde(flatten)]
+    pub bound: Bound,
     pub when: When,
-    pub scale: Scale,
     /// Where it is proven, e.g. "Theorem 5 of Lawn mowing and milling" (the text of the
     /// results' `guarantee` column; it may add the detail of our proof on pixels).
     pub source: &'static str,
@@ -470,6 +318,37 @@ fn cite<S: serde::Serializer>(t: &&'static Theorem, s: S) -> std::result::Result
 }
 
 impl Guarantee {
+    /// A guarantee of `bound` on the outputs of `objective`.
+    pub const fn new(
+        objective: Objective,
+        bound: Bound,
+        when: When,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
+        Guarantee {
+            objective,
+            bound,
+            when,
+            source,
+            theorem,
+        }
+    }
+
+    /// The theorem's own bound as a guarantee of `objective` on the instances `when` names (the
+    /// paper's bound, proven as stated: written once, in the theorem).
+    pub const fn of_theorem(
+        objective: Objective,
+        when: When,
+        theorem: &'static Theorem,
+        source: &'static str,
+    ) -> Self {
+        let theorems::Measure::Bound(bound) = theorem.measure else {
+            panic!("a guarantee of a theorem whose measure is not a bound")
+        };
+        Guarantee::new(objective, bound, when, theorem, source)
+    }
+
     /// `value ≤ num/den · OPT` on every instance the algorithm accepts.
     pub const fn vs_opt(
         objective: Objective,
@@ -478,18 +357,15 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        Guarantee {
-            objective,
+        let bound = Bound {
             quantity: Quantity::Value,
             num,
             den,
             add: 0,
             against: Against::Opt,
-            when: When::Always,
             scale: Scale::One,
-            source,
-            theorem,
-        }
+        };
+        Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 
     /// `q ≤ (num · P + plus) · X`, P a parameter of the instance and X OPT, N or 1, on the
@@ -506,18 +382,15 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        Guarantee {
-            objective,
+        let bound = Bound {
             quantity,
             num,
             den: 1,
             add: 0,
             against,
-            when,
             scale: Scale::Of { param, plus },
-            source,
-            theorem,
-        }
+        };
+        Guarantee::new(objective, bound, when, theorem, source)
     }
 
     /// Every pixel visited at most `max` times by the outputs of `objective`.
@@ -527,18 +400,15 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        Guarantee {
-            objective,
+        let bound = Bound {
             quantity: Quantity::MaxCoverage,
             num: max,
             den: 1,
             add: 0,
             against: Against::One,
-            when: When::Always,
             scale: Scale::One,
-            source,
-            theorem,
-        }
+        };
+        Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 
     /// The walks of `objective` have length at most `factor · N` (hence at most `factor` times
@@ -549,18 +419,15 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        Guarantee {
-            objective,
+        let bound = Bound {
             quantity: Quantity::Length,
             num: factor,
             den: 1,
             add: 0,
             against: Against::N,
-            when: When::Always,
             scale: Scale::One,
-            source,
-            theorem,
-        }
+        };
+        Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 
     /// The guarantee on one instance: its condition holds there and the instance's parameters
@@ -575,9 +442,12 @@ impl Guarantee {
         if !self.when.applies_to(model) {
             return None;
         }
-        match self.scale {
+        match self.bound.scale {
             Scale::One => Some(*self),
-            scale => self.with_params(scale, &params()),
+            _ => Some(Guarantee {
+                bound: self.bound.on(&params())?,
+                ..*self
+            }),
         }
     }
 
@@ -586,57 +456,38 @@ impl Guarantee {
         self.on(Model::Grid(region))
     }
 
-    fn with_params(&self, scale: Scale, p: &Params) -> Option<Guarantee> {
-        let (num, den, add) = scale.resolve(self.num, self.den, self.add, p)?;
-        Some(Guarantee {
-            num,
-            den,
-            add,
-            scale: Scale::One,
-            ..*self
-        })
-    }
-
     /// The factor as a float, for tables and plots (of the unresolved guarantee: its `num`).
     pub fn factor(&self) -> f64 {
-        self.num as f64 / self.den as f64
+        self.bound.num as f64 / self.bound.den as f64
     }
 
     /// Whether `value ≤ (num · x + add) / den`, in exact integer arithmetic.
     pub fn holds(&self, value: u64, x: u64) -> bool {
-        i128::from(self.den) * i128::from(value)
-            <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+        self.bound.holds(value, x)
     }
 
-    /// The verdict on one checked output: `Some(true)` when shown to hold, `Some(false)` when
-    /// violated, `None` when undecided (a bound against OPT, OPT unknown, and the lower bound
-    /// `lb` on OPT too weak to show it: value ≤ f·LB ≤ f·OPT).
-    /// A guarantee whose factor is still an instance parameter is undecided: resolve it with
-    /// [`Guarantee::on`] first.
+    /// The verdict on one checked output ([`Bound::decide`] with what the evaluation knows):
+    /// `Some(true)` when shown to hold, `Some(false)` when violated, `None` when undecided (a
+    /// bound against OPT, OPT unknown, and the lower bound `lb` on OPT too weak to show it:
+    /// value ≤ f·LB ≤ f·OPT). A guarantee whose factor is still an instance parameter is
+    /// undecided: resolve it with [`Guarantee::on`] first.
     pub fn decide(&self, m: &Measured, n: u64, opt: Option<u64>, lb: Option<u64>) -> Option<bool> {
-        if self.scale != Scale::One {
-            return None;
-        }
-        let q = match self.quantity {
+        let q = match self.bound.quantity {
             Quantity::Value => m.value,
             Quantity::Length => m.length,
             Quantity::MaxCoverage => m.max_coverage,
         };
-        match self.against {
-            Against::N => Some(self.holds(q, n)),
-            Against::One => Some(self.holds(q, 1)),
-            Against::Opt => match (opt, lb) {
-                (Some(o), _) => Some(self.holds(q, o)),
-                (None, Some(b)) if self.holds(q, b) => Some(true),
-                _ => None,
-            },
-        }
+        let known = theorems::Known {
+            opt,
+            lower: lb,
+            upper: None,
+        };
+        self.bound.decide(q, n, known).verdict()
     }
 
     /// The bound's value for a given X, rounded down (values are integers).
     pub fn bound(&self, x: u64) -> i64 {
-        ((i128::from(self.num) * i128::from(x) + i128::from(self.add))
-            .div_euclid(i128::from(self.den))) as i64
+        self.bound.value_at(x)
     }
 }
 
@@ -651,17 +502,18 @@ pub struct Measured {
 
 impl fmt::Display for Guarantee {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let x = match self.against {
+        let b = &self.bound;
+        let x = match b.against {
             Against::Opt => "OPT",
             Against::N => "N",
             Against::One => "1",
         };
-        let num = match self.scale.text(self.num) {
+        let num = match b.scale.text(b.num) {
             Some(t) => format!("{t} "),
-            None if self.num == 1 => String::new(),
-            None => format!("{} ", self.num),
+            None if b.num == 1 => String::new(),
+            None => format!("{} ", b.num),
         };
-        let add = match self.add {
+        let add = match b.add {
             0 => String::new(),
             a if a > 0 => format!(" + {a}"),
             a => format!(" - {}", -a),
@@ -675,17 +527,17 @@ impl fmt::Display for Guarantee {
             When::Simple => format!("simple polygons; {}", self.source),
         };
         let source = source.as_str();
-        let q = self.quantity.label(self.objective);
-        if let (Against::One, Some(t)) = (self.against, self.scale.text(self.num)) {
+        let q = b.quantity.label(self.objective);
+        if let (Against::One, Some(t)) = (b.against, b.scale.text(b.num)) {
             write!(f, "{q} <= {t} ({source})")
-        } else if self.against == Against::One && self.den == 1 {
-            write!(f, "{q} <= {} ({source})", self.num + self.add)
-        } else if self.den == 1 {
+        } else if b.against == Against::One && b.den == 1 {
+            write!(f, "{q} <= {} ({source})", b.num + b.add)
+        } else if b.den == 1 {
             write!(f, "{q} <= {num}{x}{add} ({source})")
         } else if add.is_empty() {
-            write!(f, "{q} <= {}/{} {x} ({source})", self.num, self.den)
+            write!(f, "{q} <= {}/{} {x} ({source})", b.num, b.den)
         } else {
-            write!(f, "{q} <= ({num}{x}{add})/{} ({source})", self.den)
+            write!(f, "{q} <= ({num}{x}{add})/{} ({source})", b.den)
         }
     }
 }
@@ -939,32 +791,86 @@ mod tests {
 
     #[test]
     fn guarantee_arithmetic_is_exact() {
-        let g = Guarantee {
-            objective: Objective::Length,
-            quantity: Quantity::Value,
-            num: 6,
-            den: 5,
-            add: -4,
-            against: Against::N,
-            when: When::Always,
-            scale: Scale::One,
-            source: "Theorem 5",
-            theorem: &theorems::MILLING_THM_5,
-        };
+        let g = Guarantee::new(
+            Objective::Length,
+            Bound::new(Quantity::Value, 6, 5, -4, Against::N),
+            When::Always,
+            &theorems::MILLING_THM_5,
+            "Theorem 5",
+        );
         // N = 9: (54 - 4) / 5 = 10.
         assert!(g.holds(10, 9));
         assert!(!g.holds(11, 9));
         assert_eq!(g.bound(9), 10);
         assert_eq!(g.to_string(), "length <= (6 N - 4)/5 (Theorem 5)");
         let h = Guarantee {
-            num: 5,
-            den: 2,
-            add: 0,
-            against: Against::Opt,
+            bound: Bound::new(Quantity::Value, 5, 2, 0, Against::Opt),
             ..g
         };
         assert!(h.holds(25, 10) && !h.holds(26, 10));
         assert_eq!(h.to_string(), "length <= 5/2 OPT (Theorem 5)");
+    }
+
+    #[test]
+    fn one_decision_from_what_is_known_of_opt() {
+        use theorems::{Decision, Known};
+        // value <= 3/2 OPT.
+        let b = Bound::new(Quantity::Value, 3, 2, 0, Against::Opt);
+        let known = |opt, lower, upper| Known { opt, lower, upper };
+        // The optimum decides, whatever else is known.
+        assert_eq!(
+            b.decide(15, 0, known(Some(10), None, None)),
+            Decision::Holds { x: Some(10) }
+        );
+        assert_eq!(
+            b.decide(16, 0, known(Some(10), Some(11), Some(9))),
+            Decision::Violated { x: 10, exact: true }
+        );
+        // A walk of value 9 proves OPT <= 9: 14 > 27/2 is a violation.
+        assert_eq!(
+            b.decide(14, 0, known(None, Some(6), Some(9))),
+            Decision::Violated { x: 9, exact: false }
+        );
+        // A lower bound 6 proves 9 <= 3/2 · 6 <= 3/2 OPT; 10 is undecided.
+        assert_eq!(
+            b.decide(9, 0, known(None, Some(6), Some(9))),
+            Decision::Holds { x: None }
+        );
+        assert_eq!(
+            b.decide(10, 0, known(None, Some(6), Some(9))),
+            Decision::Undecided
+        );
+        // Against N, N decides; an unresolved parameter factor decides nothing.
+        let n = Bound::new(Quantity::Value, 6, 5, -4, Against::N);
+        assert_eq!(
+            n.decide(10, 9, Known::default()),
+            Decision::Holds { x: Some(9) }
+        );
+        assert_eq!(
+            n.decide(11, 9, Known::default()),
+            Decision::Violated { x: 9, exact: true }
+        );
+        let g = Guarantee::scaled(
+            Objective::Turns,
+            Quantity::Value,
+            Against::Opt,
+            1,
+            Param::Mu,
+            0,
+            When::Always,
+            &theorems::TURNS_COR_5_1,
+            "Corollary 5.1",
+        );
+        assert_eq!(
+            g.bound.decide(1, 9, known(Some(5), None, None)),
+            Decision::Undecided
+        );
+        // Lengths in units of 1/4: the constant and the factor against N scale, against OPT not.
+        let u = n.in_units(4, true);
+        assert_eq!((u.num, u.den, u.add), (24, 5, -16));
+        let o = b.in_units(4, true);
+        assert_eq!((o.num, o.den, o.add), (3, 2, 0));
+        assert_eq!(b.in_units(4, false), b);
     }
 
     #[test]
@@ -995,7 +901,10 @@ mod tests {
         assert_eq!(g.decide(&m, 9, Some(1), None), None);
         // rho + 2 delta + 2 = 2 + 48/9 + 2 = 84/9 = 28/3.
         let on = g.on_region(&r).unwrap();
-        assert_eq!((on.num, on.den, on.add, on.scale), (28, 3, 0, Scale::One));
+        assert_eq!(
+            (on.bound.num, on.bound.den, on.bound.add, on.bound.scale),
+            (28, 3, 0, Scale::One)
+        );
         assert!(on.holds(28, 3) && !on.holds(29, 3));
         assert_eq!(on.to_string(), "turns <= 28/3 OPT (Corollary 5.1)");
         // 5d + 2 on a grid (d = 2) is 12; a discrete instance without d is not a lattice.
@@ -1010,7 +919,7 @@ mod tests {
             &theorems::TURNS_THM_5_2_TOUR,
             "Theorem 5.2",
         );
-        assert_eq!(t.on_region(&r).unwrap().num, 12);
+        assert_eq!(t.on_region(&r).unwrap().bound.num, 12);
         let path = Discrete::new(3, &[(0, 1), (1, 2)], &[(1, 0, 2)], None).unwrap();
         assert!(t.on(Model::Discrete(&path)).is_none());
         // Coverage <= mu against the constant 1.

@@ -65,11 +65,29 @@ pub struct Bound {
 }
 
 impl Bound {
+    /// `q ≤ (num · X + add) / den` with a constant factor.
+    pub const fn new(quantity: Quantity, num: i64, den: i64, add: i64, against: Against) -> Bound {
+        Bound {
+            quantity,
+            num,
+            den,
+            add,
+            against,
+            scale: Scale::One,
+        }
+    }
+
     /// Whether `q ≤ (num · x + add) / den`, in exact integer arithmetic (of a bound whose
     /// factor is a constant: see [`Bound::on`]).
     pub fn holds(&self, q: u64, x: u64) -> bool {
         i128::from(self.den) * i128::from(q)
             <= i128::from(self.num) * i128::from(x) + i128::from(self.add)
+    }
+
+    /// The bound's value for a given X, rounded down (values are integers).
+    pub fn value_at(&self, x: u64) -> i64 {
+        ((i128::from(self.num) * i128::from(x) + i128::from(self.add))
+            .div_euclid(i128::from(self.den))) as i64
     }
 
     /// The bound on an instance with parameters `p` (a constant factor); `None` when the
@@ -84,17 +102,96 @@ impl Bound {
             ..*self
         })
     }
+
+    /// The bound in the units of an output whose lengths are in units of 1/`unit` (orthogonal
+    /// polygons with arbitrary coordinates; 1 on pixels and graphs): a bound on a length (the
+    /// [`Quantity::Length`], or the value of a `length` output) scales its constant, and its
+    /// factor when it is against N (N counts unit squares); a factor against OPT does not (OPT
+    /// is in the same units).
+    pub fn in_units(self, unit: u64, value_is_length: bool) -> Bound {
+        let on_length = self.quantity == Quantity::Length
+            || (self.quantity == Quantity::Value && value_is_length);
+        if !on_length || unit == 1 {
+            return self;
+        }
+        let unit = i64::try_from(unit).unwrap_or(i64::MAX);
+        Bound {
+            add: self.add.saturating_mul(unit),
+            num: if self.against == Against::N {
+                self.num.saturating_mul(unit)
+            } else {
+                self.num
+            },
+            ..self
+        }
+    }
+
+    /// The one decision of a bound on one measured quantity `q`, used by the evaluation of every
+    /// output and by the claims table alike; they differ only in what they know of X.
+    ///
+    /// Against N or 1, X is `n` or 1: decided. Against OPT: decided by the proven optimum when
+    /// known; else violated when `q` exceeds the bound of a valid walk's value (OPT ≤ upper, so
+    /// q > f·upper ≥ f·OPT), held when it is within the bound of a proven lower bound
+    /// (q ≤ f·lower ≤ f·OPT), and undecided otherwise. A factor that is still an instance
+    /// parameter ([`Bound::on`] not applied) decides nothing.
+    pub fn decide(&self, q: u64, n: u64, known: Known) -> Decision {
+        if self.scale != Scale::One {
+            return Decision::Undecided;
+        }
+        let exact = match self.against {
+            Against::N => Some(n),
+            Against::One => Some(1),
+            Against::Opt => known.opt,
+        };
+        if let Some(x) = exact {
+            return if self.holds(q, x) {
+                Decision::Holds { x: Some(x) }
+            } else {
+                Decision::Violated { x, exact: true }
+            };
+        }
+        match (known.upper, known.lower) {
+            (Some(u), _) if !self.holds(q, u) => Decision::Violated { x: u, exact: false },
+            (_, Some(lb)) if self.holds(q, lb) => Decision::Holds { x: None },
+            _ => Decision::Undecided,
+        }
+    }
+}
+
+/// What is known of a bound's OPT on one instance ([`Bound::decide`]): the proven optimum, a
+/// proven lower bound, and the value of a valid walk (an upper bound).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Known {
+    pub opt: Option<u64>,
+    pub lower: Option<u64>,
+    pub upper: Option<u64>,
+}
+
+/// The decision of a bound on one quantity ([`Bound::decide`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Decision {
+    /// Shown to hold: against X = `x` when X is known exactly (N, 1, the proven optimum), or
+    /// `x = None` through a lower bound on OPT.
+    Holds { x: Option<u64> },
+    /// Violated against `x`: X itself (`exact`), or an upper bound on OPT (a valid walk).
+    Violated { x: u64, exact: bool },
+    /// Neither shown.
+    Undecided,
+}
+
+impl Decision {
+    /// `Some(true)` when shown to hold, `Some(false)` when violated, `None` when undecided.
+    pub fn verdict(self) -> Option<bool> {
+        match self {
+            Decision::Holds { .. } => Some(true),
+            Decision::Violated { .. } => Some(false),
+            Decision::Undecided => None,
+        }
+    }
 }
 
 const fn bound(quantity: Quantity, num: i64, den: i64, add: i64, against: Against) -> Bound {
-    Bound {
-        quantity,
-        num,
-        den,
-        add,
-        against,
-        scale: Scale::One,
-    }
+    Bound::new(quantity, num, den, add, against)
 }
 
 /// `q ≤ (num · P + plus) · X`, P an instance parameter.

@@ -2,6 +2,7 @@
 //! family's value of a claim.
 
 use super::*;
+use crate::algorithms::theorems::{Decision, Known};
 
 pub(super) fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Measured<'a> {
     let theorem = claim.theorem;
@@ -97,48 +98,36 @@ pub(super) fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Meas
                     Quantity::MaxCoverage => r.max_coverage,
                 };
                 let Some(q) = q else { continue };
-                // Lengths of orthogonal polygons are in units of 1/unit: so is the bound's
-                // constant (and N).
-                let on_length = b.quantity == Quantity::Length
-                    || (b.quantity == Quantity::Value && r.objective == Objective::Length.name());
-                let unit = r.unit.filter(|_| on_length).unwrap_or(1) as i64;
-                let b = Bound {
-                    add: b.add.saturating_mul(unit),
-                    num: if b.against == Against::N {
-                        b.num.saturating_mul(unit)
-                    } else {
-                        b.num
-                    },
-                    ..b
-                };
+                // Lengths of orthogonal polygons are in units of 1/unit: so is the bound.
+                let b = b.in_units(r.unit.unwrap_or(1), r.objective == Objective::Length.name());
                 let ortho = r.model == "ortho";
                 // The cost the bound's OPT is of: the row's objective, or length.
                 let cost = match b.quantity {
                     Quantity::Length => Some(Cost::TourLength),
                     _ => Cost::of_objective(&r.objective),
                 };
-                // (OPT if proven, a proven lower bound, a valid upper bound: the best checked
-                // walk). Against N or 1 the bound's x is known exactly.
-                let (x, lower, upper) = match (b.against, b.quantity) {
-                    (Against::N, _) => (Some(r.n), None, None),
-                    (Against::One, _) => (Some(1), None, None),
+                // What is known of OPT: proven, a proven lower bound, a valid upper bound (the
+                // best checked walk). Against N or 1 the bound's X is known exactly.
+                let known = match (b.against, b.quantity) {
+                    (Against::N | Against::One, _) => Known::default(),
                     // No exact optimum of length, and N is no bound in the units of an ortho row.
-                    (Against::Opt, Quantity::Length) if ortho => (None, None, None),
-                    (Against::Opt, Quantity::Length) => (
-                        exact_opt
+                    (Against::Opt, Quantity::Length) if ortho => Known::default(),
+                    (Against::Opt, Quantity::Length) => Known {
+                        opt: exact_opt
                             .get(&(r.instance.as_str(), Objective::Length.name()))
                             .copied(),
-                        Some(r.n),
-                        ev.best(r, Cost::TourLength).map(|w| w.value),
-                    ),
-                    (Against::Opt, _) => (
-                        r.opt,
-                        r.lower_bound.max(cost.and_then(|c| ev.lower(r, c))),
-                        cost.and_then(|c| ev.best(r, c)).map(|w| w.value),
-                    ),
+                        lower: Some(r.n),
+                        upper: ev.best(r, Cost::TourLength).map(|w| w.value),
+                    },
+                    (Against::Opt, _) => Known {
+                        opt: r.opt,
+                        lower: r.lower_bound.max(cost.and_then(|c| ev.lower(r, c))),
+                        upper: cost.and_then(|c| ev.best(r, c)).map(|w| w.value),
+                    },
                 };
-                match (x, lower, upper) {
-                    (Some(x), _, _) => {
+                let decision = b.decide(q, r.n, known);
+                match decision {
+                    Decision::Holds { x: Some(x) } | Decision::Violated { x, exact: true } => {
                         m.decide(r);
                         // Against OPT the ratio to OPT; against N or 1 the fraction of the bound.
                         let scale = match b.against {
@@ -149,7 +138,7 @@ pub(super) fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Meas
                         if scale > 0.0 {
                             m.bump(ratio);
                         }
-                        if !b.holds(q, x) {
+                        if let Decision::Violated { .. } = decision {
                             // Against N: the statement itself fails when even the proven lower
                             // bound on every tour's length exceeds the bound.
                             let statement = b.against == Against::N
@@ -183,39 +172,39 @@ pub(super) fn measure<'a>(claim: &Claim, rows: &'a [Row], ev: &Evidence) -> Meas
                             }
                         }
                     }
-                    (None, lower, upper) => {
-                        if let Some(lb) = lower.filter(|&lb| lb > 0) {
+                    _ => {
+                        if let Some(lb) = known.lower.filter(|&lb| lb > 0) {
                             let x = q as f64 / lb as f64;
                             m.max_ratio_lb = Some(m.max_ratio_lb.map_or(x, |y: f64| y.max(x)));
                         }
-                        if let Some(u) = upper.filter(|&u| u > 0) {
+                        if let Some(u) = known.upper.filter(|&u| u > 0) {
                             m.bump_best(q as f64 / u as f64, r.instance.as_str());
                         }
-                        if let Some(u) = upper
-                            && !b.holds(q, u)
-                        {
-                            // OPT ≤ u, so q > f · u ≥ f · OPT: a proven violation.
-                            m.decide(r);
-                            let best = cost.and_then(|c| ev.best(r, c));
-                            let from = best.map_or(String::new(), |w| {
-                                format!(" {} {}", w.algorithm, w.objective)
-                            });
-                            let detail = format!(
-                                "value {q} > {} ({} with OPT <= {u}, the best checked walk{from}; no proven optimum)",
-                                bound_text(&b, u),
-                                theorem.factor
-                            );
-                            m.violate(
-                                r,
-                                Attribution::of(implementation),
-                                detail,
-                                q as f64 / u.max(1) as f64,
-                            );
-                            if let Some(v) = m.violations.last_mut() {
-                                v.bound = Some((b, u));
+                        match decision {
+                            Decision::Violated { x: u, .. } => {
+                                // OPT ≤ u, so q > f · u ≥ f · OPT: a proven violation.
+                                m.decide(r);
+                                let best = cost.and_then(|c| ev.best(r, c));
+                                let from = best.map_or(String::new(), |w| {
+                                    format!(" {} {}", w.algorithm, w.objective)
+                                });
+                                let detail = format!(
+                                    "value {q} > {} ({} with OPT <= {u}, the best checked walk{from}; no proven optimum)",
+                                    bound_text(&b, u),
+                                    theorem.factor
+                                );
+                                m.violate(
+                                    r,
+                                    Attribution::of(implementation),
+                                    detail,
+                                    q as f64 / u.max(1) as f64,
+                                );
+                                if let Some(v) = m.violations.last_mut() {
+                                    v.bound = Some((b, u));
+                                }
                             }
-                        } else if lower.is_some_and(|lb| b.holds(q, lb)) {
-                            m.decide(r);
+                            Decision::Holds { .. } => m.decide(r),
+                            Decision::Undecided => {}
                         }
                     }
                 }

@@ -195,8 +195,26 @@ mod hunt_column {
 mod evidence_rules {
     use super::*;
 
+    /// A row as the harness writes it: the theorems its algorithm claims for its objective
+    /// (every condition taken to hold on the instance).
     fn row(instance: &str, algorithm: &str, objective: &str) -> Row {
+        let theorems = crate::algorithms::find(base_name(algorithm))
+            .map(|a| {
+                let mut keys: Vec<String> = Vec::new();
+                for c in a
+                    .claims
+                    .iter()
+                    .filter(|c| c.objectives.iter().any(|o| o.name() == objective))
+                {
+                    if !keys.contains(&c.theorem.key()) {
+                        keys.push(c.theorem.key());
+                    }
+                }
+                keys.join("; ")
+            })
+            .unwrap_or_default();
         Row {
+            theorems,
             instance: instance.into(),
             family: "random-holed".into(),
             algorithm: algorithm.into(),

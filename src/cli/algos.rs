@@ -115,7 +115,7 @@ fn guarantee_cell(a: &Algorithm, g: &Guarantee) -> String {
             None => (head, ""),
         },
     };
-    let output = if g.quantity == Quantity::Value {
+    let output = if g.bound.quantity == Quantity::Value {
         String::new()
     } else {
         format!(" on `{}`", g.objective)

@@ -15,7 +15,7 @@ pub struct ExactArgs {
     pub file: PathBuf,
     /// The exact objective (`turns` also accepted as `tour-turns`; `weighted` needs
     /// --turn-cost).
-    #[arg(long, value_parser = super::one_of(exact::Objective::NAMES))]
+    #[arg(long, value_parser = super::one_of(exact::Objective::EXACT_NAMES))]
     pub objective: String,
     /// Weight C of turns for `weighted` (length + C * turns).
     #[arg(long)]

@@ -568,7 +568,7 @@ mod tests {
     #[test]
     fn bridge_defeats_theorem_4_2_whatever_the_merge() {
         let bridge = instance("bridge.dm");
-        let opt_tour = opt(&bridge, Objective::TourTurns);
+        let opt_tour = opt(&bridge, Objective::Turns);
         assert_eq!(opt_tour, 12);
         // The default cover: t = 8, c = 2, budget t + 2c − 2 = 10 < 12 ≤ every tour.
         let ev = order_evidence(

@@ -648,9 +648,17 @@ impl Config {
         let mut objectives = Vec::new();
         for (i, e) in self.exact.iter().enumerate() {
             let at = format!("exact[{i}]");
-            e.objective
-                .parse::<crate::exact::Objective>()
-                .map_err(|err| Problem::value(format!("{at}.objective"), err))?;
+            let names = crate::exact::Objective::EXACT_NAMES;
+            if !names.contains(&crate::algorithms::canonical_objective(&e.objective)) {
+                return Err(Problem::value(
+                    format!("{at}.objective"),
+                    format!(
+                        "unknown objective {:?}: expected one of {}",
+                        e.objective,
+                        names.join(", ")
+                    ),
+                ));
+            }
             let objective =
                 crate::exact::Objective::parse(&e.objective, e.turn_cost).map_err(|err| {
                     // At `turn_cost` when given, else at the table that lacks it.

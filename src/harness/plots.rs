@@ -54,7 +54,7 @@ impl Kind {
 
     /// The ratio to show for a group of rows of one algorithm and objective.
     fn choose(rows: &[&Row], guarantee: Option<&Guarantee>) -> Kind {
-        if guarantee.is_some_and(|g| g.against == Against::N) {
+        if guarantee.is_some_and(|g| g.bound.against == Against::N) {
             Kind::N
         } else if !rows.is_empty() && rows.iter().all(|r| r.ratio_opt.is_some()) {
             Kind::Opt
@@ -102,7 +102,7 @@ pub fn draw_all(out: &Path, rows: &[Row]) -> Result<()> {
         let guarantee = algorithms::find(algo).and_then(|a| {
             a.guarantees
                 .iter()
-                .find(|g| g.objective.name() == *objective && g.quantity == Quantity::Value)
+                .find(|g| g.objective.name() == *objective && g.bound.quantity == Quantity::Value)
         });
         let stem = dir.join(format!(
             "ratio-vs-n_{}_{}",
@@ -223,9 +223,11 @@ fn ratio_vs_n<DB: DrawingBackend>(
     let max_n = pts.iter().map(|p| p.1).fold(1.0, f64::max) * 1.05;
     let min_n = pts.iter().map(|p| p.1).fold(max_n, f64::min).min(max_n) * 0.95;
     let g_at = |n: f64| {
-        g.and_then(|g| match g.against {
+        g.and_then(|g| match g.bound.against {
             Against::Opt => Some(g.factor()),
-            Against::N => Some((g.num as f64 * n + g.add as f64) / (g.den as f64 * n)),
+            Against::N => {
+                Some((g.bound.num as f64 * n + g.bound.add as f64) / (g.bound.den as f64 * n))
+            }
             Against::One => None,
         })
     };

@@ -47,13 +47,7 @@ pub fn checked_value(
     if !report.valid || (objective.is_tour() && !cover.is_tour()) {
         return None;
     }
-    Some(match objective {
-        Objective::Length | Objective::LawnLength => report.length,
-        Objective::Turns | Objective::CcTurns => report.turns,
-        Objective::Weighted(c) | Objective::WeightedCc(c) => {
-            report.length + u64::from(c) * report.turns
-        }
-    })
+    Some(objective.value_of(&report))
 }
 
 /// Keeps `candidate` if it is strictly better than `best` (ties keep the earlier).

@@ -686,9 +686,9 @@ fn assess(
         out.ratio = Some(c.value as f64 / best as f64);
         // OPT ≤ best: a value above the bound at `best` is above it at OPT.
         for g in subject.applicable(opts.objective, &out.region, &opts.options) {
-            if g.against == algorithms::Against::Opt
-                && g.quantity == algorithms::Quantity::Value
-                && g.scale == algorithms::Scale::One
+            if g.bound.against == algorithms::Against::Opt
+                && g.bound.quantity == algorithms::Quantity::Value
+                && g.bound.scale == algorithms::Scale::One
                 && !g.holds(c.value, best)
                 && !violated
             {

@@ -65,7 +65,7 @@ use super::join::{Rank, add, distance, join, sub};
 use super::polygon::{Point, Polygon};
 use super::rational::Rational;
 use super::tour::Tour;
-use crate::algorithms::{self, Options};
+use crate::algorithms;
 use crate::error::{Error, Result};
 use crate::region::{Pixel, Region};
 use crate::topology;
@@ -213,10 +213,7 @@ pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
     let labels = topology::components(&region);
 
     // Step 2: a tour per component.
-    let (tsp65, milling25) = (
-        algorithms::find("tsp65").expect("tsp65 is registered"),
-        algorithms::find("milling25").expect("milling25 is registered"),
-    );
+    use algorithms::{milling25, tsp65};
     let (mut used65, mut used25) = (0, 0);
     let mut tours: Vec<Vec<Point>> = Vec::new();
     for k in 0..labels.count {
@@ -224,20 +221,19 @@ pub fn corollary4(polygon: &Polygon) -> Result<(Tour, Certificates)> {
             .filter(|&i| labels.label[i] as usize == k)
             .map(|i| region.pixel(i));
         let component = Region::from_pixels(pixels)?;
-        let algorithm = if (tsp65.precondition)(&component).is_ok() {
+        let (solution, name) = if tsp65::precondition(&component).is_ok() {
             used65 += 1;
-            tsp65
+            (tsp65::tsp65(&component)?, "tsp65")
         } else {
-            (milling25.precondition)(&component)?;
+            milling25::precondition(&component)?;
             used25 += 1;
-            milling25
+            (milling25::milling25(&component)?, "milling25")
         };
-        let solution = (algorithm.run)(&component, &Options::default())?;
         let output = solution
             .outputs
             .iter()
             .find(|o| o.objective == algorithms::Objective::Length && o.cover.is_tour())
-            .ok_or_else(|| Error::invalid(format!("{} returned no tour", algorithm.name)))?;
+            .ok_or_else(|| Error::invalid(format!("{name} returned no tour")))?;
         tours.extend(Tour::from_cover(&output.cover).cycles);
     }
 

@@ -196,7 +196,7 @@ pub fn walk_turns(walk: &[Point]) -> u64 {
 /// # Ok::<(), mowmill::Error>(())
 /// ```
 pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsContour> {
-    contour_construction(polygon, options, "strips-matching")
+    contour_construction(polygon, options, &algorithms::strips_matching::ALGORITHM)
 }
 
 /// Table 1's star-cover line for orthogonal polygons, our reading: the same construction as
@@ -207,22 +207,23 @@ pub fn strips_contour(polygon: &Polygon, options: &Options) -> Result<StripsCont
 /// # Errors
 /// As [`strips_contour`].
 pub fn star_contour(polygon: &Polygon, options: &Options) -> Result<StripsContour> {
-    contour_construction(polygon, options, "star-cover")
+    contour_construction(polygon, options, &algorithms::star_cover::ALGORITHM)
 }
 
-/// Steps 1–6 of the module docs with the registered grid algorithm `interior` (which outputs
-/// a cycle cover and a tour) on each component of R_N.
+/// Steps 1–6 of the module docs with the grid algorithm `interior` (which outputs a cycle cover
+/// and a tour; called directly, not looked up in the registry) on each component of R_N.
 fn contour_construction(
     polygon: &Polygon,
     options: &Options,
-    interior: &str,
+    interior: &algorithms::Algorithm,
 ) -> Result<StripsContour> {
     let erosion = feasibility(polygon).map_err(|e| Error::invalid(e.to_string()))?;
     let region = kept_interior_pixels(polygon, &erosion)?;
     let labels = topology::components(&region);
 
     // Step 2: the interior algorithm on each component.
-    let interior_algorithm = algorithms::find(interior).expect("registered");
+    let interior_algorithm = interior;
+    let interior = interior.name;
     let (mut strips, mut matching_turns, mut matching_optimal) = (0usize, 0u64, true);
     let mut rooks = 0usize;
     let mut components: Vec<Component> = Vec::new();

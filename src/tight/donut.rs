@@ -111,7 +111,7 @@ pub fn donut(side: usize, k: usize, opts: &TightOptions) -> Result<Member> {
     );
     let mut opt_tour_cover = spiral_cover.clone();
     let opt_tour = if k <= opts.donut_exact_k {
-        let (value, lb, cover) = exact_solve(&region, ExactObjective::TourTurns, opts.time_limit);
+        let (value, lb, cover) = exact_solve(&region, ExactObjective::Turns, opts.time_limit);
         match value {
             Some(v) => {
                 r.claim(

@@ -68,7 +68,7 @@ pub fn thin43(s: usize, opts: &TightOptions) -> Result<Member> {
         FIG6,
     );
     let (opt_tour, tour_lb, opt_cover) =
-        exact_solve(&region, ExactObjective::TourTurns, opts.time_limit);
+        exact_solve(&region, ExactObjective::Turns, opts.time_limit);
     r.claim(
         "opt_tour_turns",
         format!("12s + 32 = {opt_value}"),

@@ -44,7 +44,10 @@ impl Optima {
             Objective::CcTurns => (self.cc, self.lower[1]),
             Objective::Turns => (self.tour, self.lower[2]),
             // Lawn tours have no optimum here; weighted objectives are never outputs.
-            Objective::LawnLength | Objective::Weighted(_) | Objective::WeightedCc(_) => (None, 0),
+            Objective::LawnLength
+            | Objective::LawnTsp
+            | Objective::Weighted(_)
+            | Objective::WeightedCc(_) => (None, 0),
         }
     }
 }
@@ -104,7 +107,7 @@ pub fn optima(label: &str, region: &Region, opts: &ExactOptions, tally: &mut Tal
     let objectives = [
         ("length", exact::Objective::Length),
         ("cc-turns", exact::Objective::CcTurns),
-        ("tour-turns", exact::Objective::TourTurns),
+        ("tour-turns", exact::Objective::Turns),
     ];
     let mut values = [None; 3];
     let mut lower = [0; 3];
@@ -149,7 +152,10 @@ pub fn optima(label: &str, region: &Region, opts: &ExactOptions, tally: &mut Tal
 
 /// Whether `g` claims that the output is optimal.
 pub fn is_exact_claim(g: &Guarantee) -> bool {
-    g.against == Against::Opt && g.quantity == Quantity::Value && g.num == g.den && g.add == 0
+    g.bound.against == Against::Opt
+        && g.bound.quantity == Quantity::Value
+        && g.bound.num == g.bound.den
+        && g.bound.add == 0
 }
 
 /// Whether the algorithm is checked here (milling objectives only).
@@ -256,18 +262,18 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                 }
                 // A bound on another quantity than the value against OPT is against that
                 // quantity's optimum: the length optimum for `length`; none for coverage.
-                let (o, lb) = match (g.quantity, g.against) {
+                let (o, lb) = match (g.bound.quantity, g.bound.against) {
                     (Quantity::Length, Against::Opt) => opt.of(Objective::Length),
                     (Quantity::MaxCoverage, Against::Opt) => (None, 0),
                     _ => (o, lb),
                 };
                 let verdict = on.decide(&m, n, o, Some(lb));
-                let q = match g.quantity {
+                let q = match g.bound.quantity {
                     Quantity::Value => value,
                     Quantity::Length => rep.length,
                     Quantity::MaxCoverage => u64::from(rep.max_coverage),
                 };
-                let x = match g.against {
+                let x = match g.bound.against {
                     Against::Opt => o,
                     Against::N => Some(n),
                     Against::One => Some(1),
@@ -284,7 +290,7 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                         score.excess = score.excess.max(excess);
                     } else {
                         let bound = on.bound(x).max(1) as f64;
-                        if g.against == Against::Opt {
+                        if g.bound.against == Against::Opt {
                             s.worst = s.worst.max(q as f64 / x.max(1) as f64);
                             score.ratio = score.ratio.max(q as f64 / bound);
                         } else {
@@ -295,8 +301,8 @@ pub fn check_algorithms(label: &str, region: &Region, opt: &Optima, tally: &mut 
                 if verdict == Some(false) {
                     let what = format!(
                         "{} = {q} breaks `{g}` with {} = {}",
-                        g.quantity.label(g.objective),
-                        match g.against {
+                        g.bound.quantity.label(g.objective),
+                        match g.bound.against {
                             Against::Opt => "OPT",
                             Against::N => "N",
                             Against::One => "1",

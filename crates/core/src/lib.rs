@@ -18,6 +18,7 @@ pub mod gridfile;
 pub mod input;
 pub mod instance;
 pub mod lawn_check;
+pub mod objective;
 pub mod pixel_list;
 pub mod region;
 pub mod strip_cover;

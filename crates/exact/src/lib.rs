@@ -88,140 +88,17 @@ pub mod walks;
 pub(crate) use mowmill_core::{bounds, checker, euler, flow, region, strip_cover, topology, tour};
 
 use crate::bounds::LowerBound;
-use crate::checker::Mode;
 use crate::region::Region;
 use crate::tour::CycleCover;
 use driver::{CutModel, Solved, Stop};
 use lp::{Deadline, Settings};
 use serde::Serialize;
 use std::fmt;
-use std::str::FromStr;
 
-/// The objective of an exact solve.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Objective {
-    /// Minimum-length closed walk visiting every pixel (the optimal milling tour).
-    Length,
-    /// Minimum-turn cycle cover (closed walks together visiting every pixel).
-    CcTurns,
-    /// Minimum-turn covering tour (one closed walk).
-    TourTurns,
-    /// Tour minimizing length + `turn_cost` · turns.
-    Weighted { turn_cost: u32 },
-    /// Cycle cover minimizing length + `turn_cost` · turns.
-    WeightedCc { turn_cost: u32 },
-    /// Exact TSP through the grass pixel centres with L1 distances (may leave the region).
-    LawnTsp,
-}
-
-impl Objective {
-    /// All objective names, as the CLI spells them.
-    pub const NAMES: [&'static str; 6] = [
-        "length",
-        "cc-turns",
-        "turns",
-        "weighted",
-        "weighted-cc",
-        "lawn-tsp",
-    ];
-
-    /// The objective named `name`; `turn_cost` is required by, and only accepted with,
-    /// `weighted` and `weighted-cc`.
-    pub fn parse(name: &str, turn_cost: Option<u32>) -> Result<Objective, String> {
-        match (name.parse::<Objective>()?, turn_cost) {
-            (Objective::Weighted { .. }, Some(c)) => Ok(Objective::Weighted { turn_cost: c }),
-            (Objective::WeightedCc { .. }, Some(c)) => Ok(Objective::WeightedCc { turn_cost: c }),
-            (o @ (Objective::Weighted { .. } | Objective::WeightedCc { .. }), None) => {
-                Err(format!("objective {o} needs --turn-cost C"))
-            }
-            (o, None) => Ok(o),
-            (o, Some(_)) => Err(format!(
-                "--turn-cost applies to objectives weighted and weighted-cc, not {o}"
-            )),
-        }
-    }
-
-    /// The turn cost C of `weighted` and `weighted-cc`.
-    pub fn turn_cost(self) -> Option<u32> {
-        match self {
-            Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
-                Some(turn_cost)
-            }
-            _ => None,
-        }
-    }
-
-    /// Milling or lawn mode for the checker.
-    pub fn mode(self) -> Mode {
-        if self == Objective::LawnTsp {
-            Mode::Lawn
-        } else {
-            Mode::Milling
-        }
-    }
-
-    /// Whether the objective counts turns (the passage model).
-    pub(crate) fn counts_turns(self) -> bool {
-        matches!(
-            self,
-            Objective::CcTurns
-                | Objective::TourTurns
-                | Objective::Weighted { .. }
-                | Objective::WeightedCc { .. }
-        )
-    }
-
-    /// Whether the answer must be a single closed walk.
-    pub fn is_tour(self) -> bool {
-        !matches!(self, Objective::CcTurns | Objective::WeightedCc { .. })
-    }
-
-    /// The objective's value of a checked cover.
-    pub fn value_of<V>(self, report: &checker::Report<V>) -> u64 {
-        match self {
-            Objective::Length | Objective::LawnTsp => report.length,
-            Objective::CcTurns | Objective::TourTurns => report.turns,
-            Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
-                report.length + u64::from(turn_cost) * report.turns
-            }
-        }
-    }
-}
-
-impl fmt::Display for Objective {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Objective::Length => "length",
-            Objective::CcTurns => "cc-turns",
-            Objective::TourTurns => "turns",
-            Objective::Weighted { .. } => "weighted",
-            Objective::WeightedCc { .. } => "weighted-cc",
-            Objective::LawnTsp => "lawn-tsp",
-        })
-    }
-}
-
-impl FromStr for Objective {
-    type Err = String;
-
-    /// Parses a name; `weighted` and `weighted-cc` get turn cost 1 (use [`Objective::parse`]
-    /// to set it).
-    fn from_str(s: &str) -> Result<Objective, String> {
-        match s {
-            "length" => Ok(Objective::Length),
-            "cc-turns" => Ok(Objective::CcTurns),
-            // `tour-turns` is the spelling before the objective names were unified.
-            "turns" | "tour-turns" => Ok(Objective::TourTurns),
-            "weighted" => Ok(Objective::Weighted { turn_cost: 1 }),
-            "weighted-cc" => Ok(Objective::WeightedCc { turn_cost: 1 }),
-            "lawn-tsp" => Ok(Objective::LawnTsp),
-            _ => Err(format!(
-                "unknown objective {s:?}: expected one of {}",
-                Objective::NAMES.join(", ")
-            )),
-        }
-    }
-}
+/// The objective of an exact solve: the one objective type of the core (the exact solver
+/// takes `length`, `cc-turns`, `turns`, `weighted`, `weighted-cc` and `lawn-tsp`:
+/// [`Objective::EXACT_NAMES`]; a lawn tour's `lawn-length` is refused).
+pub use mowmill_core::objective::Objective;
 
 /// Options of an exact solve.
 #[derive(Clone, Debug)]
@@ -339,7 +216,7 @@ impl<W> ExactResult<W> {
     /// [`certify`].
     fn unchecked(objective: Objective, lower: (u64, &str), rounds: u32) -> Self {
         ExactResult {
-            objective: objective.to_string(),
+            objective: objective.name().to_string(),
             value: None,
             lower_bound: lower.0,
             status: Status::Error,
@@ -566,7 +443,19 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
         threads: opts.threads.max(1),
         verbose: opts.verbose,
     };
-    let answer = if region.is_empty() {
+    let answer = if objective == Objective::LawnLength {
+        Answer::stopped(
+            Stop::Error(
+                "the exact solver has no lawn-length objective (a lawn tour in its cutter's \
+                 metric); its lawn objective is lawn-tsp"
+                    .into(),
+            ),
+            LowerBound {
+                value: 0,
+                source: "none",
+            },
+        )
+    } else if region.is_empty() {
         Answer::stopped(
             Stop::Error("the region is empty".into()),
             LowerBound {
@@ -588,12 +477,13 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
         match objective {
             Objective::Length => solve_length(region, opts, &deadline, &settings),
             Objective::CcTurns
-            | Objective::TourTurns
-            | Objective::Weighted { .. }
-            | Objective::WeightedCc { .. } => {
+            | Objective::Turns
+            | Objective::Weighted(_)
+            | Objective::WeightedCc(_) => {
                 solve_turns(region, objective, opts, &deadline, &settings)
             }
             Objective::LawnTsp => solve_lawn(region, opts, &deadline, &settings),
+            Objective::LawnLength => unreachable!("refused above"),
         }
     };
     assemble(
@@ -736,9 +626,9 @@ fn solve_turns(
 fn turn_goal(objective: Objective) -> turns::TurnGoal {
     match objective {
         Objective::CcTurns => turns::TurnGoal::CycleCover,
-        Objective::TourTurns => turns::TurnGoal::Tour,
-        Objective::Weighted { turn_cost } => turns::TurnGoal::Weighted(turn_cost),
-        Objective::WeightedCc { turn_cost } => turns::TurnGoal::WeightedCycleCover(turn_cost),
+        Objective::Turns => turns::TurnGoal::Tour,
+        Objective::Weighted(turn_cost) => turns::TurnGoal::Weighted(turn_cost),
+        Objective::WeightedCc(turn_cost) => turns::TurnGoal::WeightedCycleCover(turn_cost),
         _ => unreachable!("turn objectives only"),
     }
 }
@@ -796,8 +686,8 @@ fn solve_lawn(
 pub fn cheap_lower_bound(region: &Region, objective: Objective) -> LowerBound {
     match objective {
         Objective::Length => bounds::length_lower_bound(region),
-        Objective::CcTurns | Objective::TourTurns => bounds::turn_lower_bound(region),
-        Objective::Weighted { turn_cost } => {
+        Objective::CcTurns | Objective::Turns => bounds::turn_lower_bound(region),
+        Objective::Weighted(turn_cost) => {
             // Both bounds hold for the same tour.
             let l = bounds::length_lower_bound(region).value;
             let t = bounds::turn_lower_bound(region).value;
@@ -806,12 +696,14 @@ pub fn cheap_lower_bound(region: &Region, objective: Objective) -> LowerBound {
                 "length bound + C * turn bound",
             )
         }
-        Objective::WeightedCc { turn_cost } => {
+        Objective::WeightedCc(turn_cost) => {
             // A one-pixel walk has length 0, so only the turns bound a cycle cover.
             let t = bounds::turn_lower_bound(region).value;
             LowerBound::new(u64::from(turn_cost) * t, "C * turn bound")
         }
         Objective::LawnTsp => bounds::lawn_tsp_lower_bound(region),
+        // Not an exact objective: no cheap bound is claimed for it here.
+        Objective::LawnLength => LowerBound::new(0, "none"),
     }
 }
 
@@ -862,9 +754,9 @@ pub(crate) fn lp_relaxation_bound(
             driver::lp_bound(&milling::MillingModel::new(region), &deadline, &settings)
         }
         Objective::CcTurns
-        | Objective::TourTurns
-        | Objective::Weighted { .. }
-        | Objective::WeightedCc { .. } => {
+        | Objective::Turns
+        | Objective::Weighted(_)
+        | Objective::WeightedCc(_) => {
             let model = turns::PassageModel::new(region, turn_goal(objective), None);
             let constant = model.isolated_cost();
             if model.formulation().num_cols() == 0 {
@@ -873,5 +765,6 @@ pub(crate) fn lp_relaxation_bound(
             driver::lp_bound(&model, &deadline, &settings).map(|b| b + constant)
         }
         Objective::LawnTsp => driver::lp_bound(&lawn::LawnModel::new(region), &deadline, &settings),
+        Objective::LawnLength => None,
     }
 }

@@ -23,7 +23,7 @@
 use super::contour::contour_walks;
 use super::tsp65::{LinkStats, link_internal_nodes};
 use crate::algorithms::euler::GridMultigraph;
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Region};
 use crate::topology;
@@ -210,18 +210,12 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     name: "holes1325",
     summary: "contours of all boundaries + Theorem 5 linking + free and paid bridges (Theorem 7, milling paper)",
     objectives: &[Objective::Length],
-    guarantees: &[Guarantee {
-        objective: Objective::Length,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 53,
-        den: 40,
-        add: 0,
-        against: Against::N,
-        when: crate::algorithms::When::Always,
-        scale: crate::algorithms::Scale::One,
-        source: "Theorem 7 of Lawn mowing and milling",
-        theorem: &crate::algorithms::theorems::MILLING_THM_7,
-    }],
+    guarantees: &[Guarantee::of_theorem(
+        Objective::Length,
+        crate::algorithms::When::Always,
+        &crate::algorithms::theorems::MILLING_THM_7,
+        "Theorem 7 of Lawn mowing and milling",
+    )],
     claims: &[crate::algorithms::theorems::Claim::paper(
         &crate::algorithms::theorems::MILLING_THM_7,
         &[crate::algorithms::Objective::Length],

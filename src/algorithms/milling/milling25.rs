@@ -484,18 +484,19 @@ pub(crate) const ALGORITHM: crate::algorithms::Algorithm = crate::algorithms::Al
     objectives: &[crate::algorithms::Objective::Length],
     // What the grid reading provably meets (module docs, "Guarantee"): the paper's 5/2 is
     // measured as a claim, not registered, since L_δB ≤ OPT fails on pixels.
-    guarantees: &[crate::algorithms::Guarantee {
-        objective: crate::algorithms::Objective::Length,
-        quantity: crate::algorithms::Quantity::Value,
-        num: 17,
-        den: 3,
-        add: -17,
-        against: crate::algorithms::Against::N,
-        when: crate::algorithms::When::Always,
-        scale: crate::algorithms::Scale::One,
-        source: "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
-        theorem: &crate::algorithms::theorems::MILLING_THM_4,
-    }],
+    guarantees: &[crate::algorithms::Guarantee::new(
+        crate::algorithms::Objective::Length,
+        crate::algorithms::theorems::Bound::new(
+            crate::algorithms::Quantity::Value,
+            17,
+            3,
+            -17,
+            crate::algorithms::Against::N,
+        ),
+        crate::algorithms::When::Always,
+        &crate::algorithms::theorems::MILLING_THM_4,
+        "grid reading of Theorem 4 of Lawn mowing and milling (module docs of milling25)",
+    )],
     claims: &[crate::algorithms::theorems::Claim::reading(
         &crate::algorithms::theorems::MILLING_THM_4,
         &[crate::algorithms::Objective::Length],

@@ -46,7 +46,7 @@
 
 use super::contour::contour_walks;
 use crate::algorithms::euler::GridMultigraph;
-use crate::algorithms::{Against, Algorithm, Guarantee, Objective, Output, Solution};
+use crate::algorithms::{Algorithm, Guarantee, Objective, Output, Solution};
 use crate::error::{Error, Result};
 use crate::region::{Dir, Pixel, Region};
 use crate::topology;
@@ -771,18 +771,12 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
             &crate::algorithms::theorems::MILLING_COR_3,
             "Theorem 5 and Corollary 3 of Lawn mowing and milling",
         ),
-        Guarantee {
-            objective: Objective::Length,
-            quantity: crate::algorithms::Quantity::Value,
-            num: 6,
-            den: 5,
-            add: -4,
-            against: Against::N,
-            when: crate::algorithms::When::Biconnected,
-            scale: crate::algorithms::Scale::One,
-            source: "Theorem 5 of Lawn mowing and milling",
-            theorem: &crate::algorithms::theorems::MILLING_THM_5,
-        },
+        Guarantee::of_theorem(
+            Objective::Length,
+            crate::algorithms::When::Biconnected,
+            &crate::algorithms::theorems::MILLING_THM_5,
+            "Theorem 5 of Lawn mowing and milling",
+        ),
     ],
     claims: &[
         crate::algorithms::theorems::Claim::paper(

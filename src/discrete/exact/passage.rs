@@ -29,8 +29,8 @@ impl Goal {
     fn of(objective: Objective) -> Goal {
         match objective {
             Objective::CcTurns => Goal::CycleCover,
-            Objective::Weighted { turn_cost } => Goal::Weighted(turn_cost),
-            Objective::WeightedCc { turn_cost } => Goal::WeightedCycleCover(turn_cost),
+            Objective::Weighted(turn_cost) => Goal::Weighted(turn_cost),
+            Objective::WeightedCc(turn_cost) => Goal::WeightedCycleCover(turn_cost),
             _ => Goal::Tour,
         }
     }

@@ -155,11 +155,11 @@ fn brute_optimum(inst: &Discrete, objective: Objective) -> Option<u64> {
     let n = inst.len();
     let (lw, tw) = match objective {
         Objective::Length => (1, 0),
-        Objective::CcTurns | Objective::TourTurns => (0, 1),
-        Objective::Weighted { turn_cost } | Objective::WeightedCc { turn_cost } => {
+        Objective::CcTurns | Objective::Turns => (0, 1),
+        Objective::Weighted(turn_cost) | Objective::WeightedCc(turn_cost) => {
             (1, u64::from(turn_cost))
         }
-        Objective::LawnTsp => unreachable!(),
+        Objective::LawnTsp | Objective::LawnLength => unreachable!(),
     };
     let full = (1usize << n) - 1;
     if n == 1 {
@@ -232,9 +232,9 @@ fn brute_rooks(inst: &Discrete) -> u64 {
 
 const TURN_OBJECTIVES: [Objective; 4] = [
     Objective::CcTurns,
-    Objective::TourTurns,
+    Objective::Turns,
     Objective::Length,
-    Objective::Weighted { turn_cost: 2 },
+    Objective::Weighted(2),
 ];
 
 /// Two independent implementations: the grid passage/milling models on a region and this
@@ -306,11 +306,11 @@ fn agrees_with_brute_force_on_random_graphs() {
     let mut rng = ChaCha8Rng::seed_from_u64(17);
     let objectives = [
         Objective::CcTurns,
-        Objective::TourTurns,
+        Objective::Turns,
         Objective::Length,
-        Objective::Weighted { turn_cost: 2 },
-        Objective::WeightedCc { turn_cost: 2 },
-        Objective::WeightedCc { turn_cost: 0 },
+        Objective::Weighted(2),
+        Objective::WeightedCc(2),
+        Objective::WeightedCc(0),
     ];
     let (mut tours, mut cyclic, mut odd) = (0, 0, 0);
     for _ in 0..soak(RANDOM_GRAPHS) {
@@ -324,7 +324,7 @@ fn agrees_with_brute_force_on_random_graphs() {
         for objective in objectives {
             let want = brute_optimum(&inst, objective);
             assert_eq!(optimum(&inst, objective), want, "{objective} on {inst:?}");
-            if objective == Objective::TourTurns && want.is_some() {
+            if objective == Objective::Turns && want.is_some() {
                 tours += 1;
             }
         }
@@ -372,9 +372,9 @@ fn k5_with_two_collinear_pairs_per_vertex_reaches_the_brute_force_optimum() {
     // The brute force's optima. The straight channels are the cycles 0-1-2-3, 0-2-4 and
     // 1-3-4: two of them cover without turning, and one walk through two costs 2 turns.
     for (objective, want) in [
-        (Objective::TourTurns, 2),
-        (Objective::Weighted { turn_cost: 2 }, 10),
-        (Objective::Weighted { turn_cost: 0 }, 5),
+        (Objective::Turns, 2),
+        (Objective::Weighted(2), 10),
+        (Objective::Weighted(0), 5),
         (Objective::CcTurns, 0),
     ] {
         assert_eq!(brute_optimum(&k5, objective), Some(want), "{objective}");
@@ -424,7 +424,7 @@ fn a_cyclic_channel_costs_no_turn_and_holds_no_rook() {
     assert!(chans[0].closed);
     assert_eq!(rook_placement(&ring, None).size, 0);
     assert_eq!(optimum(&ring, Objective::CcTurns), Some(0));
-    assert_eq!(optimum(&ring, Objective::TourTurns), Some(0));
+    assert_eq!(optimum(&ring, Objective::Turns), Some(0));
     assert_eq!(optimum(&ring, Objective::Length), Some(4));
     // A pendant vertex on the ring: its edge is a channel of its own, so the pendant
     // is a rook, and reaching it costs turns.
@@ -439,11 +439,11 @@ fn a_cyclic_channel_costs_no_turn_and_holds_no_rook() {
     assert_eq!((r.size, r.rooks.clone(), r.exact), (1, vec![4], true));
     assert_eq!(optimum(&lasso, Objective::CcTurns), Some(4));
     assert_eq!(
-        optimum(&lasso, Objective::TourTurns),
-        brute_optimum(&lasso, Objective::TourTurns)
+        optimum(&lasso, Objective::Turns),
+        brute_optimum(&lasso, Objective::Turns)
     );
     // A triangle without collinear pairs: odd values are optimal (no parity rounding).
     let triangle = Discrete::new(3, &[(0, 1), (1, 2), (0, 2)], &[], None).unwrap();
     assert_eq!(optimum(&triangle, Objective::Length), Some(3));
-    assert_eq!(optimum(&triangle, Objective::TourTurns), Some(3));
+    assert_eq!(optimum(&triangle, Objective::Turns), Some(3));
 }
