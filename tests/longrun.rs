@@ -275,7 +275,7 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let (full, old) = (dir.join("full"), dir.join("old"));
     assert_ok(&bench(&cfg, &full, &[]));
     assert_ok(&bench(&cfg, &old, &[]));
-    // Three older layouts: before the option columns (ending at `error`), before the model
+    // Four older layouts: before the option columns (ending at `error`), before the model
     // columns (ending at `coverage4`) and before `unit` (ending at `direction_sum`). Drop the last columns (none of them holds a comma in a
     // quoted field: they are the last ones) and keep only the header and 6 rows.
     let path = old.join("results.csv");
@@ -292,11 +292,11 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
             })
             .collect()
     };
-    let old_text = cut_columns(&text, 11);
+    let old_text = cut_columns(&text, 12);
     assert!(old_text.lines().next().unwrap().ends_with(",error"));
-    let between = cut_columns(&text, 8);
+    let between = cut_columns(&text, 9);
     assert!(between.lines().next().unwrap().ends_with(",coverage4"));
-    let before_unit = cut_columns(&text, 1);
+    let before_unit = cut_columns(&text, 2);
     assert!(
         before_unit
             .lines()
@@ -304,8 +304,15 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
             .unwrap()
             .ends_with(",direction_sum")
     );
-    let (old2, old3) = (dir.join("old2"), dir.join("old3"));
-    for (copy, text) in [(&old2, &between), (&old3, &before_unit)] {
+    // And before `theorems` (ending at `unit`).
+    let before_theorems = cut_columns(&text, 1);
+    assert!(before_theorems.lines().next().unwrap().ends_with(",unit"));
+    let (old2, old3, old4) = (dir.join("old2"), dir.join("old3"), dir.join("old4"));
+    for (copy, text) in [
+        (&old2, &between),
+        (&old3, &before_unit),
+        (&old4, &before_theorems),
+    ] {
         std::fs::create_dir_all(copy).unwrap();
         for f in std::fs::read_dir(&old).unwrap() {
             let f = f.unwrap().path();
@@ -318,7 +325,7 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     }
     std::fs::write(&path, &old_text).unwrap();
 
-    for run in [&old, &old2, &old3] {
+    for run in [&old, &old2, &old3, &old4] {
         assert_ok(&mowmill_env(
             &["bench", "--resume", s(run), "--config", s(&cfg)],
             &[],
@@ -328,7 +335,7 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
     let header = header.lines().next().unwrap().to_string();
     assert!(
         header.ends_with(
-            ",error,merge,cutter,coverage4,model,d,delta,mu,rho,edges,direction_sum,unit"
+            ",error,merge,cutter,coverage4,model,d,delta,mu,rho,edges,direction_sum,unit,theorems"
         ),
         "{header}"
     );
@@ -347,15 +354,42 @@ fn resume_of_an_old_results_csv_rewrites_its_header() {
                 edges: None,
                 direction_sum: None,
                 unit: None,
+                theorems: String::new(),
                 ..r
             })
             .collect()
     };
+    assert_eq!(no_options(comparable(&old4)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old3)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old2)), no_options(comparable(&full)));
     assert_eq!(no_options(comparable(&old)), no_options(comparable(&full)));
     // The rows run after the resume record their options.
     assert!(rows.iter().any(|r| r.merge == "smart"));
+    // The old rows carry no theorem ids: the claims table refuses the mixed folder rather than
+    // count them as exercising nothing.
+    for run in [&old, &old4] {
+        let o = mowmill_env(
+            &["claims", "--from", s(run), "--out", s(&dir.join("claims"))],
+            &[],
+        );
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(stderr(&o).contains("older mowmill"), "{}", stderr(&o));
+    }
+    assert!(
+        mowmill_env(
+            &[
+                "claims",
+                "--from",
+                s(&full),
+                "--out",
+                s(&dir.join("claims"))
+            ],
+            &[]
+        )
+        .status
+        .code()
+        .is_some_and(|c| c < 2)
+    );
 }
 
 /// Item 2: a lock held by a running process refuses a second run naming its pid; once that

@@ -357,14 +357,7 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        let bound = Bound {
-            quantity: Quantity::Value,
-            num,
-            den,
-            add: 0,
-            against: Against::Opt,
-            scale: Scale::One,
-        };
+        let bound = Bound::new(Quantity::Value, num, den, 0, Against::Opt);
         Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 
@@ -382,14 +375,7 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        let bound = Bound {
-            quantity,
-            num,
-            den: 1,
-            add: 0,
-            against,
-            scale: Scale::Of { param, plus },
-        };
+        let bound = Bound::scaled(quantity, num, param, plus, against);
         Guarantee::new(objective, bound, when, theorem, source)
     }
 
@@ -400,14 +386,7 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        let bound = Bound {
-            quantity: Quantity::MaxCoverage,
-            num: max,
-            den: 1,
-            add: 0,
-            against: Against::One,
-            scale: Scale::One,
-        };
+        let bound = Bound::new(Quantity::MaxCoverage, max, 1, 0, Against::One);
         Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 
@@ -419,14 +398,7 @@ impl Guarantee {
         theorem: &'static Theorem,
         source: &'static str,
     ) -> Self {
-        let bound = Bound {
-            quantity: Quantity::Length,
-            num: factor,
-            den: 1,
-            add: 0,
-            against: Against::N,
-            scale: Scale::One,
-        };
+        let bound = Bound::new(Quantity::Length, factor, 1, 0, Against::N);
         Guarantee::new(objective, bound, When::Always, theorem, source)
     }
 

@@ -77,6 +77,24 @@ impl Bound {
         }
     }
 
+    /// `q ≤ (num · P + plus) · X`, P an instance parameter.
+    pub const fn scaled(
+        quantity: Quantity,
+        num: i64,
+        param: Param,
+        plus: i64,
+        against: Against,
+    ) -> Bound {
+        Bound {
+            quantity,
+            num,
+            den: 1,
+            add: 0,
+            against,
+            scale: Scale::Of { param, plus },
+        }
+    }
+
     /// Whether `q ≤ (num · x + add) / den`, in exact integer arithmetic (of a bound whose
     /// factor is a constant: see [`Bound::on`]).
     pub fn holds(&self, q: u64, x: u64) -> bool {
@@ -196,14 +214,7 @@ const fn bound(quantity: Quantity, num: i64, den: i64, add: i64, against: Agains
 
 /// `q ≤ (num · P + plus) · X`, P an instance parameter.
 const fn scaled(quantity: Quantity, num: i64, param: Param, plus: i64, against: Against) -> Bound {
-    Bound {
-        quantity,
-        num,
-        den: 1,
-        add: 0,
-        against,
-        scale: Scale::Of { param, plus },
-    }
+    Bound::scaled(quantity, num, param, plus, against)
 }
 
 /// How a theorem is measured on result rows.
@@ -284,8 +295,8 @@ pub struct Theorem {
     pub factor: &'static str,
     pub measure: Measure,
     /// The instances the claim is stated for, beyond the algorithm's preconditions. A row
-    /// applies when the harness recorded (in its `guarantee` column) the algorithm's registered
-    /// guarantee with the same condition, i.e. the condition held on the instance.
+    /// applies when the harness wrote the theorem's [`key`](Theorem::key) in its `theorems`
+    /// column: the row's algorithm claims it and the condition held on the instance.
     pub when: When,
     pub realized: Realized,
     pub tight: Option<Tight>,

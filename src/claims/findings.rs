@@ -18,6 +18,18 @@ fn has_column(path: &Path, column: &str) -> Result<bool> {
     Ok(header.trim_end().split(',').any(|c| c == column))
 }
 
+/// Whether `r` is a registered algorithm's row without theorem ids although the algorithm
+/// claims an unconditional theorem for its objective: a row of an older mowmill.
+fn lacks_theorem_ids(r: &Row) -> bool {
+    r.theorems.is_empty()
+        && crate::algorithms::find(base_name(&r.algorithm)).is_some_and(|a| {
+            a.claims.iter().any(|c| {
+                c.theorem.when == When::Always
+                    && c.objectives.iter().any(|o| o.name() == r.objective)
+            })
+        })
+}
+
 /// The results directories a claims table is computed from. With more than one, each row's
 /// instance is named `RUN/INSTANCE` (RUN the directory's name), so that equal instance names of
 /// different runs (the same family, parameters and index under another master seed) never meet.
@@ -71,6 +83,16 @@ impl Sources {
                      by an older mowmill, whose rows do not say which theorems apply to them: \
                      run its suite again)",
                 ));
+            }
+            if let Some(r) = read.iter().find(|r| lacks_theorem_ids(r)) {
+                return Err(Error::invalid(format!(
+                    "{}: the row {} carries no theorem ids although its algorithm claims a \
+                     theorem for {} on every instance: it was written by an older mowmill \
+                     (a resumed run keeps such rows); run the suite again into a fresh folder",
+                    path.display(),
+                    r.describe(),
+                    r.objective
+                )));
             }
             // An inconsistent row (below its proven bound, or a value that is not its own
             // count) is an invalid result: it is evidence of nothing and breaks its claims.

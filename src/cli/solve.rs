@@ -257,7 +257,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             },
         );
         exact_json = serde_json::json!({
-            "objective": exact_objective.to_string(),
+            "objective": exact_objective.name(),
             "turn_cost": exact_objective.turn_cost(),
             "status": r.status.to_string(),
             "value": r.value,

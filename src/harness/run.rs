@@ -335,8 +335,8 @@ fn check_same_run(
 
 /// A `results.csv` written by an older mowmill (without the option columns `merge`, `cutter`,
 /// `coverage4` appended after `error`, or without the model columns `model`, `d`, `delta`,
-/// `mu`, `rho`, `edges`, `direction_sum` appended after `coverage4`, or without `unit`
-/// appended after `direction_sum`) is rewritten in the
+/// `mu`, `rho`, `edges`, `direction_sum` appended after `coverage4`, without `unit`
+/// appended after `direction_sum`, or without `theorems` appended after `unit`) is rewritten in the
 /// current header before rows are appended to it, so that no row lands under the wrong column;
 /// the old rows get empty columns (an old run did not record them). Any other header is
 /// refused.
@@ -350,13 +350,14 @@ fn upgrade_header(results: &Path) -> Result<()> {
     let columns: Vec<&str> = current.split(',').collect();
     let given: Vec<&str> = header.split(',').collect();
     // Only a prefix of today's columns ending at `error` (before the option columns), at
-    // `coverage4` (before the model columns) or at `direction_sum` (before `unit`) is a known
-    // older layout.
+    // `coverage4` (before the model columns), at `direction_sum` (before `unit`) or at `unit`
+    // (before `theorems`) is a known older layout. Its rows keep no theorem ids: the claims
+    // table refuses them (`claims::Sources::read_rows`), the run's own rows are counted anew.
     let known_old = given.len() < columns.len()
         && given[..] == columns[..given.len()]
         && matches!(
             given.last(),
-            Some(&"error") | Some(&"coverage4") | Some(&"direction_sum")
+            Some(&"error") | Some(&"coverage4") | Some(&"direction_sum") | Some(&"unit")
         );
     if !known_old {
         return Err(Error::parse(

@@ -443,19 +443,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
         threads: opts.threads.max(1),
         verbose: opts.verbose,
     };
-    let answer = if objective == Objective::LawnLength {
-        Answer::stopped(
-            Stop::Error(
-                "the exact solver has no lawn-length objective (a lawn tour in its cutter's \
-                 metric); its lawn objective is lawn-tsp"
-                    .into(),
-            ),
-            LowerBound {
-                value: 0,
-                source: "none",
-            },
-        )
-    } else if region.is_empty() {
+    let answer = if region.is_empty() {
         Answer::stopped(
             Stop::Error("the region is empty".into()),
             LowerBound {
@@ -483,7 +471,17 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
                 solve_turns(region, objective, opts, &deadline, &settings)
             }
             Objective::LawnTsp => solve_lawn(region, opts, &deadline, &settings),
-            Objective::LawnLength => unreachable!("refused above"),
+            Objective::LawnLength => Answer::stopped(
+                Stop::Error(
+                    "the exact solver has no lawn-length objective (a lawn tour in its \
+                     cutter's metric); its lawn objective is lawn-tsp"
+                        .into(),
+                ),
+                LowerBound {
+                    value: 0,
+                    source: "none",
+                },
+            ),
         }
     };
     assemble(
