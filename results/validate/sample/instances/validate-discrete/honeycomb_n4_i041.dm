@@ -1,0 +1,10 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+d 3
+e 0 1
+e 1 2
+e 2 3
+p 0 1.5 0.28867513459481287
+p 1 2 0.5773502691896257
+p 2 2 1.1547005383792515
+p 3 2.5 1.443375672974064

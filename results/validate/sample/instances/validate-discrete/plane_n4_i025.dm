@@ -1,0 +1,11 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 4
+e 0 1
+e 0 2
+e 0 3
+e 1 3
+e 2 3
+p 0 0.1035418782915663 -0.06134994048927603
+p 1 1.0773499365562909 0.08584324129562432
+p 2 -0.0762643304318344 0.8690336343033638
+p 3 0.9537047524612519 1.1750714769914692
