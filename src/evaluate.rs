@@ -80,8 +80,8 @@ impl Subject<'_> {
         }
     }
 
-    /// The theorems the subject claims for `objective` on `model` (none for outside
-    /// algorithms: their claims are their guarantees).
+    /// The theorems the subject claims for `objective` on `model` (for an outside algorithm,
+    /// the config's claim of its guarantee on that objective).
     pub fn theorems_on(
         &self,
         objective: Objective,
@@ -89,7 +89,12 @@ impl Subject<'_> {
     ) -> Vec<&'static crate::algorithms::theorems::Theorem> {
         match self {
             Subject::Registered(a) => a.theorems_on(objective, model),
-            Subject::Outside(_) => Vec::new(),
+            Subject::Outside(o) => o
+                .guarantees
+                .iter()
+                .filter(|g| g.objective == objective)
+                .map(|g| g.theorem)
+                .collect(),
         }
     }
 

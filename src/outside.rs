@@ -170,21 +170,13 @@ impl OutsideAlgorithm {
                 id: leak(format!("claim of {}", spec.name)),
                 statement: leak(format!("{objective} <= {} {}", g.factor, g.against)),
                 factor: leak(g.factor.clone()),
-                measure: Measure::Bound(Bound {
-                    quantity: Quantity::Value,
-                    num,
-                    den,
-                    add: 0,
-                    against,
-                    scale: crate::algorithms::Scale::One,
-                }),
+                measure: Measure::Bound(Bound::new(Quantity::Value, num, den, 0, against)),
                 when: When::Always,
                 realized: Realized::ByAlgorithms,
                 tight: None,
             }));
-            guarantees.push(Guarantee::new(
+            guarantees.push(Guarantee::of_theorem(
                 objective,
-                crate::algorithms::theorems::Bound::new(Quantity::Value, num, den, 0, against),
                 When::Always,
                 theorem,
                 source,

@@ -447,11 +447,32 @@ fn bench_summarizes_reports_progress_and_exits_1_on_a_violation() {
         "{stderr}"
     );
 
-    let (o, _) = run("1", "violated");
+    let (o, violated) = run("1", "violated");
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(1), "{stdout}");
     assert_eq!(line_of(&stdout, "dfs")[6], "4", "{stdout}");
     assert!(stdout.contains("FAILED"), "{stdout}");
+
+    // The claims table finds the config's claim by the rows' theorem id (`outside:claim of
+    // dfs`): held by the run that claims 2 N, violated by the one that claims N.
+    for (dir, verdict) in [(&out, "holds"), (&violated, "violated")] {
+        let rows = std::fs::read_to_string(dir.join("results.csv")).unwrap();
+        assert!(rows.contains("outside:claim of dfs"), "{rows}");
+        let claims = dir.join("claims");
+        mowmill(&[
+            "claims",
+            "--from",
+            dir.to_str().unwrap(),
+            "--out",
+            claims.to_str().unwrap(),
+        ]);
+        let table = std::fs::read_to_string(claims.join("claims.csv")).unwrap();
+        let row = table
+            .lines()
+            .find(|l| l.contains("claim of dfs"))
+            .unwrap_or_else(|| panic!("no row for the claim of dfs:\n{table}"));
+        assert!(row.contains(&format!(",{verdict},")), "{row}");
+    }
 }
 
 fn line_of(text: &str, name: &str) -> Vec<String> {

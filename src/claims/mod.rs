@@ -354,9 +354,9 @@ fn cross_reference(table: &mut [ClaimRow]) {
     }
 }
 
-/// The marker the harness writes into the `guarantee` column of an outside algorithm's rows
-/// (see [`crate::outside`]).
-const OUTSIDE_MARK: &str = "claimed in the config of ";
+/// The prefix of the theorem id of a config's claim for an outside algorithm in the rows'
+/// `theorems` column ([`Paper::Outside`]'s short name; see [`crate::outside`]).
+const OUTSIDE_KEY: &str = "outside:";
 
 /// One row per claim a config made for an outside algorithm, decided from the rows' own
 /// verdicts (`within_guarantee`, computed by the evaluation pipeline against the proven optimum
@@ -364,7 +364,7 @@ const OUTSIDE_MARK: &str = "claimed in the config of ";
 fn outside_claims(rows: &[Row]) -> Vec<ClaimRow> {
     let mut by_claim: BTreeMap<(String, String), Vec<&Row>> = BTreeMap::new();
     for r in rows {
-        if r.guarantee.contains(OUTSIDE_MARK) {
+        if r.theorems.split("; ").any(|k| k.starts_with(OUTSIDE_KEY)) {
             by_claim
                 .entry((r.algorithm.clone(), r.guarantee.clone()))
                 .or_default()
