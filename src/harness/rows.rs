@@ -110,7 +110,8 @@ pub struct Row {
     pub unit: Option<u64>,
     /// The ids ([`Theorem::key`](crate::algorithms::theorems::Theorem::key)) of the theorems the
     /// row's algorithm claims for its objective whose condition holds on the instance, joined by
-    /// `; ` (empty for exact rows and outside algorithms): the claims table joins on them.
+    /// `; ` (an outside algorithm's: its config's claim, `outside:claim of NAME`; exact rows:
+    /// none): the claims table joins on them.
     #[serde(default)]
     pub theorems: String,
 }
