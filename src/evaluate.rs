@@ -602,12 +602,6 @@ pub fn exact_counterpart(objective: Objective) -> Option<Objective> {
     }
 }
 
-/// The exact solver's objective of an algorithm objective (one objective type: itself, or
-/// `None` for lawn tours, see [`exact_counterpart`]).
-pub fn exact_objective(objective: Objective) -> Option<crate::exact::Objective> {
-    exact_counterpart(objective)
-}
-
 /// The checker's recount of `cover` for `objective`: the milling checker, or for lawn tours the
 /// lawn checker where the cutter's motion is Euclidean (lengths in milli-units).
 pub fn recount(

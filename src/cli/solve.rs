@@ -228,10 +228,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     let mut reference = Reference::default();
     let mut exact_json = serde_json::Value::Null;
     if a.exact {
-        let (Some(eo), Some(exact_objective)) = (
-            evaluate::exact_counterpart(objective),
-            evaluate::exact_objective(objective),
-        ) else {
+        let Some(eo) = evaluate::exact_counterpart(objective) else {
             bail!(mowmill::Error::invalid(format!(
                 "--exact: no exact solver computes the optimum of {objective} (lawn-tsp is a \
                  reference tour through the centres, not the optimal lawn tour)"
@@ -241,7 +238,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             time_limit: Some(time_limit),
             ..mowmill::warm_start::exact_options()
         };
-        let r = exact::solve(&inst.region, exact_objective, &opts);
+        let r = exact::solve(&inst.region, eo, &opts);
         let optimal = r.status == exact::Status::Optimal && r.valid;
         reference.insert(
             eo,
@@ -257,8 +254,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             },
         );
         exact_json = serde_json::json!({
-            "objective": exact_objective.name(),
-            "turn_cost": exact_objective.turn_cost(),
+            "objective": eo.name(),
+            "turn_cost": eo.turn_cost(),
             "status": r.status.to_string(),
             "value": r.value,
             "lower_bound": r.lower_bound,

@@ -102,7 +102,7 @@ pub fn exact_incumbent(
     options: &Options,
     time_limit: f64,
 ) -> (Option<BestWalk>, u64, bool) {
-    let Some(exact_obj) = evaluate::exact_objective(objective) else {
+    let Some(exact_obj) = evaluate::exact_counterpart(objective) else {
         return (None, 0, false);
     };
     let res = exact::solve(

@@ -453,11 +453,6 @@ fn generated(
     None
 }
 
-/// The exact objective that gives OPT for an algorithm objective.
-fn exact_objective(o: Objective) -> Option<exact::Objective> {
-    evaluate::exact_objective(o)
-}
-
 /// An exact solve's outcome: OPT if proven, the walk found, the proven lower bound.
 type Solved = (Option<u64>, Option<crate::tour::CycleCover>, u64);
 
@@ -701,7 +696,7 @@ fn assess(
         }
         return out;
     }
-    let exact_obj = exact_objective(opts.objective);
+    let exact_obj = evaluate::exact_counterpart(opts.objective);
     let (Against::Opt, Some(exact_obj)) = (opts.against, exact_obj) else {
         out.ratio = out.ratio_bound;
         return out;
@@ -1012,7 +1007,7 @@ pub fn hunt(
     }
     rep.worst = worst.into_iter().take(opts.keep).map(|(_, f)| f).collect();
     // A cache hit has no walk of this very region: solve the kept ones again for their figure.
-    if let Some(exact_obj) = exact_objective(opts.objective) {
+    if let Some(exact_obj) = evaluate::exact_counterpart(opts.objective) {
         for f in rep.worst.iter_mut().chain(rep.findings.iter_mut()) {
             if f.optimal_walk.is_none() && opts.against == Against::Best {
                 let exact = (f.region.len() <= opts.exact_max_n).then(|| {
