@@ -22,18 +22,7 @@ pub fn now() -> String {
     humantime::format_rfc3339_seconds(std::time::SystemTime::now()).to_string()
 }
 
-/// The HiGHS version linked into this binary.
-pub fn highs_version() -> String {
-    // SAFETY: the HiGHS version getters take no arguments and only return constants.
-    let (major, minor, patch) = unsafe {
-        (
-            highs_sys::Highs_versionMajor(),
-            highs_sys::Highs_versionMinor(),
-            highs_sys::Highs_versionPatch(),
-        )
-    };
-    format!("{major}.{minor}.{patch}")
-}
+pub use crate::exact::highs_version;
 
 fn git(args: &[&str]) -> Option<String> {
     let out = Command::new("git").args(args).output().ok()?;

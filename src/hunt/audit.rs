@@ -14,7 +14,6 @@ use crate::algorithms::strips_matching::{strip_floors, strip_ports};
 use crate::algorithms::turn_distance::turn_distance;
 use crate::region::Region;
 use crate::strip_cover::strip_cover;
-use highs::{HighsModelStatus, RowProblem, Sense};
 use std::collections::BTreeMap;
 
 /// Above this many strip ends the audit is skipped (the integer program grows with the square).
@@ -62,7 +61,8 @@ fn strip_matching(region: &Region, certs: &BTreeMap<String, i64>) -> Vec<String>
 }
 
 /// The minimum weight of a perfect matching of the strip ends of `region` (as
-/// `strips-matching` builds them: a minimum strip cover, partners' floors), by HiGHS; `None`
+/// `strips-matching` builds them: a minimum strip cover, partners' floors), by the integer
+/// program of [`crate::exact::matching`]; `None`
 /// when there are more than [`MAX_ENDS`] ends, none, or the solver does not prove it.
 pub(crate) fn minimum_strip_matching(region: &Region) -> Option<i64> {
     let cover = strip_cover(region);
@@ -72,8 +72,7 @@ pub(crate) fn minimum_strip_matching(region: &Region) -> Option<i64> {
     if n == 0 || n > MAX_ENDS {
         return None;
     }
-    let mut pb = RowProblem::default();
-    let mut at: Vec<Vec<(highs::Col, f64)>> = vec![Vec::new(); n];
+    let mut pairs = Vec::new();
     for i in 0..n {
         for j in i + 1..n {
             let Some(mut d) = turn_distance(region, ports[i], ports[j]) else {
@@ -82,24 +81,10 @@ pub(crate) fn minimum_strip_matching(region: &Region) -> Option<i64> {
             if j == (i ^ 1) {
                 d = d.max(floor[i]);
             }
-            let x = pb.add_integer_column(f64::from(d), 0..=1);
-            at[i].push((x, 1.0));
-            at[j].push((x, 1.0));
+            pairs.push((i, j, d));
         }
     }
-    for terms in at {
-        pb.add_row(1.0..=1.0, terms);
-    }
-    let mut model = pb.optimise(Sense::Minimise);
-    model.set_option("output_flag", false);
-    model.set_option("threads", 1);
-    model.set_option("mip_rel_gap", 0.0);
-    model.set_option("time_limit", 30.0);
-    let solved = model.try_solve().ok()?;
-    if solved.status() != HighsModelStatus::Optimal {
-        return None;
-    }
-    Some(solved.objective_value().round() as i64)
+    crate::exact::matching::min_perfect_matching(n, &pairs, 30.0)
 }
 
 #[cfg(test)]

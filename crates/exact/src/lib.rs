@@ -78,6 +78,7 @@ pub mod driver;
 mod lawn;
 #[doc(hidden)]
 pub mod lp;
+pub mod matching;
 mod milling;
 mod turns;
 #[doc(hidden)]
@@ -94,6 +95,19 @@ use driver::{CutModel, Solved, Stop};
 use lp::{Deadline, Settings};
 use serde::Serialize;
 use std::fmt;
+
+/// The HiGHS version linked into this binary.
+pub fn highs_version() -> String {
+    // SAFETY: the HiGHS version getters take no arguments and only return constants.
+    let (major, minor, patch) = unsafe {
+        (
+            highs_sys::Highs_versionMajor(),
+            highs_sys::Highs_versionMinor(),
+            highs_sys::Highs_versionPatch(),
+        )
+    };
+    format!("{major}.{minor}.{patch}")
+}
 
 /// The objective of an exact solve: the one objective type of the core (the exact solver
 /// takes `length`, `cc-turns`, `turns`, `weighted`, `weighted-cc` and `lawn-tsp`:

@@ -312,6 +312,97 @@ impl IncrementalLp {
     }
 }
 
+/// An LP that grows by columns and by rows while HiGHS keeps its basis (column generation
+/// with cutting planes: the matching LP of `strips-matching` prices pairs in and adds odd-set
+/// cuts). Rows and columns are numbered in the order they are added; one thread, quiet, dual
+/// simplex from the previous basis, no time limit (the caller bounds its rounds).
+pub struct GrowingLp {
+    model: Option<Model>,
+    rows: Vec<highs::Row>,
+    cols: Vec<Col>,
+}
+
+/// A [`GrowingLp`] optimum: primal values per column and duals per row.
+#[derive(Clone, Debug)]
+pub struct LpDuals {
+    pub x: Vec<f64>,
+    pub row_dual: Vec<f64>,
+}
+
+impl GrowingLp {
+    /// A minimization LP with one row `lo <= · <= hi` per entry of `rows` and no columns.
+    pub fn new(rows: &[(f64, f64)]) -> GrowingLp {
+        let mut pb = highs::ColProblem::default();
+        let handles = rows.iter().map(|&(lo, hi)| pb.add_row(lo..=hi)).collect();
+        let mut model = pb.optimise(Sense::Minimise);
+        model.make_quiet();
+        model.set_option("threads", 1);
+        model.set_option("presolve", "off");
+        model.set_option("solver", "simplex");
+        GrowingLp {
+            model: Some(model),
+            rows: handles,
+            cols: Vec::new(),
+        }
+    }
+
+    pub fn num_rows(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// Adds a column of cost `cost`, bounds `lo..`, and coefficients in existing rows.
+    pub fn add_col(&mut self, cost: f64, lo: f64, terms: &[(usize, f64)]) -> Result<usize, String> {
+        let model = self
+            .model
+            .as_mut()
+            .ok_or("the LP was lost after a HiGHS error")?;
+        let entries = terms.iter().map(|&(r, v)| (self.rows[r], v));
+        let col = model
+            .try_add_column(cost, lo.., entries)
+            .map_err(|e| format!("HiGHS refused a column: {e:?}"))?;
+        self.cols.push(col);
+        Ok(self.cols.len() - 1)
+    }
+
+    /// Adds a row `lo <= Σ terms` over existing columns.
+    pub fn add_row_at_least(&mut self, lo: f64, terms: &[(usize, f64)]) -> Result<usize, String> {
+        let model = self
+            .model
+            .as_mut()
+            .ok_or("the LP was lost after a HiGHS error")?;
+        let entries = terms.iter().map(|&(c, v)| (self.cols[c], v));
+        let row = model
+            .try_add_row(lo.., entries)
+            .map_err(|e| format!("HiGHS refused a row: {e:?}"))?;
+        self.rows.push(row);
+        Ok(self.rows.len() - 1)
+    }
+
+    /// Solves from the previous basis; an error unless HiGHS proves the LP optimal.
+    pub fn solve(&mut self) -> Result<LpDuals, String> {
+        let model = self
+            .model
+            .take()
+            .ok_or("the LP was lost after a HiGHS error")?;
+        let solved = model
+            .try_solve()
+            .map_err(|e| format!("HiGHS failed on the LP: {e:?}"))?;
+        if solved.status() != HighsModelStatus::Optimal {
+            return Err(format!(
+                "HiGHS ended the LP with status {:?}",
+                solved.status()
+            ));
+        }
+        let sol = solved.get_solution();
+        let duals = LpDuals {
+            x: sol.columns().to_vec(),
+            row_dual: sol.dual_rows().to_vec(),
+        };
+        self.model = Some(Model::from(solved));
+        Ok(duals)
+    }
+}
+
 /// A MIP answer: the best solution found (if any) and the proven dual bound.
 #[derive(Clone, Debug)]
 pub struct MipSolution {
@@ -393,6 +484,26 @@ pub fn ceil_bound(b: f64) -> Option<u64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn growing_lp_prices_columns_and_cuts() {
+        // min x + 2y + 3z, x + y = 1 (row 0), y + z = 1 (row 1): optimum y = 1, value 2.
+        let mut lp = GrowingLp::new(&[(1.0, 1.0), (1.0, 1.0)]);
+        let x = lp.add_col(1.0, 0.0, &[(0, 1.0)]).unwrap();
+        let z = lp.add_col(3.0, 0.0, &[(1, 1.0)]).unwrap();
+        let a = lp.solve().unwrap();
+        assert_eq!((a.x[x], a.x[z]), (1.0, 1.0));
+        let y = lp.add_col(2.0, 0.0, &[(0, 1.0), (1, 1.0)]).unwrap();
+        let b = lp.solve().unwrap();
+        assert!((b.x[y] - 1.0).abs() < 1e-9 && b.x[x].abs() < 1e-9);
+        // Duals: y0 + y1 = 2 (y's reduced cost 0), y0 <= 1, y1 <= 3.
+        assert!((b.row_dual[0] + b.row_dual[1] - 2.0).abs() < 1e-9);
+        // A row x >= 1 forces x = 1 and then z = 1 (y = 0): value 4.
+        lp.add_row_at_least(1.0, &[(x, 1.0)]).unwrap();
+        let c = lp.solve().unwrap();
+        assert!((c.x[x] - 1.0).abs() < 1e-9 && (c.x[z] - 1.0).abs() < 1e-9);
+        assert_eq!(lp.num_rows(), 3);
+    }
 
     #[test]
     fn incremental_lp_and_mip() {

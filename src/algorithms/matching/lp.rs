@@ -3,7 +3,7 @@
 //! where integral, repaired by blossom where not.
 
 use super::*;
-use highs::{Col, ColProblem, HighsModelStatus, Model, Row, Sense};
+use crate::exact::lp::GrowingLp;
 use petgraph::unionfind::UnionFind;
 
 /// Pricing keeps, per endpoint, this many cheapest absent partners per round.
@@ -36,14 +36,8 @@ pub(super) const TOL: f64 = 1e-6;
 /// The matching LP over the candidate pairs, kept alive in HiGHS between rounds: columns x_e
 /// ≥ 0, rows x(δ(v)) = 1 and odd-set cuts x(δ(S)) ≥ 1.
 pub(super) struct MatchingLp {
-    /// HiGHS numbers rows as endpoints, then cuts, and columns as `edges`.
-    model: Option<Model>,
-    /// The row x(δ(v)) = 1 of every endpoint.
-    degree_rows: Vec<Row>,
-    /// The row of every cut.
-    cut_rows: Vec<Row>,
-    /// The column of every edge.
-    cols: Vec<Col>,
+    /// Rows are the endpoints' x(δ(v)) = 1, then the cuts in order; columns are `edges`.
+    lp: GrowingLp,
     /// The vertex set of every cut.
     cuts: Vec<Vec<usize>>,
     /// The endpoints at each pixel.
@@ -70,18 +64,8 @@ impl MatchingLp {
         for (i, port) in ports.iter().enumerate() {
             at_pixel.entry(port.pixel).or_default().push(i);
         }
-        let mut pb = ColProblem::default();
-        let degree_rows: Vec<Row> = (0..p).map(|_| pb.add_row(1.0..=1.0)).collect();
-        let mut model = pb.optimise(Sense::Minimise);
-        model.make_quiet();
-        model.set_option("threads", 1);
-        model.set_option("presolve", "off");
-        model.set_option("solver", "simplex");
         let mut lp = MatchingLp {
-            model: Some(model),
-            degree_rows,
-            cut_rows: Vec::new(),
-            cols: Vec::with_capacity(edges.len()),
+            lp: GrowingLp::new(&vec![(1.0, 1.0); p]),
             cuts: Vec::new(),
             at_pixel,
             cuts_of: vec![Vec::new(); p],
@@ -110,17 +94,14 @@ impl MatchingLp {
         if self.index.contains_key(&(a, b)) {
             return Ok(());
         }
-        let mut rows = vec![(self.degree_rows[a], 1.0), (self.degree_rows[b], 1.0)];
-        rows.extend(
-            self.crossing(a, b)
-                .map(|c| (self.cut_rows[c as usize], 1.0)),
-        );
-        let model = self.model.as_mut().expect("the model is alive");
-        let col = model
-            .try_add_column(f64::from(w), 0.0.., rows)
-            .map_err(|e| Error::solver(format!("HiGHS refused a matching column: {e:?}")))?;
-        self.cols.push(col);
-        let k = self.edges.len();
+        let p = self.cuts_of.len();
+        let mut rows = vec![(a, 1.0), (b, 1.0)];
+        rows.extend(self.crossing(a, b).map(|c| (p + c as usize, 1.0)));
+        let k = self
+            .lp
+            .add_col(f64::from(w), 0.0, &rows)
+            .map_err(|e| Error::solver(format!("the matching LP: {e}")))?;
+        debug_assert_eq!(k, self.edges.len());
         self.edges.push((a, b, w));
         self.index.insert((a, b), k);
         self.incident[a].push(k as u32);
@@ -147,12 +128,10 @@ impl MatchingLp {
     /// Adds x(δ(S)) ≥ 1 for the sorted set S.
     fn add_cut(&mut self, set: Vec<usize>) -> Result<()> {
         let cols = self.crossing_edges(&set);
-        let factors = cols.iter().map(|&k| (self.cols[k as usize], 1.0));
-        let model = self.model.as_mut().expect("the model is alive");
-        let row = model
-            .try_add_row(1.0.., factors)
-            .map_err(|e| Error::solver(format!("HiGHS refused an odd-set cut: {e:?}")))?;
-        self.cut_rows.push(row);
+        let factors: Vec<(usize, f64)> = cols.iter().map(|&k| (k as usize, 1.0)).collect();
+        self.lp
+            .add_row_at_least(1.0, &factors)
+            .map_err(|e| Error::solver(format!("the matching LP, an odd-set cut: {e}")))?;
         let c = self.cuts.len() as u32;
         for &v in &set {
             self.cuts_of[v].push(c);
@@ -199,26 +178,16 @@ impl MatchingLp {
     }
 
     fn solve(&mut self) -> Result<LpPoint> {
-        let model = self.model.take().expect("the model is alive");
-        let solved = model
-            .try_solve()
-            .map_err(|e| Error::solver(format!("HiGHS failed on the matching LP: {e:?}")))?;
-        if solved.status() != HighsModelStatus::Optimal {
-            return Err(Error::solver(format!(
-                "HiGHS ended the matching LP with status {:?}",
-                solved.status()
-            )));
-        }
-        let sol = solved.get_solution();
+        let sol = self
+            .lp
+            .solve()
+            .map_err(|e| Error::solver(format!("the matching LP: {e}")))?;
         let p = self.cuts_of.len();
-        let duals = sol.dual_rows();
-        let point = LpPoint {
-            x: sol.columns().to_vec(),
-            y: duals[..p].to_vec(),
-            z: duals[p..].iter().map(|&z| z.max(0.0)).collect(),
-        };
-        self.model = Some(Model::from(solved));
-        Ok(point)
+        Ok(LpPoint {
+            y: sol.row_dual[..p].to_vec(),
+            z: sol.row_dual[p..].iter().map(|&z| z.max(0.0)).collect(),
+            x: sol.x,
+        })
     }
 }
 
