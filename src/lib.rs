@@ -7,10 +7,11 @@
 //! runs an algorithm and judges its output; the command line, the benchmark runner and the
 //! tight families all call it.
 //!
-//! This crate is the top of a workspace of three (docs/layout.md): the science core
-//! `mowmill-core` (regions, readers, families, walks, checkers, bounds) and the exact models
-//! `mowmill-exact` sit below it and cannot reach up; their modules are re-exported here under
-//! the paths below.
+//! This crate is the top of a workspace of four (docs/layout.md): the science core
+//! `mowmill-core` (the three models: regions, discrete instances, orthogonal polygons; readers,
+//! families, walks, checkers, bounds), the exact models `mowmill-exact` (the only crate that
+//! links HiGHS) and the algorithms `mowmill-algorithms` sit below it and cannot reach up; their
+//! modules are re-exported here under the paths below.
 //!
 //! # Public surface
 //!
@@ -71,7 +72,6 @@
 //! # Ok::<(), mowmill::Error>(())
 //! ```
 
-pub mod algorithms;
 pub mod claims;
 pub mod discrete;
 pub mod draw;
@@ -85,8 +85,9 @@ pub mod tight;
 pub mod warm_start;
 
 pub use error::{Error, Result};
-// Dinic max-flow (in the core) serves the cuts of the exact models and the matching LP.
-pub(crate) use mowmill_core::flow;
+/// The algorithms with their theorems and the registry's list (their own crate,
+/// `mowmill-algorithms`: the core and the exact crate's LP layer, no harness).
+pub use mowmill_algorithms as algorithms;
 pub use mowmill_core::{
     bounds, checker, error, generate, gridfile, input, instance, lawn_check, objective, pixel_list,
     region, strip_cover, topology, tour, tsplib, wkt,

@@ -16,12 +16,8 @@
 //! Coordinates are converted to `f64` ([`Rational::to_f64`]) only here, for drawing; the
 //! verdict in the caption is the exact checker's.
 
-use super::check::{Report, check, heading};
 use super::cover::Rect;
-use super::erosion::Erosion;
-use super::polygon::{Point, Polygon};
-use super::rational::Rational;
-use super::tour::Tour;
+use super::{Erosion, Point, Polygon, Rational, Report, Tour, check, heading};
 use crate::draw::{
     AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DrawOptions, DrawResult, FONT_FAMILY, Format,
     MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, Picture, REGION_FILL, Strokes, TITLE_COLOUR,
@@ -661,7 +657,20 @@ fn witness_mark<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ortho::check::tests::{polygon, tour};
+
+    fn polygon(text: &str) -> Polygon {
+        Polygon::parse(text, "p.wkt").unwrap()
+    }
+
+    fn tour(points: &[(&str, &str)]) -> Tour {
+        let q = |s: &str| Rational::parse_coordinate(s).unwrap();
+        Tour::new(
+            points
+                .iter()
+                .map(|&(x, y)| Point::new(q(x), q(y)))
+                .collect(),
+        )
+    }
 
     #[test]
     fn the_union_of_overlapping_boxes_is_disjoint_with_its_outline() {

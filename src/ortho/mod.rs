@@ -1,55 +1,12 @@
 //! Milling orthogonal polygons with arbitrary (non-integral) coordinates by a unit square
-//! cutter: exact input, an exact checker, and the feasibility test. The foundation for
-//! Corollary 4 of *Lawn mowing and milling* and Theorem 5.7 of *Optimal covering tours with
-//! turn costs*.
-//!
-//! - [`Rational`]: exact coordinates (`i128` over `i128`, checked arithmetic, exact order).
-//! - [`Polygon`]: WKT `POLYGON` / `MULTIPOLYGON` with holes, axis-parallel edges and decimal or
-//!   `p/q` coordinates, read exactly by the crate's one WKT reader ([`crate::wkt`]).
-//! - [`Tour`]: closed rectilinear walks of the cutter's centre, in JSON with exact numbers.
-//! - [`check`]: whether the swept area equals the polygon (up to measure zero), decided
-//!   exactly, with length and turns recounted; on integral inputs it agrees with the pixel
-//!   checker [`crate::checker::check`] (tests/ortho.rs).
-//! - [`feasibility`]: whether the polygon can be milled at all, the [`Erosion`] (the centre
-//!   positions, B in the paper) and its contour δB; [`interior_pixels`], the integer pixels
-//!   inside (R_N in Corollary 4's proof).
-//! - [`draw`], [`draw_svg`]: the figure of a polygon, a tour over it, the area it sweeps and δB.
-//!
-//! Conventions: the cutter is the axis-parallel unit square centred on the walk; pixel (x, y)
-//! of a [`Region`](crate::Region) is the unit square [x, x+1] × [y, y+1], its centre
-//! (x + ½, y + ½) ([`Polygon::from_region`], [`Tour::from_cover`]).
-//!
-//! The algorithms: [`corollary4`] (milling length) and [`strips_contour`] (our reading of
-//! Theorem 5.7 of *Optimal covering tours with turn costs*: turns), registered as
-//! [`COROLLARY4`] and [`STRIPS_CONTOUR`]. docs/ortho.md has the file
-//! formats, the checker's argument and the limits.
+//! cutter, gathered in one place: the model of the core (`mowmill_core::ortho`: exact
+//! coordinates, WKT input, tours, the exact checker, the erosion and the turn bound), the
+//! algorithms (`mowmill_algorithms::ortho`: Corollary 4 of *Lawn mowing and milling*, our
+//! reading of Theorem 5.7 of *Optimal covering tours with turn costs*) and the figures
+//! ([`draw`], [`draw_svg`], drawn here with plotters). docs/ortho.md has the file formats, the
+//! checker's argument and the limits.
 
-mod check;
-mod corollary4;
-mod cover;
 mod draw;
-mod erosion;
-mod generate;
-mod join;
-mod polygon;
-mod rational;
-mod registered;
-mod strips_contour;
-mod tour;
-mod turn_bound;
 
-pub use check::{Report, Violation, check, turn_cost};
-pub use corollary4::{Certificates, LowerBounds, corollary4, lower_bounds, walk_length};
 pub use draw::{draw, draw_svg, figure_caption};
-pub use erosion::{Erosion, Infeasible, feasibility, interior_pixels};
-pub use generate::{FAMILIES, generate};
-pub(crate) use polygon::lcm;
-pub use polygon::{MAX_VERTICES, Point, Polygon, Ring};
-pub use rational::{MAX_DENOMINATOR, MAX_MAGNITUDE, Rational};
-pub use registered::{COROLLARY4, STAR_CONTOUR, STRIPS_CONTOUR};
-pub use strips_contour::{
-    Certificates as StripsContourCertificates, StripsContour, star_contour, strips_contour,
-    walk_turns,
-};
-pub use tour::{MAX_TOUR_POINTS, Tour};
-pub use turn_bound::{TurnBound, turn_lower_bound};
+pub use mowmill_algorithms::ortho::*;

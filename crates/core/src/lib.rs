@@ -10,6 +10,7 @@
 
 pub mod bounds;
 pub mod checker;
+pub mod discrete;
 pub mod error;
 pub mod euler;
 pub mod flow;
@@ -19,6 +20,7 @@ pub mod input;
 pub mod instance;
 pub mod lawn_check;
 pub mod objective;
+pub mod ortho;
 pub mod pixel_list;
 pub mod region;
 pub mod strip_cover;

@@ -69,10 +69,12 @@
 //! as for every objective, only when the checker's recount of the returned cover equals the
 //! proven bound.
 
-// The building blocks below are public for the discrete exact models (`mowmill::discrete::exact`),
-// which assemble their formulations from them; they are not part of the documented surface.
+// The building blocks below are public for the matching LP of the algorithms crate; the
+// discrete exact models ([`discrete`]) assemble their formulations from them too. They are not
+// part of the documented surface.
 #[doc(hidden)]
 pub mod cuts;
+pub mod discrete;
 #[doc(hidden)]
 pub mod driver;
 mod lawn;

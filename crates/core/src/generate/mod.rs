@@ -331,7 +331,7 @@ fn generate_traced(p: &GenParams) -> Result<(GridFile, Provenance)> {
 /// Grid families say so in the registry ([`FamilyInfo::structured`]); the discrete and
 /// orthogonal ones are the families built for a proof's hard case: slivers and narrow features
 /// of polygons, hubs on a path and bridges between straight paths
-/// (`mowmill::discrete::generate::STRUCTURED`).
+/// (`mowmill_core::discrete::generate::STRUCTURED`).
 pub fn is_structured(family: &str) -> bool {
     if let Ok(f) = family.parse::<Family>() {
         return f.info().structured;

@@ -113,7 +113,7 @@ pub struct ValidRing<C> {
 
 /// Parses a WKT `POLYGON` or `MULTIPOLYGON` with coordinates of type `C` and checks it by the
 /// rules of [`parse_wkt`] (all but the pixel limit): the one reader of exact polygons
-/// (`mowmill::ortho`) and of pixel regions.
+/// (`mowmill_core::ortho`) and of pixel regions.
 pub fn parse_valid_rings<C: Coordinate>(text: &str, file: &str) -> Result<Vec<ValidRing<C>>> {
     let (rings, _) = Parser::<C>::new(text, file).geometry()?;
     let geometry = Geometry { rings, file };

@@ -9,7 +9,7 @@ use std::fmt;
 use std::marker::PhantomData;
 
 /// What the reader makes of a number: integers for pixel regions ([`parse_wkt`](super::parse_wkt)),
-/// exact rationals for the polygons of `mowmill::ortho`. The syntax and the validity rules are
+/// exact rationals for the polygons of `mowmill_core::ortho`. The syntax and the validity rules are
 /// the same for both.
 pub trait Coordinate: Copy + Ord + fmt::Display {
     /// The most vertices (as written, closing ones included) a geometry may have.
