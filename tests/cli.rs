@@ -947,7 +947,12 @@ fn claims_saves_findings_from_the_walks_the_run_kept() {
             .unwrap_or_else(|e| panic!("{stem}.tour.json: {e}"));
         assert_eq!(saved, std::fs::read(&run_walk).unwrap(), "{instance}");
         let note = std::fs::read_to_string(findings.join(format!("{stem}.md"))).unwrap();
-        assert!(note.contains("walk: as the run wrote it"), "{note}");
+        assert!(
+            note.contains(&format!(
+                "walk: as the run wrote it, walks/{instance}/dfs.length.tour.json"
+            )),
+            "{note}"
+        );
         assert!(
             note.contains("checked output: valid true, length 18,"),
             "{note}"

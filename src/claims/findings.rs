@@ -288,10 +288,12 @@ fn missing_walk_line(algo: &str, objective: &str, instance_file: &Path) -> Strin
     )
 }
 
-/// The note's line naming the run's walk a finding's tour was copied from, and the copy.
-fn copy_walk(path: &Path, to: &Path, note: &mut String) -> Result<()> {
+/// Copies the run's walk at `path` (in the run folder `from`) to `to`, and adds the note's line
+/// naming it (relative to the run folder, so that the note does not depend on where it lies).
+fn copy_walk(path: &Path, from: &Path, to: &Path, note: &mut String) -> Result<()> {
     std::fs::copy(path, to).map_err(|e| Error::io(to, e))?;
-    let _ = writeln!(note, "walk: as the run wrote it, {}", path.display());
+    let shown = path.strip_prefix(from).unwrap_or(path);
+    let _ = writeln!(note, "walk: as the run wrote it, {}", shown.display());
     Ok(())
 }
 
@@ -409,7 +411,7 @@ fn save_discrete_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::P
     }
     if let KeptWalk::Read { walk, path } = walk {
         let tour = dir.join(format!("{}.tour.json", f.stem()));
-        copy_walk(&path, &tour, &mut note)?;
+        copy_walk(&path, f.from, &tour, &mut note)?;
         written.push(tour);
         let rep = check::check(&inst, &walk.cycles);
         let _ = writeln!(
@@ -468,7 +470,7 @@ fn save_ortho_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::Path
     }
     if let KeptWalk::Read { walk, path } = walk {
         let tour = dir.join(format!("{}.tour.json", f.stem()));
-        copy_walk(&path, &tour, &mut note)?;
+        copy_walk(&path, f.from, &tour, &mut note)?;
         written.push(tour);
         match crate::ortho::check(&polygon, &walk) {
             Ok(rep) => {
@@ -527,7 +529,7 @@ fn save_grid_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathB
     }
     if let KeptWalk::Read { walk, path } = walk {
         let tour = dir.join(format!("{}.tour.json", f.stem()));
-        copy_walk(&path, &tour, &mut note)?;
+        copy_walk(&path, f.from, &tour, &mut note)?;
         written.push(tour);
         match f.objective.parse::<Objective>() {
             Ok(objective) => {
