@@ -58,6 +58,9 @@ pub trait InstanceModel {
     /// The number of closed walks of `cover`.
     fn walks(cover: &Self::Cover) -> usize;
 
+    /// `cover` in the model's tour JSON (what `solve --tour-out` writes and `check` reads).
+    fn walk_json(cover: &Self::Cover) -> String;
+
     /// The model's independent checker on `cover`, with the value of `objective`; an error
     /// when the objective is not measured on this model or the numbers cannot be written.
     fn recount(
@@ -161,6 +164,10 @@ impl InstanceModel for Region {
 
     fn walks(cover: &CycleCover) -> usize {
         cover.cycles.len()
+    }
+
+    fn walk_json(cover: &CycleCover) -> String {
+        cover.to_json()
     }
 
     fn recount(
@@ -267,6 +274,10 @@ impl InstanceModel for Discrete {
 
     fn walks(cover: &DiscreteCover) -> usize {
         cover.cycles.len()
+    }
+
+    fn walk_json(cover: &DiscreteCover) -> String {
+        cover.to_json()
     }
 
     fn recount(&self, cover: &DiscreteCover, objective: Objective, _: &Options) -> Result<Recount> {
@@ -385,6 +396,10 @@ impl InstanceModel for Polygon {
 
     fn walks(cover: &crate::ortho::Tour) -> usize {
         cover.cycles.len()
+    }
+
+    fn walk_json(cover: &crate::ortho::Tour) -> String {
+        cover.to_json()
     }
 
     fn recount(

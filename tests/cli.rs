@@ -867,3 +867,122 @@ fn exact_starts_from_a_given_tour() {
     ]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// `claims --findings` saves a violating row's walk from the run folder (`RUN/walks/`), equal to
+/// the walk the run wrote, without running the algorithm again (its program is gone by then);
+/// a run folder without `walks/` (an older mowmill) or with a broken walk gets a note instead.
+#[test]
+fn claims_saves_findings_from_the_walks_the_run_kept() {
+    let dir = temp_dir("findings-walks");
+    // A private copy of the outside program, removed after the bench.
+    let program = dir.join("dfs_tour.py");
+    std::fs::copy(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/outside/dfs_tour.py"),
+        &program,
+    )
+    .unwrap();
+    // dfs_tour.py walks a DFS tree twice: length 2(N - 1) > N, so the claim of N is violated.
+    let config = format!(
+        "name = \"findings\"\nseed = 1\n\
+         [[algorithm]]\nname = \"dfs\"\n\
+         command = [\"python3\", \"{}\", \"{{instance}}\", \"{{tour_out}}\"]\n\
+         objectives = [\"length\"]\n\
+         guarantee = {{ objective = \"length\", factor = \"1\", against = \"n\" }}\n\
+         [[family]]\nfamily = \"random-simple\"\nn = 10\ncount = 2\nalgorithms = [\"dfs\"]\n",
+        program.display()
+    );
+    let cfg = dir.join("findings.toml");
+    std::fs::write(&cfg, config).unwrap();
+    let out = dir.join("run");
+    let o = mowmill(&[
+        "bench",
+        "--config",
+        cfg.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--jobs",
+        "1",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let instances: Vec<String> = std::fs::read_dir(out.join("walks"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(instances.len(), 2, "{instances:?}");
+    std::fs::remove_file(&program).unwrap();
+
+    let claims = |tag: &str| {
+        let findings = dir.join(tag);
+        let o = mowmill(&[
+            "claims",
+            "--from",
+            out.to_str().unwrap(),
+            "--out",
+            dir.join(format!("{tag}-table")).to_str().unwrap(),
+            "--findings",
+            findings.to_str().unwrap(),
+        ]);
+        // Exit 1: a claim is violated (not 2 or 3: nothing failed).
+        assert_eq!(
+            o.status.code(),
+            Some(1),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        findings
+    };
+    let findings = claims("with-walks");
+    for instance in &instances {
+        let run_walk = out
+            .join("walks")
+            .join(instance)
+            .join("dfs.length.tour.json");
+        let stem = format!("claim-of-dfs-dfs-{instance}");
+        let saved = std::fs::read(findings.join(format!("{stem}.tour.json")))
+            .unwrap_or_else(|e| panic!("{stem}.tour.json: {e}"));
+        assert_eq!(saved, std::fs::read(&run_walk).unwrap(), "{instance}");
+        let note = std::fs::read_to_string(findings.join(format!("{stem}.md"))).unwrap();
+        assert!(
+            note.contains(&format!(
+                "walk: as the run wrote it, walks/{instance}/dfs.length.tour.json"
+            )),
+            "{note}"
+        );
+        assert!(
+            note.contains("checked output: valid true, length 18,"),
+            "{note}"
+        );
+        assert!(findings.join(format!("{stem}.png")).exists());
+    }
+
+    // A broken walk file is data: a note, no panic.
+    let broken = out
+        .join("walks")
+        .join(&instances[0])
+        .join("dfs.length.tour.json");
+    std::fs::write(&broken, "{\"cycles\": [[[0, 0]").unwrap();
+    let findings = claims("broken-walk");
+    let note =
+        std::fs::read_to_string(findings.join(format!("claim-of-dfs-dfs-{}.md", instances[0])))
+            .unwrap();
+    assert!(note.contains("is unreadable"), "{note}");
+
+    // A run of an older mowmill kept no walks: the note says so, and nothing is run.
+    std::fs::remove_dir_all(out.join("walks")).unwrap();
+    let findings = claims("older-run");
+    for instance in &instances {
+        let stem = format!("claim-of-dfs-dfs-{instance}");
+        assert!(!findings.join(format!("{stem}.tour.json")).exists());
+        let note = std::fs::read_to_string(findings.join(format!("{stem}.md"))).unwrap();
+        assert!(note.contains("the run did not keep this walk"), "{note}");
+        assert!(
+            note.contains("mowmill solve --algo dfs --objective length"),
+            "{note}"
+        );
+    }
+}

@@ -272,7 +272,7 @@ fn tight_and_claims_commands_write_their_tables_and_gate_on_contradictions() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// A violated claim's instances are saved with the algorithm's tour, a figure and a note.
+/// A violated claim's instances are saved with the walk the run kept, a figure and a note.
 #[test]
 fn claims_save_the_findings_of_a_violation() {
     let dir = std::env::temp_dir().join(format!("mowmill-findings-{}", std::process::id()));
@@ -294,7 +294,22 @@ fn claims_save_the_findings_of_a_violation() {
         from.join("instances").join(&grid),
     )
     .unwrap();
+    let objective = r.objective.clone();
     mowmill::harness::rows::write_sorted(&from.join("results.csv"), &mut rows).unwrap();
+    // The walk the run kept for the row (claims saves it and runs no algorithm).
+    let walk = mowmill::harness::walks::path(&from, &instance, "milling25", &objective);
+    std::fs::create_dir_all(walk.parent().unwrap()).unwrap();
+    let o = mowmill(&[
+        "solve",
+        from.join("instances").join(&grid).to_str().unwrap(),
+        "--algo",
+        "milling25",
+        "--objective",
+        &objective,
+        "--tour-out",
+        walk.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let out = dir.join("claims");
     let o = mowmill(&[
         "claims",
@@ -311,6 +326,8 @@ fn claims_save_the_findings_of_a_violation() {
         let p = out.join("findings").join(format!("{stem}.{ext}"));
         assert!(p.exists(), "{} missing", p.display());
     }
+    let saved = std::fs::read(out.join("findings").join(format!("{stem}.tour.json"))).unwrap();
+    assert_eq!(saved, std::fs::read(&walk).unwrap());
     let note = std::fs::read_to_string(out.join("findings").join(format!("{stem}.md"))).unwrap();
     assert!(note.contains("implementation: reading"), "{note}");
     let _ = std::fs::remove_dir_all(&dir);

@@ -213,23 +213,6 @@ fn load_as_discrete(from: &Path, name: &str) -> Option<crate::discrete::Discrete
     Some(crate::discrete::Discrete::from_region(&inst.region))
 }
 
-/// The registered algorithm and the options of a row's algorithm column (a variant name such
-/// as `strips-matching[merge=naive,coverage4]` runs with its options, as the run did).
-fn rerun_of(
-    variant: &str,
-) -> Result<(
-    &'static crate::algorithms::Algorithm,
-    crate::algorithms::Options,
-)> {
-    let (name, options) = crate::evaluate::parse_variant(variant)?;
-    let a = crate::algorithms::find(name).ok_or_else(|| {
-        Error::invalid(format!(
-            "{name} is not a registered algorithm (an outside algorithm's walk is not kept)"
-        ))
-    })?;
-    Ok((a, options))
-}
-
 /// A claim's name in file names: lower-case letters and digits, anything else `-`.
 fn claim_slug(claim: &str) -> String {
     claim
@@ -244,93 +227,367 @@ fn claim_slug(claim: &str) -> String {
         .collect()
 }
 
-/// [`save_findings`] for a discrete instance: the instance file, the algorithm's walk of the
-/// objective (run again on the instance, recounted by the discrete checker), a note and, where
-/// the instance has coordinates, an SVG.
-fn save_discrete_finding(
-    c: &ClaimRow,
+/// The walk a run kept for a violating row ([`crate::harness::walks`]), as the note tells it.
+enum KeptWalk<C> {
+    /// Read from `path`.
+    Read { walk: C, path: std::path::PathBuf },
+    /// The run folder has no walk for the row: a run of an older mowmill.
+    Missing,
+    /// The file is there but does not parse: data, told in the note.
+    Unreadable(String),
+}
+
+/// The walk the run in `from` kept for the row (`instance`, `algo`, `objective`), read by the
+/// model's tour reader `read`.
+fn kept_walk<C>(
+    from: &Path,
+    instance: &str,
     algo: &str,
     objective: &str,
-    instance: &str,
-    src: &Path,
-    dir: &Path,
-) -> Result<Vec<std::path::PathBuf>> {
-    use crate::discrete::{check, draw};
-    let mut written = Vec::new();
-    let stem = format!("{}-{algo}-{instance}", claim_slug(&c.claim));
-    let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("dm");
-    let copy = dir.join(format!("{stem}.{ext}"));
-    std::fs::copy(src, &copy).map_err(|e| Error::io(&copy, e))?;
-    written.push(copy);
-    let inst = crate::discrete::generate::read(src)?;
-    let mut note = format!(
-        "# {} ({}) violated\n\nalgorithm: {algo}, objective: {objective}, instance: {instance}, n = {}\n\
-         claim: {} ({})\nimplementation: {}\n",
-        c.claim,
-        c.paper,
-        inst.len(),
-        c.factor,
-        c.statement,
-        c.implementation
-    );
-    let (run, options) = match rerun_of(algo) {
-        Ok((a, options)) => (a.discrete, options),
-        Err(e) => {
-            let _ = writeln!(note, "not re-run: {e}");
-            (None, crate::algorithms::Options::default())
+    read: impl FnOnce(&Path) -> Result<C>,
+) -> KeptWalk<C> {
+    let path = crate::harness::walks::path(from, instance, algo, objective);
+    if !path.exists() {
+        return KeptWalk::Missing;
+    }
+    match read(&path) {
+        Ok(walk) => KeptWalk::Read { walk, path },
+        Err(e) => KeptWalk::Unreadable(format!(
+            "the run's walk {} is unreadable: {e}",
+            path.display()
+        )),
+    }
+}
+
+/// The note's line for a row whose run kept no walk: how to see it (a `solve` of the row's
+/// variant), since claims never runs an algorithm.
+fn missing_walk_line(algo: &str, objective: &str, instance_file: &Path) -> String {
+    let (name, flags) = match crate::evaluate::parse_variant(algo) {
+        Ok((name, o)) => {
+            // The options the variant name carries: those that differ from the defaults.
+            let default = crate::algorithms::Options::default();
+            let mut flags = String::new();
+            if o.merge != default.merge {
+                let _ = write!(flags, " --merge {}", o.merge);
+            }
+            if o.cutter != default.cutter {
+                let _ = write!(flags, " --cutter {}", o.cutter);
+            }
+            if o.coverage4 {
+                flags.push_str(" --coverage4");
+            }
+            (name, flags)
         }
+        Err(_) => (algo, String::new()),
     };
-    if let Some(run) = run {
-        match run(&inst, &options) {
-            Ok(sol) => {
-                if let Some(out) = sol.outputs.iter().find(|o| o.objective.name() == objective) {
-                    let rep = check::check(&inst, &out.cover.cycles);
-                    let walk = dir.join(format!("{stem}.tour.json"));
-                    out.cover.write(&walk)?;
-                    written.push(walk);
-                    let _ = writeln!(
-                        note,
-                        "checked output: valid {}, length {}, turns {}, cycles {}, max coverage {}",
-                        rep.valid, rep.length, rep.turns, rep.cycles, rep.max_coverage
-                    );
-                    let svg = dir.join(format!("{stem}.svg"));
-                    let opts = crate::draw::DrawOptions {
-                        title: Some(format!("{}: {algo} on {instance}", c.claim)),
-                        caption: Some(draw::caption(&inst, Some(&out.cover.cycles))),
-                        ..crate::draw::DrawOptions::default()
-                    };
-                    match draw::draw(&inst, Some(&out.cover.cycles), &svg, &opts) {
-                        Ok(()) => written.push(svg),
-                        Err(e) => {
-                            let _ = writeln!(note, "not drawn: {e}");
-                        }
-                    }
-                }
+    format!(
+        "walk: the run did not keep this walk (a run of an older mowmill, from before `walks/`); \
+         re-run `mowmill solve --algo {name}{flags} --objective {objective} --tour-out WALK.tour.json {}` \
+         (an outside algorithm: `--command` with its config's command) to see it",
+        instance_file.display()
+    )
+}
+
+/// Copies the run's walk at `path` (in the run folder `from`) to `to`, and adds the note's line
+/// naming it (relative to the run folder, so that the note does not depend on where it lies).
+fn copy_walk(path: &Path, from: &Path, to: &Path, note: &mut String) -> Result<()> {
+    std::fs::copy(path, to).map_err(|e| Error::io(to, e))?;
+    let shown = path.strip_prefix(from).unwrap_or(path);
+    let _ = writeln!(note, "walk: as the run wrote it, {}", shown.display());
+    Ok(())
+}
+
+/// The note's line of a checker's recount of a saved walk.
+fn checked_line(
+    valid: bool,
+    length: &str,
+    turns: u64,
+    cycles: usize,
+    coverage: &str,
+    error: Option<&str>,
+) -> String {
+    let mut line = format!(
+        "checked output: valid {valid}, length {length}, turns {turns}, cycles {cycles}, max coverage {coverage}"
+    );
+    if let Some(e) = error.filter(|_| !valid) {
+        let _ = write!(line, " ({e})");
+    }
+    line
+}
+
+/// Draws a figure with `draw`, a panic or error becoming the note's "not drawn" line (a walk
+/// read from a file may not fit the instance).
+fn draw_figure(
+    path: std::path::PathBuf,
+    note: &mut String,
+    written: &mut Vec<std::path::PathBuf>,
+    draw: impl FnOnce(&Path) -> Result<()>,
+) {
+    match crate::evaluate::guarded(|| draw(&path)) {
+        Ok(()) => written.push(path),
+        Err(e) => {
+            let _ = writeln!(note, "not drawn: {e}");
+        }
+    }
+}
+
+/// The note's first lines, common to every model.
+fn note_head(c: &ClaimRow, algo: &str, objective: &str, instance: &str, size: &str) -> String {
+    format!(
+        "# {} ({}) violated\n\nalgorithm: {algo}, objective: {objective}, instance: {instance}, {size}\n\
+         claim: {} ({})\nimplementation: {}\n",
+        c.claim, c.paper, c.factor, c.statement, c.implementation
+    )
+}
+
+/// One violating row of a claim: its run folder `from`, its instance's name there and the
+/// instance file `src` (under `from/instances/`).
+struct Finding<'a> {
+    claim: &'a ClaimRow,
+    algo: &'a str,
+    objective: &'a str,
+    instance: &'a str,
+    from: &'a Path,
+    src: &'a Path,
+}
+
+impl Finding<'_> {
+    fn stem(&self) -> String {
+        format!(
+            "{}-{}-{}",
+            claim_slug(&self.claim.claim),
+            self.algo,
+            self.instance
+        )
+    }
+
+    /// Copies the instance file into `dir`.
+    fn copy_instance(&self, dir: &Path, default_ext: &str) -> Result<std::path::PathBuf> {
+        let ext = self
+            .src
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or(default_ext);
+        let copy = dir.join(format!("{}.{ext}", self.stem()));
+        std::fs::copy(self.src, &copy).map_err(|e| Error::io(&copy, e))?;
+        Ok(copy)
+    }
+
+    fn walk<C>(&self, read: impl FnOnce(&Path) -> Result<C>) -> KeptWalk<C> {
+        kept_walk(self.from, self.instance, self.algo, self.objective, read)
+    }
+
+    /// The note's line for a walk that is missing or unreadable (`None` when it was read).
+    fn walk_problem<C>(&self, walk: &KeptWalk<C>) -> Option<String> {
+        match walk {
+            KeptWalk::Read { .. } => None,
+            KeptWalk::Missing => Some(missing_walk_line(self.algo, self.objective, self.src)),
+            KeptWalk::Unreadable(why) => Some(format!("walk: {why}")),
+        }
+    }
+
+    fn title(&self) -> String {
+        format!("{}: {} on {}", self.claim.claim, self.algo, self.instance)
+    }
+}
+
+/// [`save_findings`] for a discrete instance: the instance file, the walk the run kept for the
+/// row (recounted by the discrete checker), a note and, where the instance has coordinates,
+/// an SVG.
+fn save_discrete_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
+    use crate::discrete::{check, draw, format::DiscreteCover};
+    let mut written = vec![f.copy_instance(dir, "dm")?];
+    let inst = crate::discrete::generate::read(f.src)?;
+    let mut note = note_head(
+        f.claim,
+        f.algo,
+        f.objective,
+        f.instance,
+        &format!("n = {}", inst.len()),
+    );
+    let walk = f.walk(DiscreteCover::read);
+    if let Some(line) = f.walk_problem(&walk) {
+        let _ = writeln!(note, "{line}");
+    }
+    if let KeptWalk::Read { walk, path } = walk {
+        let tour = dir.join(format!("{}.tour.json", f.stem()));
+        copy_walk(&path, f.from, &tour, &mut note)?;
+        written.push(tour);
+        let rep = check::check(&inst, &walk.cycles);
+        let _ = writeln!(
+            note,
+            "{}",
+            checked_line(
+                rep.valid,
+                &rep.length.to_string(),
+                rep.turns,
+                rep.cycles,
+                &rep.max_coverage.to_string(),
+                rep.error.as_deref()
+            )
+        );
+        let opts = crate::draw::DrawOptions {
+            title: Some(f.title()),
+            caption: Some(draw::caption(&inst, Some(&walk.cycles))),
+            ..crate::draw::DrawOptions::default()
+        };
+        draw_figure(
+            dir.join(format!("{}.svg", f.stem())),
+            &mut note,
+            &mut written,
+            |svg| draw::draw(&inst, Some(&walk.cycles), svg, &opts),
+        );
+    }
+    let md = dir.join(format!("{}.md", f.stem()));
+    std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
+    written.push(md);
+    Ok(written)
+}
+
+/// [`save_findings`] for an orthogonal polygon with arbitrary coordinates: the `.wkt` file, the
+/// walk the run kept (recounted by the exact polygon checker), a note and an SVG.
+fn save_ortho_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
+    use crate::ortho::{Polygon, Tour};
+    let mut written = vec![f.copy_instance(dir, "wkt")?];
+    let polygon = Polygon::read(f.src)?;
+    let mut note = note_head(
+        f.claim,
+        f.algo,
+        f.objective,
+        f.instance,
+        &format!(
+            "{} vertices",
+            polygon
+                .rings()
+                .iter()
+                .map(|r| r.corners.len())
+                .sum::<usize>()
+        ),
+    );
+    let walk = f.walk(Tour::read);
+    if let Some(line) = f.walk_problem(&walk) {
+        let _ = writeln!(note, "{line}");
+    }
+    if let KeptWalk::Read { walk, path } = walk {
+        let tour = dir.join(format!("{}.tour.json", f.stem()));
+        copy_walk(&path, f.from, &tour, &mut note)?;
+        written.push(tour);
+        match crate::ortho::check(&polygon, &walk) {
+            Ok(rep) => {
+                let _ = writeln!(
+                    note,
+                    "{}",
+                    checked_line(
+                        rep.valid,
+                        &rep.length.to_string(),
+                        rep.turns,
+                        rep.cycles,
+                        "-",
+                        rep.error.as_deref()
+                    )
+                );
+                let opts = crate::draw::DrawOptions {
+                    title: Some(f.title()),
+                    caption: Some(crate::ortho::figure_caption(&rep)),
+                    ..crate::draw::DrawOptions::default()
+                };
+                draw_figure(
+                    dir.join(format!("{}.svg", f.stem())),
+                    &mut note,
+                    &mut written,
+                    |svg| crate::ortho::draw(&polygon, Some(&walk), None, svg, &opts),
+                );
             }
             Err(e) => {
-                let _ = writeln!(note, "the algorithm failed on it: {e}");
+                let _ = writeln!(note, "not checked: {e}");
             }
         }
     }
-    let md = dir.join(format!("{stem}.md"));
+    let md = dir.join(format!("{}.md", f.stem()));
+    std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
+    written.push(md);
+    Ok(written)
+}
+
+/// [`save_findings`] for a grid instance (`.grid`, or a `.wkt` of integer coordinates read as
+/// pixels): the instance file, the walk the run kept (recounted by [`crate::checker`]), its
+/// figure (PNG; none for lawn tours) and a note.
+fn save_grid_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
+    use crate::algorithms::Objective;
+    let mut written = vec![f.copy_instance(dir, "grid")?];
+    let inst = crate::instance::Instance::read(f.src)?;
+    let mut note = note_head(
+        f.claim,
+        f.algo,
+        f.objective,
+        f.instance,
+        &format!("N = {}", inst.region.len()),
+    );
+    let walk = f.walk(crate::tour::CycleCover::read);
+    if let Some(line) = f.walk_problem(&walk) {
+        let _ = writeln!(note, "{line}");
+    }
+    if let KeptWalk::Read { walk, path } = walk {
+        let tour = dir.join(format!("{}.tour.json", f.stem()));
+        copy_walk(&path, f.from, &tour, &mut note)?;
+        written.push(tour);
+        match f.objective.parse::<Objective>() {
+            Ok(objective) => {
+                let rep = crate::checker::check(&inst.region, &walk, objective.mode());
+                let _ = writeln!(
+                    note,
+                    "{}",
+                    checked_line(
+                        rep.valid,
+                        &rep.length.to_string(),
+                        rep.turns,
+                        rep.cycles,
+                        &rep.max_coverage.to_string(),
+                        rep.error.as_deref()
+                    )
+                );
+                if objective != Objective::LawnLength {
+                    let opts = crate::draw::DrawOptions {
+                        title: Some(f.title()),
+                        caption: Some(format!(
+                            "N = {}, length {}, turns {}",
+                            inst.region.len(),
+                            rep.length,
+                            rep.turns
+                        )),
+                        ..crate::draw::DrawOptions::default()
+                    };
+                    draw_figure(
+                        dir.join(format!("{}.png", f.stem())),
+                        &mut note,
+                        &mut written,
+                        |png| crate::draw::draw(&inst.region, Some(&walk), png, &opts),
+                    );
+                }
+            }
+            Err(e) => {
+                let _ = writeln!(note, "not checked: objective {}: {e}", f.objective);
+            }
+        }
+    }
+    let md = dir.join(format!("{}.md", f.stem()));
     std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
     written.push(md);
     Ok(written)
 }
 
 /// Saves the violating instances of every violated claim into `dir`: for each (at most
-/// [`FINDINGS_LISTED`] per claim) the instance file copied from `from/instances/`, the
-/// algorithm's output re-run on it with the row's variant options (algorithms are deterministic)
-/// as tour JSON (a note says why where it cannot be re-run), its figure
-/// (PNG) and a note naming the claim, the values and whether the violating algorithm is the
-/// paper's or our reading. Returns the files written.
+/// [`FINDINGS_LISTED`] per claim) the instance file copied from `from/instances/`, the walk the
+/// run kept for the row in `from/walks/` ([`crate::harness::walks`]) as tour JSON, recounted by
+/// the model's checker, its figure and a note naming the claim, the values and whether the
+/// violating algorithm is the paper's or our reading. No algorithm is run: where the run kept no
+/// walk (a run of an older mowmill) or the file does not parse, the note says so. Returns the
+/// files written.
 pub fn save_findings(
     table: &[ClaimRow],
     sources: &Sources,
     dir: &Path,
 ) -> Result<Vec<std::path::PathBuf>> {
-    use crate::algorithms::Objective;
-    use crate::checker;
     let mut written = Vec::new();
     for c in table.iter().filter(|c| is_violated(c)) {
         let mut seen = BTreeSet::new();
@@ -342,17 +599,7 @@ pub fn save_findings(
             let Some((from, instance)) = sources.locate(instance) else {
                 continue;
             };
-            if let Some(src) = ["dm", "vox", "hex"]
-                .iter()
-                .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
-                .find(|p| p.exists())
-            {
-                written.extend(save_discrete_finding(
-                    c, algo, objective, instance, &src, dir,
-                )?);
-                continue;
-            }
-            let Some(src) = ["grid", "wkt"]
+            let Some(src) = ["dm", "json", "vox", "hex", "grid", "wkt"]
                 .iter()
                 .map(|ext| from.join("instances").join(format!("{instance}.{ext}")))
                 .find(|p| p.exists())
@@ -365,69 +612,23 @@ pub fn save_findings(
                 );
                 continue;
             };
-            let stem = format!("{}-{algo}-{instance}", claim_slug(&c.claim));
-            let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("grid");
-            let copy = dir.join(format!("{stem}.{ext}"));
-            std::fs::copy(&src, &copy).map_err(|e| Error::io(&copy, e))?;
-            written.push(copy);
-            let inst = crate::instance::Instance::read(&src)?;
-            let mut note = format!(
-                "# {} ({}) violated\n\nalgorithm: {algo}, objective: {objective}, instance: {instance}, N = {}\n\
-                 claim: {} ({})\nimplementation: {}\n",
-                c.claim,
-                c.paper,
-                inst.region.len(),
-                c.factor,
-                c.statement,
-                c.implementation
-            );
-            let (a, options) = match rerun_of(algo) {
-                Ok(found) => found,
-                Err(e) => {
-                    let _ = writeln!(note, "not re-run: {e}");
-                    let path = dir.join(format!("{stem}.md"));
-                    std::fs::write(&path, note).map_err(|e| Error::io(&path, e))?;
-                    written.push(path);
-                    continue;
-                }
+            let finding = Finding {
+                claim: c,
+                algo,
+                objective,
+                instance,
+                from,
+                src: &src,
             };
-            match (a.run)(&inst.region, &options) {
-                Ok(sol) => {
-                    if let Some(out) = sol.outputs.iter().find(|o| o.objective.name() == objective)
-                    {
-                        let rep = checker::check(&inst.region, &out.cover, out.objective.mode());
-                        let tour = dir.join(format!("{stem}.tour.json"));
-                        out.cover.write(&tour)?;
-                        written.push(tour);
-                        let _ = writeln!(
-                            note,
-                            "checked output: valid {}, length {}, turns {}, cycles {}, max coverage {}",
-                            rep.valid, rep.length, rep.turns, rep.cycles, rep.max_coverage
-                        );
-                        if out.objective != Objective::LawnLength {
-                            let png = dir.join(format!("{stem}.png"));
-                            let opts = crate::draw::DrawOptions {
-                                title: Some(format!("{}: {algo} on {instance}", c.claim)),
-                                caption: Some(format!(
-                                    "N = {}, length {}, turns {}",
-                                    inst.region.len(),
-                                    rep.length,
-                                    rep.turns
-                                )),
-                                ..crate::draw::DrawOptions::default()
-                            };
-                            crate::draw::draw(&inst.region, Some(&out.cover), &png, &opts)?;
-                            written.push(png);
-                        }
-                    }
-                }
-                Err(e) => {
-                    let _ = writeln!(note, "re-run failed: {e}");
-                }
-            }
-            let path = dir.join(format!("{stem}.md"));
-            std::fs::write(&path, note).map_err(|e| Error::io(&path, e))?;
-            written.push(path);
+            let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("");
+            // The runner's own test of a model (`harness::run::load`).
+            written.extend(if crate::discrete::generate::EXTENSIONS.contains(&ext) {
+                save_discrete_finding(&finding, dir)?
+            } else if crate::ortho::Polygon::is_ortho_file(&src) {
+                save_ortho_finding(&finding, dir)?
+            } else {
+                save_grid_finding(&finding, dir)?
+            });
         }
     }
     Ok(written)

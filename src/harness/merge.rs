@@ -7,6 +7,7 @@
 //! `results.csv` ends on a complete line and holds the number of rows its manifest recorded.
 //! Then the rows themselves: each shard must hold exactly the rows its shard index of the
 //! recorded config prescribes (instances, sha256, algorithms, objectives, options).
+//! The merged run carries the shards' `instances/` and kept `walks/` ([`super::walks`]).
 //! Otherwise the merge is refused with the list of what is wrong or missing. The output folder
 //! must be new (or empty) and not one of the shards.
 
@@ -331,6 +332,8 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<usize> {
                 std::fs::copy(e.path(), &to).map_err(|err| Error::io(&to, err))?;
             }
         }
+        // The shards' kept walks (disjoint instances: a file two shards hold must agree).
+        super::walks::merge_into(dir, out)?;
     }
     let mut rows: Vec<Row> = rows.into_values().collect();
     let n = rows.len();

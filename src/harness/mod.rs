@@ -5,7 +5,7 @@
 //! appends [`rows`] to `results.csv`; [`stats`] aggregates the rows into `stats.csv`; [`plots`]
 //! draws them; [`gate`] compares a run with a committed baseline; [`sample`] draws and re-runs
 //! a committed sample of a run's rows; [`merge`] joins shards;
-//! [`lock`] keeps two runs out of one output directory.
+//! [`walks`] keeps the checked walks the claims table could find violated; [`lock`] keeps two runs out of one output directory.
 
 pub mod config;
 pub mod gate;
@@ -19,6 +19,7 @@ pub mod run;
 pub mod sample;
 pub mod stats;
 pub mod summary;
+pub mod walks;
 
 /// The built-in default suite: every registered algorithm and every exact objective on small
 /// cases (`experiments/default.toml`).

@@ -10,6 +10,7 @@
 use super::config::{Config, ExactSpec, InstanceSpec, Source};
 use super::manifest::{ConfigRecord, Finished, Recorded};
 use super::rows::{EXACT, Row, RowWriter, read_rows, write_sorted};
+use super::walks::Kept;
 use crate::algorithms::{self, Model, Objective};
 use crate::discrete::Discrete;
 use crate::error::{Error, Result};
@@ -140,14 +141,19 @@ pub fn run_recorded(
     let failure: Mutex<Option<Error>> = Mutex::new(None);
     pool.install(|| {
         instances.par_iter().for_each(|spec| {
-            let mut rows = run_instance(spec, config, opts, &done);
+            let Produced { mut rows, walks } = run_instance(spec, config, opts, &done);
             // A row below its own proven bound, or whose value is not its own count, is an
             // invalid result (never an improvement): the check `claims` and `gate` share.
             for r in &mut rows {
                 r.mark_inconsistent();
             }
             let errors = rows.iter().filter(|r| !r.error.is_empty()).count();
-            if !rows.is_empty() {
+            // The walks before their rows: a row in results.csv that needs its walk has it (a
+            // run killed in between leaves walks whose rows the resume writes again).
+            let kept = super::walks::write(out, &spec.name, &walks);
+            if let Err(e) = kept {
+                failure.lock().expect("failure lock").get_or_insert(e);
+            } else if !rows.is_empty() {
                 let mut w = writer.lock().expect("writer lock");
                 if let Err(e) = w.append(&rows) {
                     failure.lock().expect("failure lock").get_or_insert(e);
@@ -377,6 +383,22 @@ fn upgrade_header(results: &Path) -> Result<()> {
     Ok(())
 }
 
+/// The rows of one instance and the checked walks of those the claims table could find
+/// violated ([`super::walks::claims_may_violate`]), which the run keeps in `walks/`.
+pub(crate) struct Produced {
+    pub rows: Vec<Row>,
+    pub walks: Vec<Kept>,
+}
+
+impl Produced {
+    fn rows(rows: Vec<Row>) -> Produced {
+        Produced {
+            rows,
+            walks: Vec::new(),
+        }
+    }
+}
+
 /// Runs every exact objective and algorithm of one instance; never fails: problems become
 /// error rows.
 fn run_instance(
@@ -384,9 +406,9 @@ fn run_instance(
     config: &Config,
     opts: &RunOptions,
     done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
-    let mut rows = run_instance_unmarked(spec, config, opts, done);
-    for r in &mut rows {
+) -> Produced {
+    let mut produced = run_instance_unmarked(spec, config, opts, done);
+    for r in &mut produced.rows {
         if !r.error.is_empty()
             && !r.error.starts_with(super::rows::MACHINE_ERROR)
             && super::rows::machine_caused(&r.error)
@@ -394,7 +416,7 @@ fn run_instance(
             r.error = format!("{}{}", super::rows::MACHINE_ERROR, r.error);
         }
     }
-    rows
+    produced
 }
 
 /// [`run_instance`] before errors the machine caused are marked.
@@ -403,7 +425,7 @@ fn run_instance_unmarked(
     config: &Config,
     opts: &RunOptions,
     done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
+) -> Produced {
     let base = Row {
         run_id: opts.run_id.clone(),
         instance: spec.name.clone(),
@@ -418,14 +440,14 @@ fn run_instance_unmarked(
     };
     let key = (spec.name.clone(), "instance".to_string(), "-".to_string());
     if done.contains_key(&key) {
-        return Vec::new();
+        return Produced::rows(Vec::new());
     }
-    vec![Row {
+    Produced::rows(vec![Row {
         algorithm: "instance".into(),
         objective: "-".into(),
         error: error.to_string(),
         ..base
-    }]
+    }])
 }
 
 /// The rows of one loaded instance (`sha` the sha256 of its file, `base` the row's instance
@@ -439,7 +461,7 @@ pub(crate) fn run_loaded(
     spec: &InstanceSpec,
     config: &Config,
     done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
+) -> Produced {
     match loaded {
         Loaded::Grid(region) => {
             let mut b = base;
@@ -711,15 +733,17 @@ fn plan<'a, M: InstanceModel>(
 
 /// The rows of one instance of any model: the config's exact objectives that apply (by the
 /// model's exact solver, or their earlier results when resuming: the algorithms divide by
-/// them), then every planned algorithm variant ([`plan`]), rows already in `done` skipped.
+/// them), then every planned algorithm variant ([`plan`]), rows already in `done` skipped;
+/// with the walks of the rows the claims table could find violated.
 fn run_on<M: InstanceModel>(
     instance: &M,
     base: Row,
     spec: &InstanceSpec,
     config: &Config,
     done: &HashMap<(String, String, String), Row>,
-) -> Vec<Row> {
+) -> Produced {
     let mut rows = Vec::new();
+    let mut walks = Vec::new();
     let reference = exact_rows(&mut rows, spec, config, done, |e| {
         exact_applies(instance, e).then(|| exact_row(instance, &base, e, &exact_objective_name(e)))
     });
@@ -757,17 +781,23 @@ fn run_on<M: InstanceModel>(
                     continue;
                 }
                 let eval = evaluate::evaluate(subject, instance, &options, &pending, &reference);
-                rows.extend(algorithm_rows(
-                    instance.model(),
-                    &base,
-                    subject,
-                    &name,
-                    &eval,
-                ));
+                let model = instance.model();
+                let produced = algorithm_rows(model, &base, subject, &name, &eval);
+                for (row, checked) in produced.iter().zip(&eval.outputs) {
+                    let theorems = subject.theorems_on(checked.objective, model);
+                    if super::walks::claims_may_violate(row, &theorems) {
+                        walks.push(Kept {
+                            algorithm: row.algorithm.clone(),
+                            objective: row.objective.clone(),
+                            json: M::walk_json(&checked.cover),
+                        });
+                    }
+                }
+                rows.extend(produced);
             }
         }
     }
-    rows
+    Produced { rows, walks }
 }
 
 /// Whether the `[[exact]]` objective `e` applies to `instance`: its model solves it exactly
@@ -861,8 +891,8 @@ fn exact_row<M: InstanceModel>(instance: &M, base: &Row, e: &ExactSpec, name: &s
     row
 }
 
-/// One row per objective of an evaluation (an error row for each objective it did not
-/// produce).
+/// One row per objective of an evaluation, in the order of its outputs (then an error row for
+/// each objective it did not produce).
 fn algorithm_rows<C>(
     model: Model<'_>,
     base: &Row,

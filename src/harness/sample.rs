@@ -685,7 +685,7 @@ pub fn check(dir: &Path, jobs: Option<usize>) -> Result<CheckReport> {
                     &job.config,
                     &HashMap::new(),
                 );
-                compare(job.run, &job.rows, &produced)
+                compare(job.run, &job.rows, &produced.rows)
             })
             .collect()
     });
