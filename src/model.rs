@@ -6,14 +6,17 @@
 //! benchmark runner are written once over the trait.
 
 use crate::algorithms::{Algorithm, Model, Objective, Options, Solution};
+use crate::checker::Mode;
 use crate::discrete::Discrete;
 use crate::discrete::format::DiscreteCover;
+use crate::draw::DrawOptions;
 use crate::error::{Error, Result};
 use crate::evaluate::{self, Subject};
 use crate::exact;
 use crate::ortho::{Polygon, Rational};
 use crate::region::Region;
 use crate::tour::CycleCover;
+use std::path::Path;
 
 /// One checker's recount of an output, in the shape common to every model.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -111,6 +114,91 @@ pub trait InstanceModel {
 
     /// Solves `objective` exactly with one solver thread within `time_limit` seconds.
     fn solve_exact(&self, objective: exact::Objective, time_limit: f64) -> Result<ExactOutcome>;
+
+    /// The extension of a finding's figure ([`InstanceModel::draw`] writes either; grids keep
+    /// PNG, the vector models SVG).
+    const FIGURE: &'static str;
+
+    /// Reads an instance file of this model (an error names the file and what was expected).
+    fn read(path: &Path) -> Result<Self>
+    where
+        Self: Sized;
+
+    /// Reads a walk file in the model's tour JSON ([`InstanceModel::walk_json`] writes it).
+    fn read_walk(path: &Path) -> Result<Self::Cover>;
+
+    /// The instance's size as notes say it: `N = 12` pixels, `n = 7` vertices, `12 corners`.
+    fn size(&self) -> String;
+
+    /// What `mowmill info` prints: the model's facts about the instance, as one JSON object.
+    fn info(&self) -> Result<serde_json::Value>;
+
+    /// The model's checker on `cover` as `validate` prints it (`mode` says milling or lawn
+    /// where the model has both).
+    fn validation(&self, cover: &Self::Cover, mode: Mode) -> Result<Validation>;
+
+    /// Draws the instance and, when given, `cover` into `out` (SVG or PNG by its extension),
+    /// titled `title`, the caption carrying the checker's counts.
+    fn draw(&self, cover: Option<&Self::Cover>, out: &Path, title: String) -> Result<()>;
+}
+
+/// Which model an instance file holds, by its name and, for `.wkt`, its coordinates: the one
+/// place that every command, the benchmark runner and the claims table ask.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A grid region: `.grid`, WKT with integral coordinates, `.poly`, a `.gg`/`.csv` pixel
+    /// list.
+    Grid,
+    /// A discrete instance: `.dm`, `.json`, `.vox`, `.hex`.
+    Discrete,
+    /// A `.wkt` polygon with a coordinate that is not an integer.
+    Ortho,
+}
+
+impl Kind {
+    /// The model of the instance file `path`.
+    pub fn of(path: &Path) -> Kind {
+        if crate::discrete::generate::is_discrete(path) {
+            Kind::Discrete
+        } else if Polygon::is_ortho_file(path) {
+            Kind::Ortho
+        } else {
+            Kind::Grid
+        }
+    }
+}
+
+/// A checker's verdict as `validate` prints it.
+#[derive(Clone, Debug)]
+pub struct Validation {
+    pub valid: bool,
+    /// The model's whole report (`validate --json`).
+    pub json: serde_json::Value,
+    /// One line: `valid: length L, turns T, ...` or `invalid: why`.
+    pub line: String,
+}
+
+/// The line `validate` prints for a count of length, turns, cycles and coverage.
+fn validation_line(
+    valid: bool,
+    length: impl std::fmt::Display,
+    turns: u64,
+    cycles: usize,
+    coverage: Option<u32>,
+    error: Option<&str>,
+) -> String {
+    let coverage = coverage.map_or(String::new(), |c| format!(", max coverage {c}"));
+    if valid {
+        format!("valid: length {length}, turns {turns}, {cycles} cycle(s){coverage}")
+    } else {
+        format!("invalid: {}", error.unwrap_or("?"))
+    }
+}
+
+/// Reads an orthogonal polygon and refuses it (naming where) when no tour of the unit square
+/// cutter mills it.
+fn feasible(polygon: &Polygon) -> Result<crate::ortho::Erosion> {
+    crate::ortho::feasibility(polygon).map_err(|why| Error::invalid(why.to_string()))
 }
 
 /// An exact solve's outcome, in the shape common to every model.
@@ -241,6 +329,64 @@ impl InstanceModel for Region {
             message: res.message,
         })
     }
+
+    const FIGURE: &'static str = "png";
+
+    fn read(path: &Path) -> Result<Region> {
+        Ok(crate::instance::Instance::read(path)?.region)
+    }
+
+    fn read_walk(path: &Path) -> Result<CycleCover> {
+        CycleCover::read(path)
+    }
+
+    fn size(&self) -> String {
+        format!("N = {}", self.len())
+    }
+
+    fn info(&self) -> Result<serde_json::Value> {
+        let mut v = serde_json::to_value(crate::topology::summary(self))
+            .map_err(|e| Error::invalid(format!("the summary: {e}")))?;
+        // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
+        v["strip_cover"] = crate::strip_cover::min_strip_cover_size(self).into();
+        Ok(v)
+    }
+
+    fn validation(&self, cover: &CycleCover, mode: Mode) -> Result<Validation> {
+        let r = crate::checker::check(self, cover, mode);
+        Ok(Validation {
+            valid: r.valid,
+            json: to_json(&r)?,
+            line: validation_line(
+                r.valid,
+                r.length,
+                r.turns,
+                r.cycles,
+                Some(r.max_coverage),
+                r.error.as_deref(),
+            ),
+        })
+    }
+
+    fn draw(&self, cover: Option<&CycleCover>, out: &Path, title: String) -> Result<()> {
+        let mut caption = self.size();
+        if let Some(c) = cover {
+            let r = crate::checker::check(self, c, Mode::Milling);
+            caption += &format!(
+                ", length {}, turns {}, {} cycle(s)",
+                r.length, r.turns, r.cycles
+            );
+            if !r.valid {
+                caption += " (not a valid milling cover)";
+            }
+        }
+        let opts = DrawOptions {
+            title: Some(title),
+            caption: Some(caption),
+            ..DrawOptions::default()
+        };
+        crate::draw::draw(self, cover, out, &opts)
+    }
 }
 
 impl InstanceModel for Discrete {
@@ -342,6 +488,63 @@ impl InstanceModel for Discrete {
             max_coverage: res.max_coverage.map(u64::from),
             message: res.message,
         })
+    }
+
+    const FIGURE: &'static str = "svg";
+
+    fn read(path: &Path) -> Result<Discrete> {
+        crate::discrete::generate::read(path)
+    }
+
+    fn read_walk(path: &Path) -> Result<DiscreteCover> {
+        DiscreteCover::read(path)
+    }
+
+    fn size(&self) -> String {
+        format!("n = {}", self.len())
+    }
+
+    fn info(&self) -> Result<serde_json::Value> {
+        let p = self.params();
+        let rooks = crate::discrete::exact::rook_placement(self, Some(10.0));
+        Ok(serde_json::json!({
+            "model": "discrete",
+            "n": self.len(),
+            "edges": self.edge_count(),
+            "components": self.components(),
+            "delta": p.delta,
+            "mu": p.mu,
+            "rho": p.rho,
+            "d": p.d,
+            "rook_placement": rooks.size,
+            "rook_placement_exact": rooks.exact,
+        }))
+    }
+
+    fn validation(&self, cover: &DiscreteCover, _: Mode) -> Result<Validation> {
+        let r = crate::discrete::check::check(self, &cover.cycles);
+        Ok(Validation {
+            valid: r.valid,
+            json: to_json(&r)?,
+            line: validation_line(
+                r.valid,
+                r.length,
+                r.turns,
+                r.cycles,
+                Some(r.max_coverage),
+                r.error.as_deref(),
+            ),
+        })
+    }
+
+    fn draw(&self, cover: Option<&DiscreteCover>, out: &Path, title: String) -> Result<()> {
+        let walks = cover.map(|c| c.cycles.as_slice());
+        let opts = DrawOptions {
+            title: Some(title),
+            caption: Some(crate::discrete::draw::caption(self, walks)),
+            ..DrawOptions::default()
+        };
+        crate::discrete::draw::draw(self, walks, out, &opts)
     }
 }
 
@@ -485,4 +688,70 @@ impl InstanceModel for Polygon {
             "no exact solver for orthogonal polygons with arbitrary coordinates",
         ))
     }
+
+    const FIGURE: &'static str = "svg";
+
+    fn read(path: &Path) -> Result<Polygon> {
+        Polygon::read(path)
+    }
+
+    fn read_walk(path: &Path) -> Result<crate::ortho::Tour> {
+        crate::ortho::Tour::read(path)
+    }
+
+    fn size(&self) -> String {
+        let corners: usize = self.rings().iter().map(|r| r.corners.len()).sum();
+        format!("{corners} vertices")
+    }
+
+    fn info(&self) -> Result<serde_json::Value> {
+        let erosion = feasible(self)?;
+        let contour = crate::ortho::check(self, &erosion.contour_tour())?;
+        let pixels = crate::ortho::interior_pixels(self)?;
+        Ok(serde_json::json!({
+            "model": "ortho",
+            "rings": self.rings().len(),
+            "holes": self.rings().iter().filter(|r| r.hole).count(),
+            "corners": self.rings().iter().map(|r| r.corners.len()).sum::<usize>(),
+            "feasible": true,
+            "erosion_pieces": erosion.pieces(),
+            "contour_walks": erosion.contour().len(),
+            "contour_length": contour.length.to_string(),
+            "contour_mills_polygon": contour.valid,
+            "interior_pixels": pixels.len(),
+        }))
+    }
+
+    fn validation(&self, cover: &crate::ortho::Tour, _: Mode) -> Result<Validation> {
+        feasible(self)?;
+        let r = crate::ortho::check(self, cover)?;
+        Ok(Validation {
+            valid: r.valid,
+            json: to_json(&r)?,
+            line: validation_line(
+                r.valid,
+                r.length,
+                r.turns,
+                r.cycles,
+                None,
+                r.error.as_deref(),
+            ),
+        })
+    }
+
+    fn draw(&self, cover: Option<&crate::ortho::Tour>, out: &Path, title: String) -> Result<()> {
+        // The contour δB is drawn where the polygon is feasible; the caption is the exact
+        // checker's verdict on the tour.
+        let erosion = crate::ortho::feasibility(self).ok();
+        let opts = DrawOptions {
+            title: Some(title),
+            ..DrawOptions::default()
+        };
+        crate::ortho::draw(self, cover, erosion.as_ref(), out, &opts)
+    }
+}
+
+/// A report as a JSON value.
+fn to_json(report: &impl serde::Serialize) -> Result<serde_json::Value> {
+    serde_json::to_value(report).map_err(|e| Error::invalid(format!("the report: {e}")))
 }

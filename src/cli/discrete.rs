@@ -7,7 +7,6 @@
 use anyhow::Result;
 use mowmill::algorithms::{self, Objective, Options};
 use mowmill::discrete::Discrete;
-use mowmill::discrete::check;
 use mowmill::discrete::exact::{self as dexact, DiscreteOptions};
 use mowmill::discrete::format::{self, DiscreteCover};
 use mowmill::discrete::generate::{self as dgen, PlaneParams};
@@ -20,47 +19,6 @@ use std::path::Path;
 use std::process::ExitCode;
 
 pub use mowmill::discrete::generate::{FAMILIES, is_discrete, read};
-
-/// The instance's size and Table 1's parameters, with a rook placement (Lemma 4.3).
-pub fn info(path: &Path, as_json: bool) -> Result<ExitCode> {
-    let inst = read(path)?;
-    let p = inst.params();
-    let rooks = dexact::rook_placement(&inst, Some(10.0));
-    let v = json!({
-        "model": "discrete",
-        "n": inst.len(),
-        "edges": inst.edge_count(),
-        "components": inst.components(),
-        "delta": p.delta,
-        "mu": p.mu,
-        "rho": p.rho,
-        "d": p.d,
-        "rook_placement": rooks.size,
-        "rook_placement_exact": rooks.exact,
-    });
-    print_object(&v, as_json)?;
-    Ok(ExitCode::SUCCESS)
-}
-
-fn print_object(v: &serde_json::Value, as_json: bool) -> Result<()> {
-    if as_json {
-        println!("{}", serde_json::to_string_pretty(v)?);
-    } else if let Some(map) = v.as_object() {
-        for (k, val) in map {
-            println!("{k:<22} {val}");
-        }
-    }
-    Ok(())
-}
-
-/// `validate` on a discrete instance: the walk file `{"model": "discrete", "cycles": ...}`
-/// through the discrete checker (exit 1 if invalid).
-pub fn validate(path: &Path, tour: &Path, as_json: bool) -> Result<ExitCode> {
-    let inst = read(path)?;
-    let cover = DiscreteCover::read(tour)?;
-    let report = check::check(&inst, &cover.cycles);
-    super::print_validation(&report, &super::Checked::from(&report), as_json)
-}
 
 /// `exact` on a discrete instance (the passage model of [`dexact`]).
 pub fn exact(
@@ -383,27 +341,5 @@ fn write_generated(inst: &Discrete, family: &str, out: &Path) -> Result<ExitCode
         inst.len(),
         inst.edge_count()
     );
-    Ok(ExitCode::SUCCESS)
-}
-
-/// `draw` on a discrete instance: its cells (or its graph) and, with `--tour`, the walk file's
-/// walks, to SVG or PNG; one panel per z-layer for voxels. The caption carries the checker's
-/// counts, as for grid regions.
-pub fn draw(
-    path: &Path,
-    tour: Option<&Path>,
-    out: &Path,
-    title: Option<String>,
-) -> Result<ExitCode> {
-    let inst = read(path)?;
-    let cover = tour.map(DiscreteCover::read).transpose()?;
-    let walks = cover.as_ref().map(|c| c.cycles.as_slice());
-    let opts = mowmill::draw::DrawOptions {
-        title: Some(super::title_or_stem(path, title)),
-        caption: Some(mowmill::discrete::draw::caption(&inst, walks)),
-        ..mowmill::draw::DrawOptions::default()
-    };
-    mowmill::discrete::draw::draw(&inst, walks, out, &opts)?;
-    eprintln!("wrote {}", out.display());
     Ok(ExitCode::SUCCESS)
 }

@@ -15,54 +15,91 @@ pub mod tight;
 
 use anyhow::Context;
 use clap::builder::{PossibleValue, PossibleValuesParser};
-use mowmill::checker::{self, Mode};
-use mowmill::draw::DrawOptions;
-use mowmill::instance::Instance;
-use mowmill::tour::CycleCover;
+use mowmill::checker::Mode;
+use mowmill::discrete::Discrete;
+use mowmill::model::InstanceModel;
+use mowmill::ortho::Polygon;
+use mowmill::region::Region;
 use std::path::Path;
 use std::process::ExitCode;
 
-/// The model of an instance file. The one place the command line decides it: every command
-/// that reads an instance dispatches on it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FileKind {
-    /// A grid region: `.grid`, WKT with integral coordinates, `.poly`, a `.gg`/`.csv` pixel list.
-    Grid,
-    /// A discrete instance ([`discrete::is_discrete`]: by its extension).
-    Discrete,
-    /// An orthogonal polygon with a non-integral coordinate ([`ortho::is_ortho`]).
-    Ortho,
+/// The model of an instance file ([`mowmill::model::Kind::of`], the one place that decides it).
+pub use mowmill::model::Kind as FileKind;
+
+/// A command over an instance file of any model, written once over [`InstanceModel`].
+trait OnModel {
+    fn run<M: InstanceModel>(self, file: &Path) -> anyhow::Result<ExitCode>;
 }
 
-impl FileKind {
-    /// The model of the instance file `path`.
-    pub fn of(path: &Path) -> FileKind {
-        if discrete::is_discrete(path) {
-            FileKind::Discrete
-        } else if ortho::is_ortho(path) {
-            FileKind::Ortho
-        } else {
-            FileKind::Grid
-        }
+/// Runs `command` on the model of `file`: the one dispatch of the commands that read an
+/// instance and nothing model-specific besides.
+fn on_model(file: &Path, command: impl OnModel) -> anyhow::Result<ExitCode> {
+    match FileKind::of(file) {
+        FileKind::Grid => command.run::<Region>(file),
+        FileKind::Discrete => command.run::<Discrete>(file),
+        FileKind::Ortho => command.run::<Polygon>(file),
     }
+}
+
+/// An error of the model about the instance in `file`, naming the file.
+fn about(file: &Path, e: mowmill::Error) -> anyhow::Error {
+    mowmill::Error::invalid(format!("{}: {e}", file.display())).into()
 }
 
 /// `info`: the instance's summary, for its model.
 pub fn info(file: &Path, json: bool) -> anyhow::Result<ExitCode> {
-    match FileKind::of(file) {
-        FileKind::Discrete => discrete::info(file, json),
-        FileKind::Ortho => ortho::info(file, json),
-        FileKind::Grid => grid_info(file, json),
+    struct Info(bool);
+    impl OnModel for Info {
+        fn run<M: InstanceModel>(self, file: &Path) -> anyhow::Result<ExitCode> {
+            let v = M::read(file)?.info().map_err(|e| about(file, e))?;
+            if self.0 {
+                println!("{}", serde_json::to_string_pretty(&v)?);
+            } else {
+                for (k, val) in v.as_object().context("a summary is an object")? {
+                    println!("{k:<22} {val}");
+                }
+            }
+            Ok(ExitCode::SUCCESS)
+        }
     }
+    on_model(file, Info(json))
 }
 
-/// `validate`: the model's checker on a tour file (`mode` applies to grid regions).
+/// `validate`: the model's checker on a tour file (`mode` applies to grid regions, the only
+/// model with lawn tours: `--mode lawn` elsewhere is refused). Exit 1 when invalid.
 pub fn validate(file: &Path, tour: &Path, mode: Mode, json: bool) -> anyhow::Result<ExitCode> {
-    match FileKind::of(file) {
-        FileKind::Discrete => discrete::validate(file, tour, json),
-        FileKind::Ortho => ortho::validate(file, tour, json),
-        FileKind::Grid => grid_validate(file, tour, mode, json),
+    struct Validate<'a> {
+        tour: &'a Path,
+        mode: Mode,
+        json: bool,
     }
+    impl OnModel for Validate<'_> {
+        fn run<M: InstanceModel>(self, file: &Path) -> anyhow::Result<ExitCode> {
+            let inst = M::read(file)?;
+            let cover = M::read_walk(self.tour)?;
+            let v = inst
+                .validation(&cover, self.mode)
+                .map_err(|e| about(file, e))?;
+            if self.json {
+                println!("{}", serde_json::to_string_pretty(&v.json)?);
+            } else {
+                println!("{}", v.line);
+            }
+            Ok(if v.valid {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            })
+        }
+    }
+    if mode == Mode::Lawn && FileKind::of(file) != FileKind::Grid {
+        anyhow::bail!(mowmill::Error::invalid(format!(
+            "--mode lawn applies to grid regions only, not to {} ({:?} model)",
+            file.display(),
+            FileKind::of(file)
+        )));
+    }
+    on_model(file, Validate { tour, mode, json })
 }
 
 /// `draw`: the instance and optionally a tour, as SVG or PNG, for its model.
@@ -72,65 +109,21 @@ pub fn draw(
     out: &Path,
     title: Option<String>,
 ) -> anyhow::Result<ExitCode> {
-    match FileKind::of(file) {
-        FileKind::Discrete => discrete::draw(file, tour, out, title),
-        FileKind::Ortho => ortho::draw(file, tour, out, title),
-        FileKind::Grid => grid_draw(file, tour, out, title),
+    struct Draw<'a> {
+        tour: Option<&'a Path>,
+        out: &'a Path,
+        title: Option<String>,
     }
-}
-
-/// `info` on a grid region: its topology and the minimum strip cover.
-fn grid_info(file: &Path, json: bool) -> anyhow::Result<ExitCode> {
-    let inst = Instance::read(file)?;
-    let mut v = serde_json::to_value(mowmill::topology::summary(&inst.region))?;
-    // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
-    v["strip_cover"] = mowmill::strip_cover::min_strip_cover_size(&inst.region).into();
-    if json {
-        println!("{}", serde_json::to_string_pretty(&v)?);
-    } else {
-        for (k, val) in v.as_object().context("summary is an object")? {
-            println!("{k:<20} {val}");
+    impl OnModel for Draw<'_> {
+        fn run<M: InstanceModel>(self, file: &Path) -> anyhow::Result<ExitCode> {
+            let inst = M::read(file)?;
+            let cover = self.tour.map(M::read_walk).transpose()?;
+            inst.draw(cover.as_ref(), self.out, title_or_stem(file, self.title))?;
+            eprintln!("wrote {}", self.out.display());
+            Ok(ExitCode::SUCCESS)
         }
     }
-    Ok(ExitCode::SUCCESS)
-}
-
-/// `validate` on a grid region: the milling (or lawn) checker on a cycle cover.
-fn grid_validate(file: &Path, tour: &Path, mode: Mode, json: bool) -> anyhow::Result<ExitCode> {
-    let inst = Instance::read(file)?;
-    let cover = CycleCover::read(tour)?;
-    let report = checker::check(&inst.region, &cover, mode);
-    print_validation(&report, &Checked::from(&report), json)
-}
-
-/// `draw` on a grid region, the caption recounting the tour by the milling checker.
-fn grid_draw(
-    file: &Path,
-    tour: Option<&Path>,
-    out: &Path,
-    title: Option<String>,
-) -> anyhow::Result<ExitCode> {
-    let inst = Instance::read(file)?;
-    let cover = tour.map(CycleCover::read).transpose()?;
-    let mut caption = format!("N = {}", inst.region.len());
-    if let Some(c) = &cover {
-        let r = checker::check(&inst.region, c, Mode::Milling);
-        caption += &format!(
-            ", length {}, turns {}, {} cycle(s)",
-            r.length, r.turns, r.cycles
-        );
-        if !r.valid {
-            caption += " (not a valid milling cover)";
-        }
-    }
-    let opts = DrawOptions {
-        title: Some(title.unwrap_or_else(|| inst.name.clone())),
-        caption: Some(caption),
-        ..DrawOptions::default()
-    };
-    mowmill::draw::draw(&inst.region, cover.as_ref(), out, &opts)?;
-    eprintln!("wrote {}", out.display());
-    Ok(ExitCode::SUCCESS)
+    on_model(file, Draw { tour, out, title })
 }
 
 /// The title `draw` gives a picture: `title`, else the file's stem.
@@ -140,53 +133,6 @@ pub fn title_or_stem(path: &Path, title: Option<String>) -> String {
             || path.display().to_string(),
             |s| s.to_string_lossy().into_owned(),
         )
-    })
-}
-
-/// What a checker recounted, as `validate` prints it (both models' reports have these).
-pub struct Checked<'a> {
-    pub valid: bool,
-    pub length: u64,
-    pub turns: u64,
-    pub cycles: usize,
-    pub max_coverage: u32,
-    pub error: Option<&'a str>,
-}
-
-impl<'a, V> From<&'a checker::Report<V>> for Checked<'a> {
-    fn from(report: &'a checker::Report<V>) -> Checked<'a> {
-        Checked {
-            valid: report.valid,
-            length: report.length,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: report.max_coverage,
-            error: report.error.as_deref(),
-        }
-    }
-}
-
-/// Prints `validate`'s answer, the whole report as JSON or one line, and gives its exit code
-/// (1 when invalid).
-pub fn print_validation(
-    report: &impl serde::Serialize,
-    c: &Checked,
-    json: bool,
-) -> anyhow::Result<ExitCode> {
-    if json {
-        println!("{}", serde_json::to_string_pretty(report)?);
-    } else if c.valid {
-        println!(
-            "valid: length {}, turns {}, {} cycle(s), max coverage {}",
-            c.length, c.turns, c.cycles, c.max_coverage
-        );
-    } else {
-        println!("invalid: {}", c.error.unwrap_or("?"));
-    }
-    Ok(if c.valid {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
     })
 }
 
