@@ -2,6 +2,9 @@
 //! evidence of the discrete greedy choices (`mowmill orders`).
 
 use super::*;
+use crate::algorithms::Objective;
+use crate::checker::Mode;
+use crate::model::{InstanceModel, Kind};
 
 /// Whether the header line of the CSV file at `path` names `column`.
 fn has_column(path: &Path, column: &str) -> Result<bool> {
@@ -297,24 +300,6 @@ fn copy_walk(path: &Path, from: &Path, to: &Path, note: &mut String) -> Result<(
     Ok(())
 }
 
-/// The note's line of a checker's recount of a saved walk.
-fn checked_line(
-    valid: bool,
-    length: &str,
-    turns: u64,
-    cycles: usize,
-    coverage: &str,
-    error: Option<&str>,
-) -> String {
-    let mut line = format!(
-        "checked output: valid {valid}, length {length}, turns {turns}, cycles {cycles}, max coverage {coverage}"
-    );
-    if let Some(e) = error.filter(|_| !valid) {
-        let _ = write!(line, " ({e})");
-    }
-    line
-}
-
 /// Draws a figure with `draw`, a panic or error becoming the note's "not drawn" line (a walk
 /// read from a file may not fit the instance).
 fn draw_figure(
@@ -362,28 +347,12 @@ impl Finding<'_> {
     }
 
     /// Copies the instance file into `dir`.
-    fn copy_instance(&self, dir: &Path, default_ext: &str) -> Result<std::path::PathBuf> {
-        let ext = self
-            .src
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or(default_ext);
+    fn copy_instance(&self, dir: &Path) -> Result<std::path::PathBuf> {
+        // The instance was found under `instances/` by its extension.
+        let ext = self.src.extension().and_then(|e| e.to_str()).unwrap_or("");
         let copy = dir.join(format!("{}.{ext}", self.stem()));
         std::fs::copy(self.src, &copy).map_err(|e| Error::io(&copy, e))?;
         Ok(copy)
-    }
-
-    fn walk<C>(&self, read: impl FnOnce(&Path) -> Result<C>) -> KeptWalk<C> {
-        kept_walk(self.from, self.instance, self.algo, self.objective, read)
-    }
-
-    /// The note's line for a walk that is missing or unreadable (`None` when it was read).
-    fn walk_problem<C>(&self, walk: &KeptWalk<C>) -> Option<String> {
-        match walk {
-            KeptWalk::Read { .. } => None,
-            KeptWalk::Missing => Some(missing_walk_line(self.algo, self.objective, self.src)),
-            KeptWalk::Unreadable(why) => Some(format!("walk: {why}")),
-        }
     }
 
     fn title(&self) -> String {
@@ -391,177 +360,42 @@ impl Finding<'_> {
     }
 }
 
-/// [`save_findings`] for a discrete instance: the instance file, the walk the run kept for the
-/// row (recounted by the discrete checker), a note and, where the instance has coordinates,
-/// an SVG.
-fn save_discrete_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
-    use crate::discrete::{check, draw, format::DiscreteCover};
-    let mut written = vec![f.copy_instance(dir, "dm")?];
-    let inst = crate::discrete::generate::read(f.src)?;
-    let mut note = note_head(
-        f.claim,
-        f.algo,
-        f.objective,
-        f.instance,
-        &format!("n = {}", inst.len()),
-    );
-    let walk = f.walk(DiscreteCover::read);
-    if let Some(line) = f.walk_problem(&walk) {
-        let _ = writeln!(note, "{line}");
-    }
-    if let KeptWalk::Read { walk, path } = walk {
-        let tour = dir.join(format!("{}.tour.json", f.stem()));
-        copy_walk(&path, f.from, &tour, &mut note)?;
-        written.push(tour);
-        let rep = check::check(&inst, &walk.cycles);
-        let _ = writeln!(
-            note,
-            "{}",
-            checked_line(
-                rep.valid,
-                &rep.length.to_string(),
-                rep.turns,
-                rep.cycles,
-                &rep.max_coverage.to_string(),
-                rep.error.as_deref()
-            )
-        );
-        let opts = crate::draw::DrawOptions {
-            title: Some(f.title()),
-            caption: Some(draw::caption(&inst, Some(&walk.cycles))),
-            ..crate::draw::DrawOptions::default()
-        };
-        draw_figure(
-            dir.join(format!("{}.svg", f.stem())),
-            &mut note,
-            &mut written,
-            |svg| draw::draw(&inst, Some(&walk.cycles), svg, &opts),
-        );
-    }
-    let md = dir.join(format!("{}.md", f.stem()));
-    std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
-    written.push(md);
-    Ok(written)
-}
-
-/// [`save_findings`] for an orthogonal polygon with arbitrary coordinates: the `.wkt` file, the
-/// walk the run kept (recounted by the exact polygon checker), a note and an SVG.
-fn save_ortho_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
-    use crate::ortho::{Polygon, Tour};
-    let mut written = vec![f.copy_instance(dir, "wkt")?];
-    let polygon = Polygon::read(f.src)?;
-    let mut note = note_head(
-        f.claim,
-        f.algo,
-        f.objective,
-        f.instance,
-        &format!(
-            "{} vertices",
-            polygon
-                .rings()
-                .iter()
-                .map(|r| r.corners.len())
-                .sum::<usize>()
-        ),
-    );
-    let walk = f.walk(Tour::read);
-    if let Some(line) = f.walk_problem(&walk) {
-        let _ = writeln!(note, "{line}");
-    }
-    if let KeptWalk::Read { walk, path } = walk {
-        let tour = dir.join(format!("{}.tour.json", f.stem()));
-        copy_walk(&path, f.from, &tour, &mut note)?;
-        written.push(tour);
-        match crate::ortho::check(&polygon, &walk) {
-            Ok(rep) => {
-                let _ = writeln!(
-                    note,
-                    "{}",
-                    checked_line(
-                        rep.valid,
-                        &rep.length.to_string(),
-                        rep.turns,
-                        rep.cycles,
-                        "-",
-                        rep.error.as_deref()
-                    )
-                );
-                let opts = crate::draw::DrawOptions {
-                    title: Some(f.title()),
-                    caption: Some(crate::ortho::figure_caption(&rep)),
-                    ..crate::draw::DrawOptions::default()
-                };
-                draw_figure(
-                    dir.join(format!("{}.svg", f.stem())),
-                    &mut note,
-                    &mut written,
-                    |svg| crate::ortho::draw(&polygon, Some(&walk), None, svg, &opts),
-                );
-            }
-            Err(e) => {
-                let _ = writeln!(note, "not checked: {e}");
-            }
+/// [`save_findings`] for one violating row of an instance of model `M`: the instance file,
+/// the walk the run kept for the row, recounted by the model's checker (its `validate`
+/// line), its figure (none for lawn tours, which no figure draws) and a note.
+fn save_finding<M: InstanceModel>(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
+    let mut written = vec![f.copy_instance(dir)?];
+    let inst = M::read(f.src)?;
+    let mut note = note_head(f.claim, f.algo, f.objective, f.instance, &inst.size());
+    let walk = match kept_walk(f.from, f.instance, f.algo, f.objective, M::read_walk) {
+        KeptWalk::Read { walk, path } => Some((walk, path)),
+        KeptWalk::Missing => {
+            let _ = writeln!(note, "{}", missing_walk_line(f.algo, f.objective, f.src));
+            None
         }
-    }
-    let md = dir.join(format!("{}.md", f.stem()));
-    std::fs::write(&md, note).map_err(|e| Error::io(&md, e))?;
-    written.push(md);
-    Ok(written)
-}
-
-/// [`save_findings`] for a grid instance (`.grid`, or a `.wkt` of integer coordinates read as
-/// pixels): the instance file, the walk the run kept (recounted by [`crate::checker`]), its
-/// figure (PNG; none for lawn tours) and a note.
-fn save_grid_finding(f: &Finding<'_>, dir: &Path) -> Result<Vec<std::path::PathBuf>> {
-    use crate::algorithms::Objective;
-    let mut written = vec![f.copy_instance(dir, "grid")?];
-    let inst = crate::instance::Instance::read(f.src)?;
-    let mut note = note_head(
-        f.claim,
-        f.algo,
-        f.objective,
-        f.instance,
-        &format!("N = {}", inst.region.len()),
-    );
-    let walk = f.walk(crate::tour::CycleCover::read);
-    if let Some(line) = f.walk_problem(&walk) {
-        let _ = writeln!(note, "{line}");
-    }
-    if let KeptWalk::Read { walk, path } = walk {
+        KeptWalk::Unreadable(why) => {
+            let _ = writeln!(note, "walk: {why}");
+            None
+        }
+    };
+    if let Some((walk, path)) = walk {
         let tour = dir.join(format!("{}.tour.json", f.stem()));
         copy_walk(&path, f.from, &tour, &mut note)?;
         written.push(tour);
-        match f.objective.parse::<Objective>() {
-            Ok(objective) => {
-                let rep = crate::checker::check(&inst.region, &walk, objective.mode());
-                let _ = writeln!(
-                    note,
-                    "{}",
-                    checked_line(
-                        rep.valid,
-                        &rep.length.to_string(),
-                        rep.turns,
-                        rep.cycles,
-                        &rep.max_coverage.to_string(),
-                        rep.error.as_deref()
-                    )
-                );
-                if objective != Objective::LawnLength {
-                    let opts = crate::draw::DrawOptions {
-                        title: Some(f.title()),
-                        caption: Some(format!(
-                            "N = {}, length {}, turns {}",
-                            inst.region.len(),
-                            rep.length,
-                            rep.turns
-                        )),
-                        ..crate::draw::DrawOptions::default()
-                    };
+        let checked = f
+            .objective
+            .parse::<Objective>()
+            .map_err(Error::invalid)
+            .and_then(|objective| Ok((objective, inst.validation(&walk, objective.mode())?)));
+        match checked {
+            Ok((objective, v)) => {
+                let _ = writeln!(note, "checked output: {}", v.line);
+                if objective.mode() != Mode::Lawn {
                     draw_figure(
-                        dir.join(format!("{}.png", f.stem())),
+                        dir.join(format!("{}.{}", f.stem(), M::FIGURE)),
                         &mut note,
                         &mut written,
-                        |png| crate::draw::draw(&inst.region, Some(&walk), png, &opts),
+                        |out| inst.draw(Some(&walk), out, f.title()),
                     );
                 }
             }
@@ -620,14 +454,10 @@ pub fn save_findings(
                 from,
                 src: &src,
             };
-            let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("");
-            // The runner's own test of a model (`harness::run::load`).
-            written.extend(if crate::discrete::generate::EXTENSIONS.contains(&ext) {
-                save_discrete_finding(&finding, dir)?
-            } else if crate::ortho::Polygon::is_ortho_file(&src) {
-                save_ortho_finding(&finding, dir)?
-            } else {
-                save_grid_finding(&finding, dir)?
+            written.extend(match Kind::of(&src) {
+                Kind::Grid => save_finding::<crate::region::Region>(&finding, dir)?,
+                Kind::Discrete => save_finding::<crate::discrete::Discrete>(&finding, dir)?,
+                Kind::Ortho => save_finding::<crate::ortho::Polygon>(&finding, dir)?,
             });
         }
     }
