@@ -21,7 +21,7 @@
 # instances in OUT/findings/, and OUT/sample/: a fixed random sample of the rows that the slow
 # test tier re-runs (tests/validate_sample.rs), so a change that moves a number must regenerate
 # this. Committed: OUT/claims.{csv,md}, OUT/findings.md, OUT/findings/, OUT/sample/ and each
-# part's stats.csv and manifest.json; results.csv, instances/ and plots/ are regenerated
+# part's stats.csv and manifest.json; results.csv, instances/, walks/ and plots/ are regenerated
 # (deterministic) and git-ignored.
 set -euo pipefail
 cd "$(dirname "$0")/.."

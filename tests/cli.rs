@@ -953,10 +953,7 @@ fn claims_saves_findings_from_the_walks_the_run_kept() {
             )),
             "{note}"
         );
-        assert!(
-            note.contains("checked output: valid: length 18,"),
-            "{note}"
-        );
+        assert!(note.contains("checked output: valid: length 18,"), "{note}");
         assert!(findings.join(format!("{stem}.png")).exists());
     }
 

@@ -18,7 +18,7 @@ use serde_json::json;
 use std::path::Path;
 use std::process::ExitCode;
 
-pub use mowmill::discrete::generate::{FAMILIES, is_discrete, read};
+pub use mowmill::discrete::generate::{FAMILIES, read};
 
 /// `exact` on a discrete instance (the passage model of [`dexact`]).
 pub fn exact(

@@ -46,7 +46,7 @@ pub struct OrdersArgs {
 }
 
 pub fn orders_command(a: OrdersArgs) -> Result<ExitCode> {
-    let inst: Discrete = if super::discrete::is_discrete(&a.file) {
+    let inst: Discrete = if super::FileKind::of(&a.file) == super::FileKind::Discrete {
         super::discrete::read(&a.file)?
     } else {
         Discrete::from_region(&Instance::read(&a.file)?.region)

@@ -17,7 +17,7 @@ use crate::error::{Error, Result};
 use crate::evaluate::{self, Evaluation, Known, Reference, Subject};
 use crate::exact;
 use crate::instance::Instance;
-use crate::model::InstanceModel;
+use crate::model::{InstanceModel, Kind};
 use crate::outside::OutsideAlgorithm;
 use crate::region::Region;
 use crate::topology;
@@ -530,12 +530,12 @@ fn load(spec: &InstanceSpec) -> Result<(Vec<u8>, &'static str, Loaded)> {
                 Loaded::Ortho(polygon),
             )
         }
-        Source::File(path) if crate::ortho::Polygon::is_ortho_file(path) => {
+        Source::File(path) if Kind::of(path) == Kind::Ortho => {
             let polygon = crate::ortho::Polygon::read(path)?;
             let bytes = crate::input::read_bytes(path, "an instance file")?;
             (bytes, "wkt", Loaded::Ortho(polygon))
         }
-        Source::File(path) if crate::discrete::generate::is_discrete(path) => {
+        Source::File(path) if Kind::of(path) == Kind::Discrete => {
             let inst = crate::discrete::generate::read(path)?;
             let bytes = crate::input::read_bytes(path, "an instance file")?;
             let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("dm");
