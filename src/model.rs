@@ -133,6 +133,10 @@ pub trait InstanceModel {
     /// What `mowmill info` prints: the model's facts about the instance, as one JSON object.
     fn info(&self) -> Result<serde_json::Value>;
 
+    /// The column at which `info`'s text output starts the values (each model keeps the width
+    /// its first `info` printed, which scripts grep: 20 for grids, 22 for the vector models).
+    const INFO_WIDTH: usize;
+
     /// The model's checker on `cover` as `validate` prints it (`mode` says milling or lawn
     /// where the model has both).
     fn validation(&self, cover: &Self::Cover, mode: Mode) -> Result<Validation>;
@@ -193,6 +197,25 @@ fn validation_line(
     } else {
         format!("invalid: {}", error.unwrap_or("?"))
     }
+}
+
+/// The validation of a report of the core's checker (grid regions and discrete instances).
+fn counted<V>(r: &crate::checker::Report<V>) -> Result<Validation>
+where
+    crate::checker::Report<V>: serde::Serialize,
+{
+    Ok(Validation {
+        valid: r.valid,
+        json: to_json(r)?,
+        line: validation_line(
+            r.valid,
+            r.length,
+            r.turns,
+            r.cycles,
+            Some(r.max_coverage),
+            r.error.as_deref(),
+        ),
+    })
 }
 
 /// Reads an orthogonal polygon and refuses it (naming where) when no tour of the unit square
@@ -331,6 +354,7 @@ impl InstanceModel for Region {
     }
 
     const FIGURE: &'static str = "png";
+    const INFO_WIDTH: usize = 20;
 
     fn read(path: &Path) -> Result<Region> {
         Ok(crate::instance::Instance::read(path)?.region)
@@ -353,19 +377,7 @@ impl InstanceModel for Region {
     }
 
     fn validation(&self, cover: &CycleCover, mode: Mode) -> Result<Validation> {
-        let r = crate::checker::check(self, cover, mode);
-        Ok(Validation {
-            valid: r.valid,
-            json: to_json(&r)?,
-            line: validation_line(
-                r.valid,
-                r.length,
-                r.turns,
-                r.cycles,
-                Some(r.max_coverage),
-                r.error.as_deref(),
-            ),
-        })
+        counted(&crate::checker::check(self, cover, mode))
     }
 
     fn draw(&self, cover: Option<&CycleCover>, out: &Path, title: String) -> Result<()> {
@@ -491,6 +503,7 @@ impl InstanceModel for Discrete {
     }
 
     const FIGURE: &'static str = "svg";
+    const INFO_WIDTH: usize = 22;
 
     fn read(path: &Path) -> Result<Discrete> {
         crate::discrete::generate::read(path)
@@ -522,19 +535,7 @@ impl InstanceModel for Discrete {
     }
 
     fn validation(&self, cover: &DiscreteCover, _: Mode) -> Result<Validation> {
-        let r = crate::discrete::check::check(self, &cover.cycles);
-        Ok(Validation {
-            valid: r.valid,
-            json: to_json(&r)?,
-            line: validation_line(
-                r.valid,
-                r.length,
-                r.turns,
-                r.cycles,
-                Some(r.max_coverage),
-                r.error.as_deref(),
-            ),
-        })
+        counted(&crate::discrete::check::check(self, &cover.cycles))
     }
 
     fn draw(&self, cover: Option<&DiscreteCover>, out: &Path, title: String) -> Result<()> {
@@ -690,6 +691,7 @@ impl InstanceModel for Polygon {
     }
 
     const FIGURE: &'static str = "svg";
+    const INFO_WIDTH: usize = 22;
 
     fn read(path: &Path) -> Result<Polygon> {
         Polygon::read(path)

@@ -56,7 +56,7 @@ pub fn info(file: &Path, json: bool) -> anyhow::Result<ExitCode> {
                 println!("{}", serde_json::to_string_pretty(&v)?);
             } else {
                 for (k, val) in v.as_object().context("a summary is an object")? {
-                    println!("{k:<22} {val}");
+                    println!("{k:<w$} {val}", w = M::INFO_WIDTH);
                 }
             }
             Ok(ExitCode::SUCCESS)

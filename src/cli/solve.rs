@@ -21,7 +21,7 @@ pub struct SolveArgs {
         long,
         required_unless_present = "command",
         conflicts_with = "command",
-        value_parser = super::one_of(algorithms::names().into_iter().chain(["corollary4"]))
+        value_parser = super::one_of(algorithms::names())
     )]
     pub algo: Option<String>,
     /// Run an outside program instead, e.g. "python3 examples/outside_greedy.py {instance}

@@ -676,19 +676,14 @@ const fn rectilinear(
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
 ///     "####\n",
 ///     "####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("lawn-mst").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::LawnLength).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::LawnLength).unwrap();
 /// assert!(tour.valid);
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
@@ -731,19 +726,14 @@ pub(crate) const LAWN_MST: Algorithm = Algorithm {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
 ///     "####\n",
 ///     "####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("lawn-christofides").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::LawnLength).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::LawnLength).unwrap();
 /// assert!(tour.valid);
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
@@ -786,19 +776,14 @@ pub(crate) const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
 ///     "####\n",
 ///     "####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("lawn-2opt").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::LawnLength).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::LawnLength).unwrap();
 /// assert!(tour.valid);
 /// // A 4 x 2 lawn: the 8 pixel centres in a ring.
 /// assert_eq!(tour.length, 8);
@@ -841,7 +826,6 @@ pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -851,12 +835,8 @@ pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
 ///     "#####\n",
 ///     "#####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("lawn-box").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::LawnLength).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::LawnLength).unwrap();
 /// assert!(tour.valid);
 /// // A 5 x 5 lawn with a one-pixel hole: a ring through its 24 pixels.
 /// assert_eq!(tour.length, 24);

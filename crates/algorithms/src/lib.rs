@@ -708,6 +708,27 @@ pub struct Algorithm {
 }
 
 impl Algorithm {
+    /// Runs it on a grid region (precondition first) and recounts its output of `objective`
+    /// with the core's one checker: the walk's own length, turns and coverage. This is what a
+    /// doc example or a quick script needs; `mowmill::evaluate` also decides the guarantees.
+    pub fn run_checked(
+        &self,
+        region: &Region,
+        options: &Options,
+        objective: Objective,
+    ) -> Result<crate::checker::Report> {
+        (self.precondition)(region)?;
+        let solution = (self.run)(region, options)?;
+        let out = solution
+            .outputs
+            .iter()
+            .find(|o| o.objective == objective)
+            .ok_or_else(|| {
+                crate::error::Error::invalid(format!("{} gave no {objective} output", self.name))
+            })?;
+        Ok(crate::checker::check(region, &out.cover, objective.mode()))
+    }
+
     /// Whether it reports `objective`: one of its [`objectives`](Self::objectives), or a
     /// weighted one it has a [carrier](Objective::carriers) for.
     pub fn reports(&self, objective: Objective) -> bool {

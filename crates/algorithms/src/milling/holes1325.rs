@@ -183,7 +183,6 @@ pub(crate) fn holes1325(region: &Region) -> Result<Solution> {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -193,12 +192,8 @@ pub(crate) fn holes1325(region: &Region) -> Result<Solution> {
 ///     "#####\n",
 ///     "#####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("holes1325").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::Length).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::Length).unwrap();
 /// assert!(tour.valid);
 /// // 24 pixels around a one-pixel hole: 24 moves <= 53·24/40.
 /// assert_eq!(tour.length, 24);

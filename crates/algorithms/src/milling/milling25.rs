@@ -457,7 +457,6 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -465,12 +464,8 @@ fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
 ///     "#.#\n",
 ///     "###\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("milling25").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::Length).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::Length).unwrap();
 /// assert!(tour.valid);
 /// // A ring of 8 pixels: contour walks of both boundaries, 16 moves <= (17·8 - 17)/3.
 /// assert_eq!(tour.length, 16);

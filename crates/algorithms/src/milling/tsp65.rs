@@ -737,7 +737,6 @@ impl Linker<'_> {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -745,12 +744,8 @@ impl Linker<'_> {
 ///     "####\n",
 ///     "####\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("tsp65").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::Length).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::Length).unwrap();
 /// assert!(tour.valid);
 /// // A 4 x 3 rectangle has a Hamiltonian tour: 12 moves <= (6·12 - 4)/5.
 /// assert_eq!(tour.length, 12);

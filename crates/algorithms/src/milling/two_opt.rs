@@ -273,7 +273,6 @@ pub(crate) fn milling_two_opt(region: &Region) -> Result<Solution> {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -282,12 +281,8 @@ pub(crate) fn milling_two_opt(region: &Region) -> Result<Solution> {
 ///     "######\n",
 ///     "######\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantee too.
 /// let algorithm = algorithms::find("milling-2opt").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
-/// let mut outputs = solution.outputs.iter();
-/// let out = outputs.find(|o| o.objective == Objective::Length).unwrap();
-/// let tour = checker::check(&region, &out.cover, out.objective.mode());
+/// let tour = algorithm.run_checked(&region, &Options::default(), Objective::Length).unwrap();
 /// assert!(tour.valid);
 /// // A 6 x 4 rectangle has a Hamiltonian cycle: 24 moves.
 /// assert_eq!(tour.length, 24);

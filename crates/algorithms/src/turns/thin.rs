@@ -176,7 +176,6 @@ const CYCLE_COVER_CLAIM: crate::theorems::Claim = crate::theorems::Claim::readin
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -184,13 +183,9 @@ const CYCLE_COVER_CLAIM: crate::theorems::Claim = crate::theorems::Claim::readin
 ///     "#.#\n",
 ///     "###\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantees too.
 /// let algorithm = algorithms::find("thin-cc").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
 /// let value = |objective: Objective| {
-///     let mut outputs = solution.outputs.iter();
-///     let out = outputs.find(|o| o.objective == objective).unwrap();
-///     let report = checker::check(&region, &out.cover, objective.mode());
+///     let report = algorithm.run_checked(&region, &Options::default(), objective).unwrap();
 ///     assert!(report.valid);
 ///     objective.value_of(&report)
 /// };
@@ -242,7 +237,6 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -250,13 +244,9 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
 ///     "#.#\n",
 ///     "###\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantees too.
 /// let algorithm = algorithms::find("thin-merge").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
 /// let value = |objective: Objective| {
-///     let mut outputs = solution.outputs.iter();
-///     let out = outputs.find(|o| o.objective == objective).unwrap();
-///     let report = checker::check(&region, &out.cover, objective.mode());
+///     let report = algorithm.run_checked(&region, &Options::default(), objective).unwrap();
 ///     assert!(report.valid);
 ///     objective.value_of(&report)
 /// };

@@ -137,7 +137,6 @@ pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
 ///
 /// ```
 /// use mowmill_algorithms::{self as algorithms, Objective, Options};
-/// use mowmill_core::checker;
 /// use mowmill_core::region::Region;
 ///
 /// let region = Region::from_ascii(concat!(
@@ -145,13 +144,9 @@ pub(crate) fn run(region: &Region, opts: &Options) -> Result<Solution> {
 ///     "#.#\n",
 ///     "###\n",
 /// ));
-/// // `mowmill::evaluate` runs it so and judges the guarantees too.
 /// let algorithm = algorithms::find("thin-euler").unwrap();
-/// let solution = (algorithm.run)(&region, &Options::default()).unwrap();
 /// let value = |objective: Objective| {
-///     let mut outputs = solution.outputs.iter();
-///     let out = outputs.find(|o| o.objective == objective).unwrap();
-///     let report = checker::check(&region, &out.cover, objective.mode());
+///     let report = algorithm.run_checked(&region, &Options::default(), objective).unwrap();
 ///     assert!(report.valid);
 ///     objective.value_of(&report)
 /// };
