@@ -1,0 +1,6 @@
+# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
+discrete 2
+d 3
+e 0 1
+p 0 2 0.5773502691896257
+p 1 2 1.1547005383792515

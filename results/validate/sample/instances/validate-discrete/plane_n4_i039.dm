@@ -1,9 +1,0 @@
-# mowmill discrete milling instance: 'e a b' edge, 'c v a b' collinear at v, 'p v x y [z]' coordinates, 'd D' directions
-discrete 4
-e 0 2
-e 1 2
-e 1 3
-p 0 -0.06469375105410968 0.12360725224937803
-p 1 1.0777662922530795 0.0722963104379657
-p 2 0.029060486010385668 1.0390257154142668
-p 3 1.1753912506618522 1.1538206676469878
