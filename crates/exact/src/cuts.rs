@@ -7,9 +7,31 @@
 //! few thousand nodes exact separation is cheap next to an LP re-solve; on larger graphs it
 //! stops at the solve's deadline with the cuts found so far.
 
-use super::lp::Deadline;
+use super::lp::{Deadline, Row};
 use crate::flow::FlowGraph;
 use crate::topology::graph_components;
+
+/// The violated subtour cuts `x(δ(S)) >= 2` of a closed walk's edge multiplicities: column
+/// `k` is the multiplicity of edge `edges[k]` of a graph on `n` nodes, `x` its LP value (the
+/// length models of grids and of discrete instances, whose first columns are their edges).
+pub fn subtour_rows(
+    n: usize,
+    edges: &[(usize, usize)],
+    x: &[f64],
+    deadline: &Deadline,
+) -> Vec<Row> {
+    let weighted: Vec<(usize, usize, f64)> =
+        edges.iter().zip(x).map(|(&(a, b), &w)| (a, b, w)).collect();
+    violated_cuts(n, &weighted, 2.0 - 1e-6, deadline)
+        .into_iter()
+        .map(|s| {
+            let terms = (0..edges.len())
+                .filter(|&k| s[edges[k].0] != s[edges[k].1])
+                .map(|k| (k, 1.0));
+            Row::at_least(terms, 2.0)
+        })
+        .collect()
+}
 
 /// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
 /// weight is below `threshold`, for a graph on `n` nodes with weighted edges.

@@ -443,6 +443,37 @@ pub fn run<M: CutModel>(
     l.run()
 }
 
+/// [`run`] on a model whose objective leaves out a `constant` (parts of the instance outside
+/// it, such as isolated vertices' one-vertex walks): `lower` bounds the whole value, and the
+/// answer's values include the constant. A model without columns has one solution, the empty
+/// one, of value `constant`.
+pub fn run_with_constant<M: CutModel>(
+    model: &M,
+    start: Option<Vec<f64>>,
+    (lower, source): (u64, &'static str),
+    constant: u64,
+    deadline: &Deadline,
+    settings: &Settings,
+) -> Solved {
+    if model.formulation().num_cols() == 0 {
+        return Solved {
+            stop: Stop::Optimal,
+            best: Some(Vec::new()),
+            upper: Some(constant),
+            lower: constant,
+            lower_source: source,
+            lp_bound: None,
+            rounds: 0,
+        };
+    }
+    let inner = lower.saturating_sub(constant);
+    let mut s = run(model, start, (inner, source), deadline, settings);
+    s.upper = s.upper.map(|u| u + constant);
+    s.lower += constant;
+    s.lp_bound = s.lp_bound.map(|b| b + constant);
+    s
+}
+
 /// The LP relaxation's bound with all its cuts (the LP phase alone), if it converges in time.
 pub fn lp_bound<M: CutModel>(model: &M, deadline: &Deadline, settings: &Settings) -> Option<u64> {
     let mut l = Loop::new(model, (0, ""), deadline, settings);

@@ -77,6 +77,7 @@ pub mod cuts;
 pub mod discrete;
 #[doc(hidden)]
 pub mod driver;
+mod goal;
 mod lawn;
 #[doc(hidden)]
 pub mod lp;
@@ -591,7 +592,7 @@ fn solve_turns(
     settings: &Settings,
 ) -> Answer {
     let lower = cheap_lower_bound(region, objective);
-    let goal = turn_goal(objective);
+    let goal = goal::TurnGoal::of(objective).expect("solve_turns is called for turn objectives");
     if objective.is_tour() {
         if not_connected(region) {
             return Answer::stopped(Stop::Infeasible, lower);
@@ -612,39 +613,19 @@ fn solve_turns(
         .flatten()
         .min_by(|a, b| value(a).total_cmp(&value(b)))
         .map(|counts| as_columns(&counts));
-    let s = if model.formulation().num_cols() == 0 {
-        Solved {
-            stop: Stop::Optimal,
-            best: Some(Vec::new()),
-            upper: Some(constant),
-            lower: constant,
-            lower_source: lower.source,
-            lp_bound: None,
-            rounds: 0,
-        }
-    } else {
-        let inner = lower.value.saturating_sub(constant);
-        let mut s = driver::run(&model, start, (inner, lower.source), deadline, settings);
-        s.lower += constant;
-        s.lp_bound = s.lp_bound.map(|b| b + constant);
-        s
-    };
+    let s = driver::run_with_constant(
+        &model,
+        start,
+        (lower.value, lower.source),
+        constant,
+        deadline,
+        settings,
+    );
     let cover = s
         .best
         .as_ref()
         .map(|x| CycleCover::new(model.walks(&model.counts(x))));
     Answer::from_solved(s, cover, lower)
-}
-
-/// The passage model's goal for a turn objective.
-fn turn_goal(objective: Objective) -> turns::TurnGoal {
-    match objective {
-        Objective::CcTurns => turns::TurnGoal::CycleCover,
-        Objective::Turns => turns::TurnGoal::Tour,
-        Objective::Weighted(turn_cost) => turns::TurnGoal::Weighted(turn_cost),
-        Objective::WeightedCc(turn_cost) => turns::TurnGoal::WeightedCycleCover(turn_cost),
-        _ => unreachable!("turn objectives only"),
-    }
 }
 
 fn as_columns(counts: &[u32]) -> Vec<f64> {
@@ -771,7 +752,8 @@ pub(crate) fn lp_relaxation_bound(
         | Objective::Turns
         | Objective::Weighted(_)
         | Objective::WeightedCc(_) => {
-            let model = turns::PassageModel::new(region, turn_goal(objective), None);
+            let goal = goal::TurnGoal::of(objective)?;
+            let model = turns::PassageModel::new(region, goal, None);
             let constant = model.isolated_cost();
             if model.formulation().num_cols() == 0 {
                 return None;

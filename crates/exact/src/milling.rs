@@ -8,7 +8,7 @@
 //! `x(δ(S)) >= 2` (connectivity, separated by minimum cuts). Minimize `Σ x_e`. A feasible `x`
 //! is a connected Eulerian multigraph on all pixels; its Euler tour (Hierholzer) is the walk.
 
-use super::cuts::violated_cuts;
+use super::cuts::subtour_rows;
 use super::driver::CutModel;
 use super::lp::{Deadline, Formulation, Row};
 use super::walks::euler_walk;
@@ -193,21 +193,7 @@ impl CutModel for MillingModel<'_> {
     }
 
     fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
-        let weighted: Vec<(usize, usize, f64)> = self
-            .edges
-            .iter()
-            .enumerate()
-            .map(|(k, &(a, b))| (a, b, x[k]))
-            .collect();
-        violated_cuts(self.region.len(), &weighted, 2.0 - 1e-6, deadline)
-            .into_iter()
-            .map(|s| {
-                let terms = (0..self.num_edges())
-                    .filter(|&k| s[self.edges[k].0] != s[self.edges[k].1])
-                    .map(|k| (k, 1.0));
-                Row::at_least(terms, 2.0)
-            })
-            .collect()
+        subtour_rows(self.region.len(), &self.edges, x, deadline)
     }
 
     fn is_feasible(&self, x: &[f64]) -> bool {

@@ -35,6 +35,7 @@
 
 use super::cuts::violated_cuts;
 use super::driver::CutModel;
+use super::goal::TurnGoal;
 use super::lp::{Deadline, Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
 use crate::region::{Dir, Pixel, Region};
@@ -42,27 +43,6 @@ use crate::topology::graph_components;
 use petgraph::unionfind::UnionFind;
 
 const NONE: u32 = u32::MAX;
-
-/// Which turn objective the passage model minimizes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum TurnGoal {
-    CycleCover,
-    Tour,
-    /// Length + C · turns over tours.
-    Weighted(u32),
-    /// Length + C · turns over cycle covers.
-    WeightedCycleCover(u32),
-}
-
-impl TurnGoal {
-    /// The turn cost C when length counts too.
-    fn turn_cost(self) -> Option<u32> {
-        match self {
-            TurnGoal::Weighted(c) | TurnGoal::WeightedCycleCover(c) => Some(c),
-            _ => None,
-        }
-    }
-}
 
 /// Turn cost of a passage between sides `a` and `b` (Dir indices).
 pub(crate) fn passage_turns(a: u8, b: u8) -> u32 {
@@ -206,7 +186,7 @@ impl<'a> PassageModel<'a> {
     }
 
     fn needs_connectivity(&self) -> bool {
-        matches!(self.goal, TurnGoal::Tour | TurnGoal::Weighted(_))
+        self.goal.is_tour()
     }
 
     /// The cost of the isolated pixels' one-pixel walks (4 turns, length 0 each), which are
@@ -663,13 +643,7 @@ impl CutModel for PassageModel<'_> {
     fn tighten(&self, f: &mut Formulation, target: u64) {
         let n = (self.region.len() - self.isolated) as f64;
         let target = target as f64;
-        let (turn_budget, rest) = match self.goal {
-            TurnGoal::Weighted(c) if c > 0 => ((target - n).max(0.0) / f64::from(c), n - 1.0),
-            TurnGoal::Weighted(_) => (f64::INFINITY, n - 1.0),
-            TurnGoal::WeightedCycleCover(c) if c > 0 => (target / f64::from(c), n - 1.0),
-            TurnGoal::WeightedCycleCover(_) => (f64::INFINITY, 0.0),
-            _ => (target, 0.0),
-        };
+        let (turn_budget, rest) = self.goal.turn_budget(n, target);
         for (k, p) in self.vars.iter().enumerate() {
             let c = f.cost[k];
             let mut hi = if c > 0.0 {

@@ -54,10 +54,7 @@
 
 use super::{Discrete, VertexWalk};
 use crate::Merge;
-use crate::visits::Visits;
-use petgraph::unionfind::UnionFind;
-
-const NONE: u32 = u32::MAX;
+use crate::visits::Rings;
 
 /// What a merge did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -95,69 +92,35 @@ enum Op {
 
 struct Walks<'a> {
     inst: &'a Discrete,
-    vert: Vec<u32>,
-    next: Vec<u32>,
-    prev: Vec<u32>,
-    /// Input cycle of each node (detour copies inherit theirs).
-    cycle: Vec<u32>,
-    cycles: UnionFind<u32>,
-    /// Nodes per merged cycle, at its union-find root.
-    size: Vec<usize>,
-    /// The input nodes at each vertex (detour copies are left out: each belongs to the
-    /// cycle of the node it copies), and which are settled.
-    index: Visits,
+    /// The walks' nodes, keyed by vertex.
+    rings: Rings,
     stats: MergeStats,
 }
 
 impl<'a> Walks<'a> {
     fn new(inst: &'a Discrete, cycles: &[VertexWalk]) -> Walks<'a> {
-        let mut w = Walks {
+        let walks: Vec<VertexWalk> = cycles
+            .iter()
+            .map(|walk| {
+                let mut walk = walk.clone();
+                if walk.len() == 1
+                    && let Some(&q) = inst.neighbors(walk[0]).first()
+                {
+                    // A one-vertex walk counts 4 turns, as does the walk to a neighbour and back.
+                    walk.push(q);
+                }
+                walk
+            })
+            .collect();
+        Walks {
             inst,
-            vert: Vec::new(),
-            next: Vec::new(),
-            prev: Vec::new(),
-            cycle: Vec::new(),
-            cycles: UnionFind::new(cycles.len()),
-            size: Vec::new(),
-            index: Visits::default(),
+            rings: Rings::new(&walks, inst.len()),
             stats: MergeStats::default(),
-        };
-        for (c, walk) in cycles.iter().enumerate() {
-            let mut walk = walk.clone();
-            if walk.len() == 1
-                && let Some(&q) = inst.neighbors(walk[0]).first()
-            {
-                // A one-vertex walk counts 4 turns, as does the walk to a neighbour and back.
-                walk.push(q);
-            }
-            let first = w.vert.len() as u32;
-            let m = walk.len() as u32;
-            for (k, &v) in walk.iter().enumerate() {
-                let k = k as u32;
-                w.vert.push(v);
-                w.next.push(first + (k + 1) % m);
-                w.prev.push(first + (k + m - 1) % m);
-                w.cycle.push(c as u32);
-            }
-            w.size.push(walk.len());
         }
-        let n = inst.len();
-        w.index = Visits::of(&w.vert, n);
-        w
-    }
-
-    fn visits(&self, v: usize) -> &[u32] {
-        self.index.at(v)
     }
 
     fn root_of(&mut self, node: u32) -> u32 {
-        self.cycles.find_mut(self.cycle[node as usize])
-    }
-
-    fn settled(&mut self, v: usize) -> bool {
-        let (cycles, cycle) = (&mut self.cycles, &self.cycle);
-        self.index
-            .settled(v, |node| cycles.find_mut(cycle[node as usize]))
+        self.rings.root_of(node)
     }
 
     /// The turn at `n` between walk neighbours `a` and `b`; 4 for a one-node walk.
@@ -166,24 +129,24 @@ impl<'a> Walks<'a> {
             return 4;
         }
         self.inst.turn(
-            self.vert[a as usize],
-            self.vert[n as usize],
-            self.vert[b as usize],
+            self.rings.key[a as usize],
+            self.rings.key[n as usize],
+            self.rings.key[b as usize],
         ) as i32
     }
 
     fn turn_at(&self, n: u32) -> i32 {
-        self.turn_between(self.prev[n as usize], n, self.next[n as usize])
+        self.turn_between(self.rings.prev[n as usize], n, self.rings.next[n as usize])
     }
 
     fn adjacent(&self, a: u32, b: u32) -> bool {
         self.inst
-            .adjacent(self.vert[a as usize], self.vert[b as usize])
+            .adjacent(self.rings.key[a as usize], self.rings.key[b as usize])
     }
 
     /// The edge (x, x2) as a directed walk edge (from, to).
     fn directed(&self, x: u32, x2: u32) -> (u32, u32) {
-        if self.next[x as usize] == x2 {
+        if self.rings.next[x as usize] == x2 {
             (x, x2)
         } else {
             (x2, x)
@@ -213,18 +176,18 @@ impl<'a> Walks<'a> {
                 };
                 // A removed edge's tail keeps its predecessor, its head its successor.
                 let kept = [
-                    (u1, self.prev[u1 as usize]),
-                    (v1, self.next[v1 as usize]),
-                    (u2, self.prev[u2 as usize]),
-                    (v2, self.next[v2 as usize]),
+                    (u1, self.rings.prev[u1 as usize]),
+                    (v1, self.rings.next[v1 as usize]),
+                    (u2, self.rings.prev[u2 as usize]),
+                    (v2, self.rings.next[v2 as usize]),
                 ];
                 kept.iter()
                     .map(|&(n, k)| self.turn_between(k, n, partner(n)) - self.turn_at(n))
                     .sum()
             }
             Op::Detour { x, z } => {
-                let (px, xn) = (self.prev[x as usize], self.next[x as usize]);
-                let (pz, zn) = (self.prev[z as usize], self.next[z as usize]);
+                let (px, xn) = (self.rings.prev[x as usize], self.rings.next[x as usize]);
+                let (pz, zn) = (self.rings.prev[z as usize], self.rings.next[z as usize]);
                 self.turn_between(px, x, z)
                     + self.turn_between(x, z, zn)
                     + self.turn_between(pz, z, x)
@@ -238,12 +201,12 @@ impl<'a> Walks<'a> {
     /// The cheapest allowed operation joining the cycles of `x` and `z` (different merged
     /// cycles, at one vertex or adjacent), exchanges before detours of the same cost.
     fn best_op(&mut self, x: u32, z: u32) -> Option<(i32, Op)> {
-        let same = self.vert[x as usize] == self.vert[z as usize];
+        let same = self.rings.key[x as usize] == self.rings.key[z as usize];
         if !same && !self.adjacent(x, z) {
             return None;
         }
         // One-node walks (isolated vertices) have no edge to exchange.
-        if self.next[x as usize] == x || self.next[z as usize] == z {
+        if self.rings.next[x as usize] == x || self.rings.next[z as usize] == z {
             return None;
         }
         let mut best: Option<(i32, bool, Op)> = None;
@@ -252,8 +215,8 @@ impl<'a> Walks<'a> {
                 best = Some((d, detour, op));
             }
         };
-        for x2 in [self.next[x as usize], self.prev[x as usize]] {
-            for z2 in [self.next[z as usize], self.prev[z as usize]] {
+        for x2 in [self.rings.next[x as usize], self.rings.prev[x as usize]] {
+            for z2 in [self.rings.next[z as usize], self.rings.prev[z as usize]] {
                 for crossed in [false, true] {
                     let ok = if crossed {
                         !same && self.adjacent(x2, z2)
@@ -274,8 +237,8 @@ impl<'a> Walks<'a> {
             }
         }
         if !same
-            && self.settled(self.vert[x as usize] as usize)
-            && self.settled(self.vert[z as usize] as usize)
+            && self.rings.settled(self.rings.key[x as usize] as usize)
+            && self.rings.settled(self.rings.key[z as usize] as usize)
         {
             let op = Op::Detour { x, z };
             consider(self.delta(op), true, op);
@@ -295,10 +258,10 @@ impl<'a> Walks<'a> {
     ) -> Option<(u32, u32, u32, u32)> {
         let dirs = |a: u32, b: u32| {
             let mut out = Vec::with_capacity(2);
-            if self.next[a as usize] == b {
+            if self.rings.next[a as usize] == b {
                 out.push((a, b));
             }
-            if self.prev[a as usize] == b {
+            if self.rings.prev[a as usize] == b {
                 out.push((b, a));
             }
             out
@@ -311,18 +274,6 @@ impl<'a> Walks<'a> {
             }
         }
         None
-    }
-
-    fn reverse(&mut self, start: u32) {
-        let mut n = start;
-        loop {
-            let k = n as usize;
-            std::mem::swap(&mut self.next[k], &mut self.prev[k]);
-            n = self.next[k];
-            if n == start {
-                break;
-            }
-        }
     }
 
     fn apply(&mut self, op: Op, delta: i32) {
@@ -351,51 +302,36 @@ impl<'a> Walks<'a> {
                 // smaller). A two-node cycle has its edge in both directions.
                 let mut link = self.relinking(x, x2, z, z2, &want);
                 if link.is_none() {
-                    let smaller = if self.size[ra as usize] <= self.size[rb as usize] {
+                    let smaller = if self.rings.size(ra) <= self.rings.size(rb) {
                         x
                     } else {
                         z
                     };
-                    self.reverse(smaller);
+                    self.rings.reverse(smaller);
                     link = self.relinking(x, x2, z, z2, &want);
                 }
                 let (u1, v1, u2, v2) = link.expect("one orientation gives the pairing");
-                self.next[u1 as usize] = v2;
-                self.prev[v2 as usize] = u1;
-                self.next[u2 as usize] = v1;
-                self.prev[v1 as usize] = u2;
-                if self.vert[x as usize] == self.vert[z as usize] {
+                self.rings.next[u1 as usize] = v2;
+                self.rings.prev[v2 as usize] = u1;
+                self.rings.next[u2 as usize] = v1;
+                self.rings.prev[v1 as usize] = u2;
+                if self.rings.key[x as usize] == self.rings.key[z as usize] {
                     self.stats.splices += 1;
                 } else {
                     self.stats.exchanges += 1;
                 }
             }
             Op::Detour { x, z } => {
-                let (xn, pz) = (self.next[x as usize], self.prev[z as usize]);
-                let z_copy = self.vert.len() as u32;
-                let x_copy = z_copy + 1;
-                for of in [z, x] {
-                    self.vert.push(self.vert[of as usize]);
-                    self.cycle.push(self.cycle[of as usize]);
-                    self.next.push(NONE);
-                    self.prev.push(NONE);
-                }
-                self.next[x as usize] = z;
-                self.prev[z as usize] = x;
-                self.next[pz as usize] = z_copy;
-                self.prev[z_copy as usize] = pz;
-                self.next[z_copy as usize] = x_copy;
-                self.prev[x_copy as usize] = z_copy;
-                self.next[x_copy as usize] = xn;
-                self.prev[xn as usize] = x_copy;
-                self.size[ra as usize] += 2;
+                self.rings.detour(x, z);
                 self.stats.detours += 1;
             }
         }
-        let merged = self.size[ra as usize] + self.size[rb as usize];
-        self.cycles.union(ra, rb);
-        let root = self.cycles.find_mut(ra);
-        self.size[root as usize] = merged;
+        let added = if matches!(op, Op::Detour { .. }) {
+            2
+        } else {
+            0
+        };
+        self.rings.merged(ra, rb, added);
         self.stats.merges += 1;
         self.stats.added_turns += i64::from(delta);
         if delta <= 0 {
@@ -411,10 +347,10 @@ impl<'a> Walks<'a> {
     fn candidates(&self) -> Vec<(u32, u32)> {
         let mut out = Vec::new();
         for v in 0..self.inst.len() {
-            let here = self.visits(v);
+            let here = self.rings.visits(v);
             for (i, &x) in here.iter().enumerate() {
                 for &z in &here[i + 1..] {
-                    if self.cycle[x as usize] != self.cycle[z as usize] {
+                    if !self.rings.same_input(x, z) {
                         out.push((x, z));
                     }
                 }
@@ -424,8 +360,8 @@ impl<'a> Walks<'a> {
                     continue;
                 }
                 for &x in here {
-                    for &z in self.visits(w as usize) {
-                        if self.cycle[x as usize] != self.cycle[z as usize] {
+                    for &z in self.rings.visits(w as usize) {
+                        if !self.rings.same_input(x, z) {
                             out.push((x, z));
                         }
                     }
@@ -436,25 +372,7 @@ impl<'a> Walks<'a> {
     }
 
     fn into_walks(self) -> Vec<VertexWalk> {
-        let mut seen = vec![false; self.vert.len()];
-        let mut out = Vec::new();
-        for start in 0..self.vert.len() as u32 {
-            if seen[start as usize] {
-                continue;
-            }
-            let mut walk = Vec::new();
-            let mut n = start;
-            loop {
-                seen[n as usize] = true;
-                walk.push(self.vert[n as usize]);
-                n = self.next[n as usize];
-                if n == start {
-                    break;
-                }
-            }
-            out.push(walk);
-        }
-        out
+        self.rings.walks()
     }
 }
 

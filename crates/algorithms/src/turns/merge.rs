@@ -37,16 +37,13 @@
 //! continuous "extend the end links" construction, so the tests assert t + 2c − 2 on every
 //! instance instead of assuming it.
 
-use super::visits::Visits;
+use super::visits::{NONE, Rings};
 use crate::checker::{Mode, check};
 use crate::error::Result;
 use crate::region::{Pixel, Region};
-use crate::tour::{CycleCover, Walk};
+use crate::tour::CycleCover;
 use crate::{Merge, Objective, Options, Output, Solution};
-use petgraph::unionfind::UnionFind;
 use std::collections::BTreeMap;
-
-const NONE: u32 = u32::MAX;
 
 /// What a merge did, for certificates.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -76,25 +73,14 @@ enum Op {
 
 struct Walks<'a> {
     region: &'a Region,
-    pix: Vec<u32>,
-    /// The pixel of each node (`region.pixel(pix[node])`, kept at hand).
+    /// The walks' nodes, keyed by region pixel index.
+    rings: Rings,
+    /// The pixel of each node (`region.pixel(rings.key[node])`, kept at hand).
     xy: Vec<Pixel>,
     /// The turn at each node, kept up to date by [`apply`](Self::apply).
     turn: Vec<i32>,
-    next: Vec<u32>,
-    prev: Vec<u32>,
-    /// Initial cycle of each node (new detour nodes inherit their copy's cycle).
-    cycle: Vec<u32>,
-    /// Union-find over initial cycles: petgraph's, as elsewhere in the crate (roots are only
-    /// compared, so which one a union keeps does not matter).
-    cycles: UnionFind<u32>,
-    /// Nodes per merged cycle, kept at its union-find root.
-    size: Vec<usize>,
     /// Visits per region pixel, kept up to date by detours (exchanges keep visits).
     coverage: Vec<u32>,
-    /// The input nodes at each pixel (detour copies are left out: each belongs to the
-    /// cycle of the node it copies), and which are settled.
-    index: Visits,
     stats: MergeStats,
 }
 
@@ -108,81 +94,75 @@ fn turn3(a: Pixel, n: Pixel, b: Pixel) -> i32 {
 
 impl<'a> Walks<'a> {
     fn new(region: &'a Region, cover: &CycleCover) -> Walks<'a> {
+        let walks: Vec<Vec<u32>> = cover
+            .cycles
+            .iter()
+            .map(|walk| {
+                let mut walk: Vec<u32> = walk
+                    .iter()
+                    .map(|&p| {
+                        region
+                            .index_of(p)
+                            .expect("merged walks stay inside the region")
+                            as u32
+                    })
+                    .collect();
+                if walk.len() == 1 {
+                    // A one-pixel walk counts 4 turns, and so does the walk to a neighbour and
+                    // back.
+                    if let Some(q) = region.neighbors(walk[0] as usize).next() {
+                        walk.push(q as u32);
+                    }
+                }
+                walk
+            })
+            .collect();
+        let rings = Rings::new(&walks, region.len());
+        let mut coverage = vec![0; region.len()];
+        for &p in &rings.key {
+            coverage[p as usize] += 1;
+        }
         let mut w = Walks {
             region,
-            pix: Vec::new(),
-            xy: Vec::new(),
-            turn: Vec::new(),
-            next: Vec::new(),
-            prev: Vec::new(),
-            cycle: Vec::new(),
-            cycles: UnionFind::new(cover.cycles.len()),
-            size: Vec::new(),
-            coverage: vec![0; region.len()],
-            index: Visits::default(),
+            xy: rings
+                .key
+                .iter()
+                .map(|&p| region.pixel(p as usize))
+                .collect(),
+            turn: vec![0; rings.len()],
+            rings,
+            coverage,
             stats: MergeStats::default(),
         };
-        for (c, walk) in cover.cycles.iter().enumerate() {
-            let mut walk: Vec<u32> = walk
-                .iter()
-                .map(|&p| {
-                    region
-                        .index_of(p)
-                        .expect("merged walks stay inside the region") as u32
-                })
-                .collect();
-            if walk.len() == 1 {
-                // A one-pixel walk counts 4 turns, and so does the walk to a neighbour and back.
-                if let Some(q) = region.neighbors(walk[0] as usize).next() {
-                    walk.push(q as u32);
-                }
-            }
-            let first = w.pix.len() as u32;
-            let m = walk.len() as u32;
-            for (k, &p) in walk.iter().enumerate() {
-                let k = k as u32;
-                w.pix.push(p);
-                w.xy.push(region.pixel(p as usize));
-                w.next.push(first + (k + 1) % m);
-                w.prev.push(first + (k + m - 1) % m);
-                w.cycle.push(c as u32);
-            }
-            for &p in &walk {
-                w.coverage[p as usize] += 1;
-            }
-            w.size.push(walk.len());
-        }
-        w.turn = vec![0; w.pix.len()];
-        for n in 0..w.pix.len() as u32 {
+        for n in 0..w.rings.len() as u32 {
             w.recount_turn(n);
         }
-        let n = region.len();
-        w.index = Visits::of(&w.pix, n);
         w
     }
 
     fn visits(&self, p: usize) -> &[u32] {
-        self.index.at(p)
+        self.rings.visits(p)
     }
 
     /// Whether every visit of pixel `p` already lies in one merged cycle. Settledness only
     /// grows as cycles merge.
     fn settled(&mut self, p: usize) -> bool {
-        let (cycles, cycle) = (&mut self.cycles, &self.cycle);
-        self.index
-            .settled(p, |node| cycles.find_mut(cycle[node as usize]))
+        self.rings.settled(p)
     }
 
     /// Whether detours between nodes `x` and `z` are allowed: only between settled pixels (see
     /// the module documentation: this keeps the coverage bound of star and doubled-strip
     /// covers).
     fn detours_allowed(&mut self, x: u32, z: u32) -> bool {
-        let (p, q) = (self.pix[x as usize] as usize, self.pix[z as usize] as usize);
+        let (p, q) = (
+            self.rings.key[x as usize] as usize,
+            self.rings.key[z as usize] as usize,
+        );
         p != q && self.settled(p) && self.settled(q)
     }
 
     fn root_of(&mut self, node: u32) -> u32 {
-        self.cycles.find_mut(self.cycle[node as usize])
+        self.rings.root_of(node)
     }
 
     fn at(&self, node: u32) -> Pixel {
@@ -203,7 +183,8 @@ impl<'a> Walks<'a> {
     }
 
     fn recount_turn(&mut self, n: u32) {
-        self.turn[n as usize] = self.turn_between(self.prev[n as usize], n, self.next[n as usize]);
+        self.turn[n as usize] =
+            self.turn_between(self.rings.prev[n as usize], n, self.rings.next[n as usize]);
     }
 
     /// The new partners of the four nodes of an exchange: (node, removed partner, new partner).
@@ -228,23 +209,23 @@ impl<'a> Walks<'a> {
                 let mut d = 0;
                 for (n, gone, new) in Self::exchange_moves(a1, b1, a2, b2, crossed) {
                     // The node keeps its other neighbour and gains `new`.
-                    let keep = if self.next[n as usize] == gone {
-                        self.prev[n as usize]
+                    let keep = if self.rings.next[n as usize] == gone {
+                        self.rings.prev[n as usize]
                     } else {
-                        self.next[n as usize]
+                        self.rings.next[n as usize]
                     };
                     d += self.turn_between(keep, n, new) - self.turn_at(n);
                 }
                 d
             }
             Op::Detour { x, z, backward } => {
-                let xn = self.next[x as usize];
+                let xn = self.rings.next[x as usize];
                 let (zn, zp) = if backward {
-                    (self.prev[z as usize], self.next[z as usize])
+                    (self.rings.prev[z as usize], self.rings.next[z as usize])
                 } else {
-                    (self.next[z as usize], self.prev[z as usize])
+                    (self.rings.next[z as usize], self.rings.prev[z as usize])
                 };
-                let px = self.prev[x as usize];
+                let px = self.rings.prev[x as usize];
                 let (x_p, z_p) = (self.at(x), self.at(z));
                 self.turn_between(px, x, z)
                     + self.turn_between(x, z, zn)
@@ -260,12 +241,18 @@ impl<'a> Walks<'a> {
     /// an edge at `x` with an edge at `z` (at a shared pixel these are the splices), and, for
     /// adjacent pixels, detours.
     fn for_each_op(&self, x: u32, z: u32, detours: bool, mut out: impl FnMut(Op)) {
-        let same = self.pix[x as usize] == self.pix[z as usize];
+        let same = self.rings.key[x as usize] == self.rings.key[z as usize];
         if !same && !self.adjacent(x, z) {
             return;
         }
-        let edges_x = [(x, self.next[x as usize]), (x, self.prev[x as usize])];
-        let edges_z = [(z, self.next[z as usize]), (z, self.prev[z as usize])];
+        let edges_x = [
+            (x, self.rings.next[x as usize]),
+            (x, self.rings.prev[x as usize]),
+        ];
+        let edges_z = [
+            (z, self.rings.next[z as usize]),
+            (z, self.rings.prev[z as usize]),
+        ];
         for &(a1, b1) in &edges_x {
             for &(a2, b2) in &edges_z {
                 for crossed in [false, true] {
@@ -304,7 +291,7 @@ impl<'a> Walks<'a> {
             Op::Exchange { .. } => false,
             Op::Detour { x, z, .. } => [x, z]
                 .iter()
-                .any(|&n| self.coverage[self.pix[n as usize] as usize] >= 4),
+                .any(|&n| self.coverage[self.rings.key[n as usize] as usize] >= 4),
         }
     }
 
@@ -328,26 +315,16 @@ impl<'a> Walks<'a> {
         best.map(|(d, _, op)| (d, op))
     }
 
-    fn reverse(&mut self, start: u32) {
-        let mut n = start;
-        loop {
-            let k = n as usize;
-            std::mem::swap(&mut self.next[k], &mut self.prev[k]);
-            n = self.next[k];
-            if n == start {
-                break;
-            }
-        }
-    }
-
     fn link(&mut self, a: u32, b: u32) {
-        if self.next[a as usize] == NONE && self.prev[b as usize] == NONE {
-            self.next[a as usize] = b;
-            self.prev[b as usize] = a;
+        if self.rings.next[a as usize] == NONE && self.rings.prev[b as usize] == NONE {
+            self.rings.next[a as usize] = b;
+            self.rings.prev[b as usize] = a;
         } else {
-            debug_assert!(self.next[b as usize] == NONE && self.prev[a as usize] == NONE);
-            self.next[b as usize] = a;
-            self.prev[a as usize] = b;
+            debug_assert!(
+                self.rings.next[b as usize] == NONE && self.rings.prev[a as usize] == NONE
+            );
+            self.rings.next[b as usize] = a;
+            self.rings.prev[a as usize] = b;
         }
     }
 
@@ -368,12 +345,12 @@ impl<'a> Walks<'a> {
                 // removed must be joined to the start of the other path, else one cycle is
                 // reversed first (the smaller one).
                 // Directed edges to remove, in the current orientations.
-                let mut edge_a = if self.next[a1 as usize] == b1 {
+                let mut edge_a = if self.rings.next[a1 as usize] == b1 {
                     (a1, b1)
                 } else {
                     (b1, a1)
                 };
-                let mut edge_b = if self.next[a2 as usize] == b2 {
+                let mut edge_b = if self.rings.next[a2 as usize] == b2 {
                     (a2, b2)
                 } else {
                     (b2, a2)
@@ -384,18 +361,18 @@ impl<'a> Walks<'a> {
                     .any(|&(n, _, new)| n == end_a && new == end_b);
                 if joins_ends {
                     // Reversing a cycle reverses its edges (a 2-cycle has both directions).
-                    if self.size[rb as usize] <= self.size[ra as usize] {
-                        self.reverse(a2);
+                    if self.rings.size(rb) <= self.rings.size(ra) {
+                        self.rings.reverse(a2);
                         edge_b = (edge_b.1, edge_b.0);
                     } else {
-                        self.reverse(a1);
+                        self.rings.reverse(a1);
                         edge_a = (edge_a.1, edge_a.0);
                     }
                 }
                 for (u, v) in [edge_a, edge_b] {
-                    debug_assert_eq!(self.next[u as usize], v);
-                    self.next[u as usize] = NONE;
-                    self.prev[v as usize] = NONE;
+                    debug_assert_eq!(self.rings.next[u as usize], v);
+                    self.rings.next[u as usize] = NONE;
+                    self.rings.prev[v as usize] = NONE;
                 }
                 if crossed {
                     self.link(a1, a2);
@@ -410,40 +387,26 @@ impl<'a> Walks<'a> {
             }
             Op::Detour { x, z, backward } => {
                 if backward {
-                    self.reverse(z);
+                    self.rings.reverse(z);
                 }
-                let (xn, zp) = (self.next[x as usize], self.prev[z as usize]);
-                let z2 = self.pix.len() as u32;
-                let x2 = z2 + 1;
-                for (copy, of) in [(z2, z), (x2, x)] {
-                    self.pix.push(self.pix[of as usize]);
+                let (z2, x2) = self.rings.detour(x, z);
+                for of in [z, x] {
                     self.xy.push(self.xy[of as usize]);
                     self.turn.push(0);
-                    self.cycle.push(self.cycle[of as usize]);
-                    self.next.push(NONE);
-                    self.prev.push(NONE);
-                    debug_assert_eq!(self.pix.len() as u32, copy + 1);
                 }
-                self.next[x as usize] = z;
-                self.prev[z as usize] = x;
-                self.next[zp as usize] = z2;
-                self.prev[z2 as usize] = zp;
-                self.next[z2 as usize] = x2;
-                self.prev[x2 as usize] = z2;
-                self.next[x2 as usize] = xn;
-                self.prev[xn as usize] = x2;
-                self.size[ra as usize] += 2;
-                self.coverage[self.pix[x as usize] as usize] += 1;
-                self.coverage[self.pix[z as usize] as usize] += 1;
+                self.coverage[self.rings.key[x as usize] as usize] += 1;
+                self.coverage[self.rings.key[z as usize] as usize] += 1;
                 for n in [x, z, z2, x2] {
                     self.recount_turn(n);
                 }
             }
         }
-        let merged = self.size[ra as usize] + self.size[rb as usize];
-        self.cycles.union(ra, rb);
-        let root = self.cycles.find_mut(ra);
-        self.size[root as usize] = merged;
+        let added = if matches!(op, Op::Detour { .. }) {
+            2
+        } else {
+            0
+        };
+        self.rings.merged(ra, rb, added);
         self.stats.merges += 1;
         if delta <= 0 {
             self.stats.free_merges += 1;
@@ -454,9 +417,9 @@ impl<'a> Walks<'a> {
     /// vertically (`Some(false)`), or turns there (`None`).
     fn straight_axis(&self, n: u32) -> Option<bool> {
         let (p, q, r) = (
-            self.at(self.prev[n as usize]),
+            self.at(self.rings.prev[n as usize]),
             self.at(n),
-            self.at(self.next[n as usize]),
+            self.at(self.rings.next[n as usize]),
         );
         match (p.dir_to(q), q.dir_to(r)) {
             (Some(d), Some(e)) if d == e => Some(d.is_horizontal()),
@@ -474,7 +437,7 @@ impl<'a> Walks<'a> {
         for p in 0..self.region.len() {
             for &x in self.visits(p) {
                 for &z in self.visits(p) {
-                    if x < z && self.cycle[x as usize] != self.cycle[z as usize] {
+                    if x < z && !self.rings.same_input(x, z) {
                         let axes = (self.straight_axis(x), self.straight_axis(z));
                         if matches!(axes, (Some(a), Some(b)) if a != b) {
                             crossing.push((x, z));
@@ -505,13 +468,13 @@ impl<'a> Walks<'a> {
         }
         let region = self.region;
         for p in 0..region.len() {
-            for k in self.index.range(p) {
-                let x = self.index.node(k);
+            for k in self.rings.index().range(p) {
+                let x = self.rings.index().node(k);
                 for q in region.neighbors(p) {
-                    for l in self.index.range(q) {
-                        let z = self.index.node(l);
+                    for l in self.rings.index().range(q) {
+                        let z = self.rings.index().node(l);
                         if x < z
-                            && self.cycle[x as usize] != self.cycle[z as usize]
+                            && !self.rings.same_input(x, z)
                             && self.root_of(x) != self.root_of(z)
                         {
                             f(self, x, z);
@@ -523,25 +486,9 @@ impl<'a> Walks<'a> {
     }
 
     fn into_cover(self) -> CycleCover {
-        let mut seen = vec![false; self.pix.len()];
-        let mut cycles: Vec<Walk> = Vec::new();
-        for start in 0..self.pix.len() as u32 {
-            if seen[start as usize] || self.next[start as usize] == NONE {
-                continue;
-            }
-            let mut walk = Vec::new();
-            let mut n = start;
-            loop {
-                seen[n as usize] = true;
-                walk.push(self.at(n));
-                n = self.next[n as usize];
-                if n == start {
-                    break;
-                }
-            }
-            cycles.push(walk);
-        }
-        CycleCover::new(cycles)
+        let region = self.region;
+        let pixels = |walk: Vec<u32>| walk.into_iter().map(|p| region.pixel(p as usize)).collect();
+        CycleCover::new(self.rings.walks().into_iter().map(pixels).collect())
     }
 }
 
@@ -691,6 +638,7 @@ pub(crate) fn cover_and_tour(
 mod tests {
     use super::*;
     use crate::region::Dir;
+    use crate::tour::Walk;
 
     fn rect_cycle(x0: i32, y0: i32, w: i32, h: i32) -> Walk {
         let mut out = Vec::new();

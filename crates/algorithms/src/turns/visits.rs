@@ -2,6 +2,7 @@
 //! are settled (all their visits in one merged cycle): the index both cycle-merging stages
 //! (grid regions in [`super::merge`], discrete instances in `crate::discrete::merge`) keep.
 
+use petgraph::unionfind::UnionFind;
 use std::ops::Range;
 
 /// The input nodes at each key in compressed rows, with the keys known to be settled.
@@ -66,5 +67,162 @@ impl Visits {
         let settled = self.nodes[range].iter().all(|&node| root(node) == first);
         self.known_settled[p] = settled;
         settled
+    }
+}
+
+/// No node (an open end while an exchange relinks two rings).
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// The walks of a cover as rings of nodes, the state both cycle-merging stages change: node
+/// `i` visits key `key[i]` (a pixel's or a vertex's index), `next`/`prev` link each walk's
+/// nodes in a ring, `cycle` is the input walk of each node and a union-find over input walks
+/// tells which are merged, with the nodes of each merged walk counted at its root. The index of
+/// the input nodes per key ([`Visits`]) leaves out detour copies: each belongs to the merged
+/// walk of the node it copies.
+#[derive(Clone, Debug)]
+pub(crate) struct Rings {
+    pub(crate) key: Vec<u32>,
+    pub(crate) next: Vec<u32>,
+    pub(crate) prev: Vec<u32>,
+    /// Input walk of each node (detour copies inherit their copy's).
+    cycle: Vec<u32>,
+    /// Union-find over input walks: petgraph's (roots are only compared, so which one a
+    /// union keeps does not matter).
+    cycles: UnionFind<u32>,
+    /// Nodes per merged walk, kept at its union-find root.
+    size: Vec<usize>,
+    index: Visits,
+}
+
+impl Rings {
+    /// The rings of `walks` (each a closed walk of keys below `n`, none empty).
+    pub(crate) fn new(walks: &[Vec<u32>], n: usize) -> Rings {
+        let nodes: usize = walks.iter().map(Vec::len).sum();
+        let mut r = Rings {
+            key: Vec::with_capacity(nodes),
+            next: Vec::with_capacity(nodes),
+            prev: Vec::with_capacity(nodes),
+            cycle: Vec::with_capacity(nodes),
+            cycles: UnionFind::new(walks.len()),
+            size: Vec::with_capacity(walks.len()),
+            index: Visits::default(),
+        };
+        for (c, walk) in walks.iter().enumerate() {
+            let first = r.key.len() as u32;
+            let m = walk.len() as u32;
+            for (k, &key) in walk.iter().enumerate() {
+                let k = k as u32;
+                r.key.push(key);
+                r.next.push(first + (k + 1) % m);
+                r.prev.push(first + (k + m - 1) % m);
+                r.cycle.push(c as u32);
+            }
+            r.size.push(walk.len());
+        }
+        r.index = Visits::of(&r.key, n);
+        r
+    }
+
+    /// The number of nodes (detour copies included).
+    pub(crate) fn len(&self) -> usize {
+        self.key.len()
+    }
+
+    /// The input nodes at key `p`.
+    pub(crate) fn visits(&self, p: usize) -> &[u32] {
+        self.index.at(p)
+    }
+
+    /// The index of the input nodes per key.
+    pub(crate) fn index(&self) -> &Visits {
+        &self.index
+    }
+
+    /// Whether nodes `a` and `b` belong to the same input walk.
+    pub(crate) fn same_input(&self, a: u32, b: u32) -> bool {
+        self.cycle[a as usize] == self.cycle[b as usize]
+    }
+
+    /// The merged walk of `node` (its union-find root).
+    pub(crate) fn root_of(&mut self, node: u32) -> u32 {
+        self.cycles.find_mut(self.cycle[node as usize])
+    }
+
+    /// The number of nodes of the merged walk whose root is `root`.
+    pub(crate) fn size(&self, root: u32) -> usize {
+        self.size[root as usize]
+    }
+
+    /// Whether every visit of key `p` already lies in one merged walk (settledness only grows
+    /// as walks merge).
+    pub(crate) fn settled(&mut self, p: usize) -> bool {
+        let (cycles, cycle) = (&mut self.cycles, &self.cycle);
+        self.index
+            .settled(p, |node| cycles.find_mut(cycle[node as usize]))
+    }
+
+    /// Reverses the ring through `start`.
+    pub(crate) fn reverse(&mut self, start: u32) {
+        let mut n = start;
+        loop {
+            let k = n as usize;
+            std::mem::swap(&mut self.next[k], &mut self.prev[k]);
+            n = self.next[k];
+            if n == start {
+                break;
+            }
+        }
+    }
+
+    /// Inserts, after `x`, a step to `z`, `z`'s ring walked forward back to `z` (a copy of
+    /// `z`), and a step back to `x` (a copy of `x`), which joins the two rings; returns the
+    /// copies (of `z`, of `x`). The caller then records the merge with [`Rings::merged`].
+    pub(crate) fn detour(&mut self, x: u32, z: u32) -> (u32, u32) {
+        let (xn, zp) = (self.next[x as usize], self.prev[z as usize]);
+        let z_copy = self.key.len() as u32;
+        let x_copy = z_copy + 1;
+        for of in [z, x] {
+            self.key.push(self.key[of as usize]);
+            self.cycle.push(self.cycle[of as usize]);
+            self.next.push(NONE);
+            self.prev.push(NONE);
+        }
+        for (a, b) in [(x, z), (zp, z_copy), (z_copy, x_copy), (x_copy, xn)] {
+            self.next[a as usize] = b;
+            self.prev[b as usize] = a;
+        }
+        (z_copy, x_copy)
+    }
+
+    /// Records that the merged walks with roots `ra` and `rb` are one now, with `added` more
+    /// nodes than the two had (a detour's two copies).
+    pub(crate) fn merged(&mut self, ra: u32, rb: u32, added: usize) {
+        let nodes = self.size[ra as usize] + self.size[rb as usize] + added;
+        self.cycles.union(ra, rb);
+        let root = self.cycles.find_mut(ra);
+        self.size[root as usize] = nodes;
+    }
+
+    /// The rings as walks of keys, each from its lowest node (nodes left unlinked skipped).
+    pub(crate) fn walks(&self) -> Vec<Vec<u32>> {
+        let mut seen = vec![false; self.len()];
+        let mut out = Vec::new();
+        for start in 0..self.len() as u32 {
+            if seen[start as usize] || self.next[start as usize] == NONE {
+                continue;
+            }
+            let mut walk = Vec::new();
+            let mut n = start;
+            loop {
+                seen[n as usize] = true;
+                walk.push(self.key[n as usize]);
+                n = self.next[n as usize];
+                if n == start {
+                    break;
+                }
+            }
+            out.push(walk);
+        }
+        out
     }
 }

@@ -2,7 +2,7 @@
 //! optimum is the shortest closed walk visiting every vertex (see the parent module).
 
 use super::{Answer, LowerBound, is_bipartite, is_connected, tree_walks};
-use crate::cuts::violated_cuts;
+use crate::cuts::subtour_rows;
 use crate::driver::{self, CutModel, Stop};
 use crate::lp::{Deadline, Formulation, Row, Settings};
 use crate::topology::graph_components;
@@ -111,21 +111,7 @@ impl CutModel for LengthModel<'_> {
     }
 
     fn separate(&self, x: &[f64], _integral: bool, deadline: &Deadline) -> Vec<Row> {
-        let weighted: Vec<(usize, usize, f64)> = self
-            .edges
-            .iter()
-            .enumerate()
-            .map(|(k, &(a, b))| (a, b, x[k]))
-            .collect();
-        violated_cuts(self.inst.len(), &weighted, 2.0 - 1e-6, deadline)
-            .into_iter()
-            .map(|s| {
-                let terms = (0..self.edges.len())
-                    .filter(|&k| s[self.edges[k].0] != s[self.edges[k].1])
-                    .map(|k| (k, 1.0));
-                Row::at_least(terms, 2.0)
-            })
-            .collect()
+        subtour_rows(self.inst.len(), &self.edges, x, deadline)
     }
 
     fn is_feasible(&self, x: &[f64]) -> bool {

@@ -180,8 +180,8 @@ pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> D
         Answer::stopped(Stop::Error("the instance has no vertex".into()), none)
     } else {
         match objective {
-            Objective::LawnTsp => Answer::stopped(
-                Stop::Error("lawn-tsp is not defined on discrete instances".into()),
+            Objective::LawnTsp | Objective::LawnLength => Answer::stopped(
+                Stop::Error(format!("{objective} is not defined on discrete instances")),
                 none,
             ),
             Objective::Length => solve_length(inst, &deadline, &settings),

@@ -7,45 +7,13 @@ use super::rooks::{channels, rook_placement};
 use super::{Answer, LowerBound, NONE, is_connected, tree_walks};
 use crate::Objective;
 use crate::cuts::violated_cuts;
-use crate::driver::{self, CutModel, Solved, Stop};
+use crate::driver::{self, CutModel, Stop};
+use crate::goal::TurnGoal;
 use crate::lp::{Deadline, Formulation, Row, Settings};
 use crate::topology::graph_components;
 use crate::walks::splice_walks;
 use mowmill_core::discrete::{Discrete, VertexWalk};
 use std::cell::Cell;
-
-/// Which objective the passage model minimizes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Goal {
-    CycleCover,
-    Tour,
-    /// Length + C · turns over tours.
-    Weighted(u32),
-    /// Length + C · turns over cycle covers.
-    WeightedCycleCover(u32),
-}
-
-impl Goal {
-    fn of(objective: Objective) -> Goal {
-        match objective {
-            Objective::CcTurns => Goal::CycleCover,
-            Objective::Weighted(turn_cost) => Goal::Weighted(turn_cost),
-            Objective::WeightedCc(turn_cost) => Goal::WeightedCycleCover(turn_cost),
-            _ => Goal::Tour,
-        }
-    }
-
-    fn turn_cost(self) -> Option<u32> {
-        match self {
-            Goal::Weighted(c) | Goal::WeightedCycleCover(c) => Some(c),
-            _ => None,
-        }
-    }
-
-    fn is_tour(self) -> bool {
-        matches!(self, Goal::Tour | Goal::Weighted(_))
-    }
-}
 
 /// A merging move of [`PassageModel::connect`]: its cost change, the columns losing one
 /// passage and the passages gained as (vertex, port, port).
@@ -66,7 +34,7 @@ pub(super) struct Pass {
 /// The passage model (see the module documentation).
 pub(super) struct PassageModel<'a> {
     inst: &'a Discrete,
-    goal: Goal,
+    goal: TurnGoal,
     /// Global index of local port 0 of every vertex (cumulative degrees).
     port_start: Vec<usize>,
     /// Whether each global port's edge lies on a cyclic channel.
@@ -92,7 +60,7 @@ pub(super) struct PassageModel<'a> {
 }
 
 impl<'a> PassageModel<'a> {
-    fn new(inst: &'a Discrete, goal: Goal) -> PassageModel<'a> {
+    fn new(inst: &'a Discrete, goal: TurnGoal) -> PassageModel<'a> {
         let n = inst.len();
         let mut port_start = Vec::with_capacity(n + 1);
         let mut total = 0;
@@ -148,7 +116,7 @@ impl<'a> PassageModel<'a> {
             }
         }
         m.first.push(m.vars.len());
-        if let Goal::WeightedCycleCover(c) = goal {
+        if let TurnGoal::WeightedCycleCover(c) = goal {
             for v in 0..n {
                 if inst.degree(v as u32) > 0 {
                     m.stay[v] = f.num_cols() as u32;
@@ -858,13 +826,7 @@ impl CutModel for PassageModel<'_> {
     fn tighten(&self, f: &mut Formulation, target: u64) {
         let n = self.covered() as f64;
         let target = target as f64;
-        let (budget, rest) = match self.goal {
-            Goal::Weighted(c) if c > 0 => ((target - n).max(0.0) / f64::from(c), n - 1.0),
-            Goal::Weighted(_) => (f64::INFINITY, n - 1.0),
-            Goal::WeightedCycleCover(c) if c > 0 => (target / f64::from(c), n - 1.0),
-            Goal::WeightedCycleCover(_) => (f64::INFINITY, 0.0),
-            _ => (target, 0.0),
-        };
+        let (budget, rest) = self.goal.turn_budget(n, target);
         for (k, p) in self.vars.iter().enumerate() {
             let c = f.cost[k];
             let mut hi = if c > 0.0 {
@@ -892,14 +854,14 @@ impl CutModel for PassageModel<'_> {
 /// The cheap bound of a turn objective: a greedy rook placement (turns of any cycle cover,
 /// [`rook_placement`]), plus the length bound `V` for `weighted` tours (every vertex visited;
 /// both hold for the same tour).
-pub(super) fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> LowerBound {
+pub(super) fn cheap_turn_bound(inst: &Discrete, goal: TurnGoal) -> LowerBound {
     let rooks = rook_placement(inst, Some(0.0)).size;
     match goal {
-        Goal::CycleCover | Goal::Tour => LowerBound {
+        TurnGoal::CycleCover | TurnGoal::Tour => LowerBound {
             value: rooks,
             source: "greedy rook placement",
         },
-        Goal::Weighted(c) => LowerBound {
+        TurnGoal::Weighted(c) => LowerBound {
             value: if inst.len() >= 2 {
                 inst.len() as u64
             } else {
@@ -907,7 +869,7 @@ pub(super) fn cheap_turn_bound(inst: &Discrete, goal: Goal) -> LowerBound {
             } + u64::from(c) * rooks,
             source: "V + C * greedy rook placement",
         },
-        Goal::WeightedCycleCover(c) => LowerBound {
+        TurnGoal::WeightedCycleCover(c) => LowerBound {
             value: u64::from(c) * rooks,
             source: "C * greedy rook placement",
         },
@@ -920,7 +882,7 @@ pub(super) fn solve_passages(
     deadline: &Deadline,
     settings: &Settings,
 ) -> Answer {
-    let goal = Goal::of(objective);
+    let goal = TurnGoal::of(objective).expect("solve_passages is called for turn objectives");
     let lower = cheap_turn_bound(inst, goal);
     if goal.is_tour() {
         if !is_connected(inst) {
@@ -953,23 +915,14 @@ pub(super) fn solve_passages(
         })
         .filter(|c| model.is_feasible_counts(c))
         .map(|c| PassageModel::as_x(&c));
-    let s = if model.formulation().num_cols() == 0 {
-        Solved {
-            stop: Stop::Optimal,
-            best: Some(Vec::new()),
-            upper: Some(constant),
-            lower: constant,
-            lower_source: lower.source,
-            lp_bound: None,
-            rounds: 0,
-        }
-    } else {
-        let inner = lower.value.saturating_sub(constant);
-        let mut s = driver::run(&model, start, (inner, lower.source), deadline, settings);
-        s.lower += constant;
-        s.lp_bound = s.lp_bound.map(|b| b + constant);
-        s
-    };
+    let s = driver::run_with_constant(
+        &model,
+        start,
+        (lower.value, lower.source),
+        constant,
+        deadline,
+        settings,
+    );
     let walks = s.best.as_ref().map(|x| {
         let mut counts = model.counts(x);
         if goal.is_tour() {
