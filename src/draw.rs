@@ -553,6 +553,52 @@ pub(crate) fn text_width(text: Option<&str>, size: f64) -> f64 {
     })
 }
 
+/// Where a drawing goes on its canvas: the canvas size and the drawing's top-left corner, in
+/// output pixels ([`canvas`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Canvas {
+    pub(crate) width: u32,
+    pub(crate) height: u32,
+    pub(crate) left: f64,
+    pub(crate) top: f64,
+}
+
+/// The canvas of every picture: a drawing of `inner` = (width, height) output pixels centred
+/// within the margins, the title (if any) above it, then `below` = (least width, height) of a
+/// band under it (a legend, or nothing), then the caption (if any); refused when the canvas
+/// would exceed [`MAX_IMAGE_PX`] pixels. Call [`ensure_fonts`] first.
+pub(crate) fn canvas(
+    inner: (f64, f64),
+    title: Option<&str>,
+    caption: Option<&str>,
+    below: (f64, f64),
+) -> Result<Canvas> {
+    let wide = inner
+        .0
+        .max(text_width(title, TITLE_PX))
+        .max(text_width(caption, CAPTION_PX))
+        .max(below.0);
+    let title_band = if title.is_some() { TITLE_PX * 1.5 } else { 0.0 };
+    let caption_band = if caption.is_some() {
+        CAPTION_PX * 1.6
+    } else {
+        0.0
+    };
+    let width = (wide + 2.0 * MARGIN_PX).ceil();
+    let height = (inner.1 + title_band + below.1 + caption_band + 2.0 * MARGIN_PX).ceil();
+    if width * height > MAX_IMAGE_PX as f64 {
+        return Err(Error::invalid(format!(
+            "the picture would be {width} × {height} px; choose a smaller pixel size"
+        )));
+    }
+    Ok(Canvas {
+        width: width as u32,
+        height: height as u32,
+        left: ((width - inner.0) / 2.0).round(),
+        top: (MARGIN_PX + title_band).round(),
+    })
+}
+
 /// Where the grid goes on the canvas.
 #[derive(Clone, Copy, Debug)]
 struct Layout {
@@ -582,33 +628,19 @@ impl Layout {
             frame.width() as f64 * pixel_size,
             frame.height() as f64 * pixel_size,
         );
-        let wide = grid_w
-            .max(text_width(opts.title.as_deref(), TITLE_PX))
-            .max(text_width(opts.caption.as_deref(), CAPTION_PX));
-        let title_band = if opts.title.is_some() {
-            TITLE_PX * 1.5
-        } else {
-            0.0
-        };
-        let caption_band = if opts.caption.is_some() {
-            CAPTION_PX * 1.6
-        } else {
-            0.0
-        };
-        let width = (wide + 2.0 * MARGIN_PX).ceil();
-        let height = (grid_h + title_band + caption_band + 2.0 * MARGIN_PX).ceil();
-        if width * height > MAX_IMAGE_PX as f64 {
-            return Err(Error::invalid(format!(
-                "the picture would be {width} × {height} px; choose a smaller pixel size"
-            )));
-        }
+        let c = canvas(
+            (grid_w, grid_h),
+            opts.title.as_deref(),
+            opts.caption.as_deref(),
+            (0.0, 0.0),
+        )?;
         Ok(Layout {
             frame,
             pixel_size,
-            left: ((width - grid_w) / 2.0).round(),
-            top: (MARGIN_PX + title_band).round(),
-            width: width as u32,
-            height: height as u32,
+            left: c.left,
+            top: c.top,
+            width: c.width,
+            height: c.height,
         })
     }
 

@@ -22,10 +22,9 @@
 use crate::discrete::check;
 use crate::discrete::{Discrete, VertexWalk};
 use crate::draw::{
-    AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DETAIL_LIMIT, DrawOptions, DrawResult, FONT_FAMILY,
-    Format, GRID_LINE, JOG, MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, Picture, REGION_FILL,
-    STRAND_GAP, STRAND_SPREAD, Strokes, TITLE_PX, draw_title_and_caption, ensure_fonts,
-    write_picture,
+    AUTO_SIDE_PX, CAPTION_COLOUR, DETAIL_LIMIT, DrawOptions, DrawResult, FONT_FAMILY, Format,
+    GRID_LINE, JOG, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, Picture, REGION_FILL, STRAND_GAP,
+    STRAND_SPREAD, Strokes, canvas, draw_title_and_caption, ensure_fonts, write_picture,
 };
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -620,8 +619,6 @@ fn walk_shapes(
 // ---------------------------------------------------------------------------------------------
 
 const LABEL_PX: f64 = 15.0;
-/// The largest picture, in output pixels.
-const MAX_IMAGE_PX: f64 = 64_000_000.0;
 /// Gap between panels, in edge lengths.
 const PANEL_GAP: f64 = 1.0;
 /// At most this many panels in a row when there are few layers.
@@ -688,35 +685,14 @@ impl Layout {
         };
         let scale = pixel_size / g.unit;
         let label_band = if panels > 1 { LABEL_PX * 1.6 } else { 0.0 };
-        let text_width = |text: Option<&str>, size: f64| {
-            text.map_or(0.0, |t| {
-                let font = FontDesc::new(FontFamily::from(FONT_FAMILY), size, FontStyle::Normal);
-                font.box_size(t).map_or(0.0, |(w, _)| f64::from(w))
-            })
-        };
         let (grid_w, grid_h) = (ew * scale, eh * scale + rows as f64 * label_band);
-        let wide = grid_w
-            .max(text_width(opts.title.as_deref(), TITLE_PX))
-            .max(text_width(opts.caption.as_deref(), CAPTION_PX));
-        let title_band = if opts.title.is_some() {
-            TITLE_PX * 1.5
-        } else {
-            0.0
-        };
-        let caption_band = if opts.caption.is_some() {
-            CAPTION_PX * 1.6
-        } else {
-            0.0
-        };
-        let width = (wide + 2.0 * MARGIN_PX).ceil();
-        let height = (grid_h + title_band + caption_band + 2.0 * MARGIN_PX).ceil();
-        if width * height > MAX_IMAGE_PX {
-            return Err(Error::invalid(format!(
-                "the picture would be {width} × {height} px; choose a smaller pixel size"
-            )));
-        }
-        let left = ((width - grid_w) / 2.0).round();
-        let top = (MARGIN_PX + title_band).round();
+        let c = canvas(
+            (grid_w, grid_h),
+            opts.title.as_deref(),
+            opts.caption.as_deref(),
+            (0.0, 0.0),
+        )?;
+        let (left, top) = (c.left, c.top);
         let origins = (0..panels)
             .map(|p| {
                 let (c, r) = ((p % cols) as f64, (p / cols) as f64);
@@ -734,8 +710,8 @@ impl Layout {
             corner: (g.bbox[0] - pad, g.bbox[3] + pad),
             label_band,
             panel_px: (pw * scale, ph * scale),
-            width: width as u32,
-            height: height as u32,
+            width: c.width,
+            height: c.height,
         })
     }
 

@@ -21,7 +21,8 @@ use super::{Erosion, Point, Polygon, Rational, Report, Tour, check, heading};
 use crate::draw::{
     AUTO_SIDE_PX, CAPTION_COLOUR, CAPTION_PX, DrawOptions, DrawResult, FONT_FAMILY, Format,
     MARGIN_PX, MAX_AUTO_PIXEL_SIZE, OUTLINE, PALETTE, Picture, REGION_FILL, Strokes, TITLE_COLOUR,
-    TITLE_PX, ensure_fonts, stroke_closed, stroke_segment, svg_string, text_width, write_picture,
+    TITLE_PX, canvas, ensure_fonts, stroke_closed, stroke_segment, svg_string, text_width,
+    write_picture,
 };
 use crate::error::{Error, Result};
 use plotters::coord::Shift;
@@ -432,30 +433,19 @@ impl Figure {
 
         ensure_fonts();
         let (grid_w, grid_h) = (w * pixel_size, h * pixel_size);
-        let wide = grid_w
-            .max(text_width(opts.title.as_deref(), TITLE_PX))
-            .max(text_width(caption.as_deref(), CAPTION_PX))
-            .max(legend_width(&legend));
-        let title_band = if opts.title.is_some() {
-            TITLE_PX * 1.5
-        } else {
-            0.0
-        };
-        let caption_band = if caption.is_some() {
-            CAPTION_PX * 1.6
-        } else {
-            0.0
-        };
-        let legend_band = LEGEND_PX * 2.2;
-        let width = (wide + 2.0 * MARGIN_PX).ceil();
-        let height = (grid_h + title_band + legend_band + caption_band + 2.0 * MARGIN_PX).ceil();
+        let c = canvas(
+            (grid_w, grid_h),
+            opts.title.as_deref(),
+            caption.as_deref(),
+            (legend_width(&legend), LEGEND_PX * 2.2),
+        )?;
         Ok(Figure {
             bounds,
             pixel_size,
-            left: ((width - grid_w) / 2.0).round(),
-            top: (MARGIN_PX + title_band).round(),
-            width: width as u32,
-            height: height as u32,
+            left: c.left,
+            top: c.top,
+            width: c.width,
+            height: c.height,
             outer,
             holes,
             swept,
