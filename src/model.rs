@@ -39,6 +39,23 @@ pub struct Recount {
     pub unit: u64,
 }
 
+impl Recount {
+    /// The recount in a report of the core's checker (grid regions and discrete instances,
+    /// whose lengths are whole units).
+    fn of<V>(report: crate::checker::Report<V>, objective: Objective) -> Recount {
+        Recount {
+            valid: report.valid,
+            error: report.error,
+            value: milling_value(objective, report.length, report.turns),
+            length: report.length,
+            turns: report.turns,
+            cycles: report.cycles,
+            max_coverage: u64::from(report.max_coverage),
+            unit: 1,
+        }
+    }
+}
+
 /// An instance of one model: what the one evaluation needs to know about it.
 pub trait InstanceModel {
     /// The walks an algorithm returns on this model.
@@ -241,6 +258,24 @@ pub struct ExactOutcome {
     pub message: Option<String>,
 }
 
+impl ExactOutcome {
+    /// The outcome of an exact solve of the grid or discrete solver, with the found walks'
+    /// largest coverage (`None` without walks).
+    fn of<W>(res: exact::ExactResult<W>, max_coverage: Option<u64>) -> ExactOutcome {
+        ExactOutcome {
+            value: res.value,
+            length: res.length,
+            turns: res.turns,
+            cycles: res.cycles,
+            status: res.status,
+            lower_bound: res.lower_bound,
+            valid: res.cover.as_ref().map(|_| res.valid),
+            max_coverage,
+            message: res.message,
+        }
+    }
+}
+
 /// The value of `objective` from a recount's length and turns.
 fn milling_value(objective: Objective, length: u64, turns: u64) -> u64 {
     match objective {
@@ -288,16 +323,7 @@ impl InstanceModel for Region {
         options: &Options,
     ) -> Result<Recount> {
         let report = evaluate::recount(self, cover, objective, options.cutter);
-        Ok(Recount {
-            valid: report.valid,
-            error: report.error,
-            value: milling_value(objective, report.length, report.turns),
-            length: report.length,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: u64::from(report.max_coverage),
-            unit: 1,
-        })
+        Ok(Recount::of(report, objective))
     }
 
     fn cheap_bound(&self, objective: Objective, options: &Options) -> Result<(u64, String)> {
@@ -340,17 +366,7 @@ impl InstanceModel for Region {
                 crate::checker::check(self, cover, crate::checker::Mode::Milling).max_coverage,
             )
         });
-        Ok(ExactOutcome {
-            value: res.value,
-            length: res.length,
-            turns: res.turns,
-            cycles: res.cycles,
-            status: res.status,
-            lower_bound: res.lower_bound,
-            valid: res.cover.as_ref().map(|_| res.valid),
-            max_coverage,
-            message: res.message,
-        })
+        Ok(ExactOutcome::of(res, max_coverage))
     }
 
     const FIGURE: &'static str = "png";
@@ -440,16 +456,7 @@ impl InstanceModel for Discrete {
 
     fn recount(&self, cover: &DiscreteCover, objective: Objective, _: &Options) -> Result<Recount> {
         let report = crate::discrete::check::check(self, &cover.cycles);
-        Ok(Recount {
-            valid: report.valid,
-            error: report.error,
-            value: milling_value(objective, report.length, report.turns),
-            length: report.length,
-            turns: report.turns,
-            cycles: report.cycles,
-            max_coverage: u64::from(report.max_coverage),
-            unit: 1,
-        })
+        Ok(Recount::of(report, objective))
     }
 
     fn cheap_bound(&self, objective: Objective, _: &Options) -> Result<(u64, String)> {
@@ -489,17 +496,8 @@ impl InstanceModel for Discrete {
             verbose: false,
         };
         let res = dexact::solve(self, objective, &options);
-        Ok(ExactOutcome {
-            value: res.value,
-            length: res.length,
-            turns: res.turns,
-            cycles: res.cycles,
-            status: res.status,
-            lower_bound: res.lower_bound,
-            valid: res.cover.as_ref().map(|_| res.valid),
-            max_coverage: res.max_coverage.map(u64::from),
-            message: res.message,
-        })
+        let max_coverage = res.max_coverage.map(u64::from);
+        Ok(ExactOutcome::of(res, max_coverage))
     }
 
     const FIGURE: &'static str = "svg";

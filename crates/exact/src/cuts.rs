@@ -33,6 +33,25 @@ pub fn subtour_rows(
         .collect()
 }
 
+/// The components of the nodes in `used` (of `n`) joined by `joined`, labelled 0, 1, ... in
+/// the order of their first node, with their number; a node not in use is labelled
+/// `u32::MAX`. The passage models' side (or port) graphs: a walk's support is one component.
+pub fn used_components(n: usize, joined: Vec<(usize, usize)>, used: &[bool]) -> (Vec<u32>, usize) {
+    let (raw, _) = graph_components(n, joined);
+    let mut map = std::collections::HashMap::new();
+    let label = (0..n)
+        .map(|i| {
+            if used[i] {
+                let next = map.len() as u32;
+                *map.entry(raw[i]).or_insert(next)
+            } else {
+                u32::MAX
+            }
+        })
+        .collect();
+    (label, map.len())
+}
+
 /// Node sets `S` (as membership vectors, never containing node 0 and never empty) whose cut
 /// weight is below `threshold`, for a graph on `n` nodes with weighted edges.
 ///

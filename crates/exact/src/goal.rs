@@ -4,6 +4,7 @@
 //! target value leaves).
 
 use crate::Objective;
+use crate::lp::Formulation;
 
 /// The goal of a passage model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,5 +60,30 @@ impl TurnGoal {
             TurnGoal::WeightedCycleCover(_) => (f64::INFINITY, 0.0),
             TurnGoal::CycleCover | TurnGoal::Tour => (target, 0.0),
         }
+    }
+}
+
+/// Lowers the upper bounds of the first `columns` columns of a passage model for solutions of
+/// value at most `target`, where the rest of a solution adds at least `rest` beside one column
+/// ([`TurnGoal::turn_budget`]): a column of cost c > 0 is used at most (target − rest) / c
+/// times, and a column `straight_cap` caps (a straight passage, at most so many per turn
+/// budget) at most that often. A bound never drops below the column's lower bound.
+pub(crate) fn tighten_columns(
+    f: &mut Formulation,
+    columns: usize,
+    (target, rest): (f64, f64),
+    straight_cap: impl Fn(usize) -> Option<f64>,
+) {
+    for k in 0..columns {
+        let c = f.cost[k];
+        let mut hi = if c > 0.0 {
+            ((target - rest).max(0.0) / c).floor()
+        } else {
+            f64::INFINITY
+        };
+        if let Some(cap) = straight_cap(k) {
+            hi = hi.min(cap.floor());
+        }
+        f.hi[k] = f.hi[k].min(hi).max(f.lo[k]);
     }
 }

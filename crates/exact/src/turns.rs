@@ -33,13 +33,12 @@
 //! of whole pixels (plain `x(δ(S)) >= 2`) are separated exactly by minimum cuts; cuts between
 //! side components (crossing walks) from the components of the support.
 
-use super::cuts::violated_cuts;
+use super::cuts::{used_components, violated_cuts};
 use super::driver::CutModel;
-use super::goal::TurnGoal;
+use super::goal::{TurnGoal, tighten_columns};
 use super::lp::{Deadline, Formulation, Row};
 use super::walks::{Passage, passage_walks, splice_walks};
 use crate::region::{Dir, Pixel, Region};
-use crate::topology::graph_components;
 use petgraph::unionfind::UnionFind;
 
 const NONE: u32 = u32::MAX;
@@ -218,19 +217,7 @@ impl<'a> PassageModel<'a> {
                 joined.push((v * 4 + d as usize, w * 4 + ((d + 2) % 4) as usize));
             }
         }
-        let (raw, _) = graph_components(4 * n, joined);
-        let mut map = std::collections::HashMap::new();
-        let label = (0..4 * n)
-            .map(|i| {
-                if used[i] {
-                    let next = map.len() as u32;
-                    *map.entry(raw[i]).or_insert(next)
-                } else {
-                    u32::MAX
-                }
-            })
-            .collect();
-        (label, map.len())
+        used_components(4 * n, joined, &used)
     }
 
     /// A cut row `Σ_{edges across S} x_e + Σ_{passages across S} p >= 2` for a side set `S`.
@@ -644,18 +631,10 @@ impl CutModel for PassageModel<'_> {
         let n = (self.region.len() - self.isolated) as f64;
         let target = target as f64;
         let (turn_budget, rest) = self.goal.turn_budget(n, target);
-        for (k, p) in self.vars.iter().enumerate() {
-            let c = f.cost[k];
-            let mut hi = if c > 0.0 {
-                ((target - rest).max(0.0) / c).floor()
-            } else {
-                f64::INFINITY
-            };
-            if passage_turns(p.a, p.b) == 0 {
-                hi = hi.min((turn_budget / 2.0).floor());
-            }
-            f.hi[k] = f.hi[k].min(hi).max(f.lo[k]);
-        }
+        tighten_columns(f, self.vars.len(), (target, rest), |k| {
+            let p = self.vars[k];
+            (passage_turns(p.a, p.b) == 0).then_some(turn_budget / 2.0)
+        });
     }
 
     fn heuristic_caps(&self) -> Option<Vec<f64>> {

@@ -6,11 +6,10 @@
 use super::rooks::{channels, rook_placement};
 use super::{Answer, LowerBound, NONE, is_connected, tree_walks};
 use crate::Objective;
-use crate::cuts::violated_cuts;
+use crate::cuts::{used_components, violated_cuts};
 use crate::driver::{self, CutModel, Stop};
-use crate::goal::TurnGoal;
+use crate::goal::{TurnGoal, tighten_columns};
 use crate::lp::{Deadline, Formulation, Row, Settings};
-use crate::topology::graph_components;
 use crate::walks::splice_walks;
 use mowmill_core::discrete::{Discrete, VertexWalk};
 use std::cell::Cell;
@@ -240,19 +239,7 @@ impl<'a> PassageModel<'a> {
                 joined.push((self.global(v, pv), self.global(w, pw)));
             }
         }
-        let (raw, _) = graph_components(total, joined);
-        let mut map = std::collections::HashMap::new();
-        let label = (0..total)
-            .map(|i| {
-                if used[i] {
-                    let next = map.len() as u32;
-                    *map.entry(raw[i]).or_insert(next)
-                } else {
-                    u32::MAX
-                }
-            })
-            .collect();
-        (label, map.len())
+        used_components(total, joined, &used)
     }
 
     /// The crossing of a port set `S` as terms: `Σ_{edges across S} x_e + Σ_{passages
@@ -827,18 +814,10 @@ impl CutModel for PassageModel<'_> {
         let n = self.covered() as f64;
         let target = target as f64;
         let (budget, rest) = self.goal.turn_budget(n, target);
-        for (k, p) in self.vars.iter().enumerate() {
-            let c = f.cost[k];
-            let mut hi = if c > 0.0 {
-                ((target - rest).max(0.0) / c).floor()
-            } else {
-                f64::INFINITY
-            };
-            if self.turn(p.v, p.a, p.b) == 0 && !self.cyclic[self.global(p.v, p.a)] {
-                hi = hi.min(budget.floor());
-            }
-            f.hi[k] = f.hi[k].min(hi).max(f.lo[k]);
-        }
+        tighten_columns(f, self.vars.len(), (target, rest), |k| {
+            let p = self.vars[k];
+            (self.turn(p.v, p.a, p.b) == 0 && !self.cyclic[self.global(p.v, p.a)]).then_some(budget)
+        });
     }
 
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
