@@ -164,6 +164,23 @@ pub struct Known {
     pub source: String,
 }
 
+impl Known {
+    /// What an exact solve of the objective called `name` proved: its optimum `opt` when it
+    /// found one (source `opt:NAME`), else only its lower bound (`exact-bound:NAME`).
+    pub fn proven(name: &str, opt: Option<u64>, lower_bound: Option<u64>, status: String) -> Known {
+        let source = match opt {
+            Some(_) => format!("opt:{name}"),
+            None => format!("exact-bound:{name}"),
+        };
+        Known {
+            opt,
+            lower_bound,
+            status,
+            source,
+        }
+    }
+}
+
 impl Reference {
     /// Records an exact solve of `objective`. A tour is a cycle cover, so a bound on the
     /// cycle-cover optimum also bounds the tour optimum: callers record both.

@@ -326,3 +326,44 @@ fn bench_rows_agree_on_a_grid_region_and_its_discrete_export() {
     let cells: Vec<&str> = row.split('|').map(str::trim).collect();
     assert_eq!(cells[6], "10", "{row}");
 }
+
+/// `solve FILE.dm --merge naive --exact` does both: the naive merge (whose tour differs from
+/// the smart one's on this hexagonal instance) and the exact optima of both turn objectives,
+/// equal to what `mowmill exact` proves, against which the guarantees are decided.
+#[test]
+fn solve_merges_naively_and_decides_against_the_exact_optima() {
+    let dir = temp_dir("discrete-solve-exact");
+    let hex = dir.join("hex.hex");
+    ok(&["gen", "hex", "--n", "30", "--seed", "5", "--out", s(&hex)]);
+    let solve = |extra: &[&str]| {
+        let mut args = vec!["solve", s(&hex), "--algo", "discrete-star-cover", "--json"];
+        args.extend_from_slice(extra);
+        json(&ok(&args))
+    };
+    let smart = solve(&[]);
+    let naive = solve(&["--merge", "naive"]);
+    let both = solve(&["--merge", "naive", "--exact", "--time-limit", "60"]);
+    assert_eq!(both["options"]["merge"], "naive");
+    assert_eq!(smart["options"]["merge"], "smart");
+    assert_ne!(naive["tour"]["turns"], smart["tour"]["turns"]);
+    assert_eq!(both["tour"], {
+        let mut t = naive["tour"].clone();
+        t["lower_bound"] = both["tour"]["lower_bound"].clone();
+        t["lb_source"] = both["tour"]["lb_source"].clone();
+        t
+    });
+    assert!(smart.get("exact").is_none());
+    for (objective, key) in [("cc-turns", "cc"), ("turns", "tour")] {
+        let exact = json(&ok(&["exact", s(&hex), "--objective", objective, "--json"]));
+        assert_eq!(exact["status"], "optimal", "{exact}");
+        assert_eq!(both["exact"][objective]["status"], "optimal");
+        assert_eq!(both["exact"][objective]["value"], exact["value"]);
+        assert_eq!(both[key]["lower_bound"], exact["value"]);
+        assert_eq!(both[key]["lb_source"], format!("opt:{objective}"));
+        assert!(
+            both[key]["lower_bound"].as_u64() > naive[key]["lower_bound"].as_u64(),
+            "the optimum beats the rook placement here: {both}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

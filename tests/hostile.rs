@@ -106,9 +106,9 @@ fn absurd_limits_are_usage_errors() {
     }
 }
 
-/// Probes options a model or algorithm ignores (exit 0 before, silently dropped): --exact and
-/// --merge on a discrete instance, --exact on a non-integral WKT, --cutter and --time-limit on
-/// a turn-cost algorithm without --exact.
+/// Probes options a model or algorithm ignores (exit 0 before, silently dropped): --coverage4
+/// and --time-limit without --exact on a discrete instance, --exact on a non-integral WKT,
+/// --cutter and --time-limit on a turn-cost algorithm without --exact.
 #[test]
 fn ignored_options_are_refused() {
     let d = temp_dir("hostile-options");
@@ -124,14 +124,14 @@ fn ignored_options_are_refused() {
         gg.to_str().unwrap(),
     );
     for args in [
+        vec!["solve", dm, "--algo", "discrete-star-cover", "--coverage4"],
         vec![
             "solve",
             dm,
             "--algo",
             "discrete-star-cover",
-            "--merge",
-            "naive",
-            "--exact",
+            "--time-limit",
+            "5",
         ],
         vec![
             "solve",

@@ -133,18 +133,27 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             ));
         };
         let model = format!("discrete instances ({})", a.file.display());
-        refuse_ignored(&a, &model, &["--objective", "--cycle-cover"])?;
+        let mut applies = vec!["--objective", "--cycle-cover", "--merge", "--exact"];
+        if a.exact {
+            applies.push("--time-limit");
+        }
+        refuse_ignored(&a, &model, &applies)?;
         if let Some(o) = wanted.filter(|o| !matches!(o, Objective::Turns | Objective::CcTurns)) {
             bail!(mowmill::Error::invalid(format!(
                 "--objective {o} does not apply to {model}; expected turns or cc-turns"
             )));
         }
+        let mut options = Options::default();
+        if let Some(m) = &a.merge {
+            options.merge = m.parse().map_err(mowmill::Error::Invalid)?;
+        }
         return super::discrete::solve(
             &a.file,
             algo,
+            &options,
+            a.exact.then_some(time_limit),
             matches!(wanted, Some(Objective::CcTurns)),
-            a.tour_out.as_deref(),
-            a.json,
+            (a.tour_out.as_deref(), a.json),
         );
     }
     if kind == super::FileKind::Ortho {
@@ -240,19 +249,14 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         };
         let r = exact::solve(&inst.region, eo, &opts);
         let optimal = r.status == exact::Status::Optimal && r.valid;
-        reference.insert(
-            eo,
-            Known {
-                opt: if optimal { r.value } else { None },
-                lower_bound: Some(r.lower_bound),
-                status: r.status.to_string(),
-                source: if optimal {
-                    format!("opt:{eo}")
-                } else {
-                    format!("exact-bound:{eo}")
-                },
-            },
+        let opt = if optimal { r.value } else { None };
+        let known = Known::proven(
+            &eo.to_string(),
+            opt,
+            Some(r.lower_bound),
+            r.status.to_string(),
         );
+        reference.insert(eo, known);
         exact_json = serde_json::json!({
             "objective": eo.name(),
             "turn_cost": eo.turn_cost(),

@@ -840,16 +840,7 @@ fn exact_rows(
 
 /// What an exact row says about the optimum of its objective.
 fn known_from(row: &Row, name: &str) -> Known {
-    Known {
-        opt: row.opt,
-        lower_bound: row.lower_bound,
-        status: row.opt_status.clone(),
-        source: if row.opt.is_some() {
-            format!("opt:{name}")
-        } else {
-            format!("exact-bound:{name}")
-        },
-    }
+    Known::proven(name, row.opt, row.lower_bound, row.opt_status.clone())
 }
 
 /// The exact row of one `[[exact]]` objective on an instance, by its model's exact solver.
