@@ -429,7 +429,7 @@ impl InstanceModel for Discrete {
         &self,
         subject: Subject<'_>,
         options: &Options,
-        _: &[Objective],
+        wanted: &[Objective],
     ) -> Result<Solution<DiscreteCover>> {
         match subject {
             Subject::Registered(a) => match a.discrete {
@@ -439,10 +439,7 @@ impl InstanceModel for Discrete {
                     a.name
                 ))),
             },
-            Subject::Outside(o) => Err(Error::invalid(format!(
-                "{} is an outside algorithm: those run on grid regions only",
-                o.name
-            ))),
+            Subject::Outside(o) => o.run(self, wanted),
         }
     }
 
@@ -479,7 +476,7 @@ impl InstanceModel for Discrete {
         Some(format!("{name} does not run on discrete instances"))
     }
 
-    const TAKES_OUTSIDE: bool = false;
+    const TAKES_OUTSIDE: bool = true;
     const TAKES_OPTIONS: bool = true;
     const MEASURES_WEIGHTED: bool = false;
 

@@ -193,30 +193,25 @@ impl OutsideAlgorithm {
         })
     }
 
-    /// Runs the program on `region` for `objectives` and reads its walks back.
-    pub fn run(&self, region: &Region, objectives: &[Objective]) -> Result<Solution> {
+    /// Runs the program on `instance` for `objectives` and reads its walks back.
+    pub fn run<T: OutsideTarget>(
+        &self,
+        instance: &T,
+        objectives: &[Objective],
+    ) -> Result<Solution<T::Cover>> {
         let work = scratch_dir(&self.name)?;
-        let instance = work.path().join("instance.grid");
-        // The .grid format has no negative coordinates: shift the region into the quadrant
-        // and the walks back.
-        let b = region.bbox();
-        let (dx, dy) = ((-b.min_x).max(0), (-b.min_y).max(0));
-        let shifted = region.translated(dx, dy)?;
-        write_new(&instance, &GridFile::with_meta(shifted, &[]).to_text()?)?;
+        let (name, text) = instance.instance_file()?;
+        let file = work.path().join(name);
+        write_new(&file, &text)?;
         let per_objective = self.command.iter().any(|a| a.contains("{objective}"));
         let mut solution = Solution::default();
         if per_objective {
             for &objective in objectives {
-                let cover = self.run_once(region, work.path(), &instance, Some(objective))?;
-                let cover = shift(cover, -dx, -dy);
+                let cover = self.run_once(instance, work.path(), &file, Some(objective))?;
                 solution.outputs.push(Output { objective, cover });
             }
         } else {
-            let cover = shift(
-                self.run_once(region, work.path(), &instance, None)?,
-                -dx,
-                -dy,
-            );
+            let cover = self.run_once(instance, work.path(), &file, None)?;
             for &objective in objectives {
                 solution.outputs.push(Output {
                     objective,
@@ -227,13 +222,13 @@ impl OutsideAlgorithm {
         Ok(solution)
     }
 
-    fn run_once(
+    fn run_once<T: OutsideTarget>(
         &self,
-        region: &Region,
+        target: &T,
         work: &Path,
         instance: &Path,
         objective: Option<Objective>,
-    ) -> Result<CycleCover> {
+    ) -> Result<T::Cover> {
         let tag = objective.map_or("all".to_string(), |o| o.to_string());
         let tour_out = work.join(format!("tour-{tag}.json"));
         let fill = |a: &str| {
@@ -252,7 +247,7 @@ impl OutsideAlgorithm {
             .env("MOWMILL_TOUR_OUT", &tour_out)
             .env("MOWMILL_OBJECTIVE", objective.map_or("", |o| o.name()))
             .env("MOWMILL_TIME_LIMIT", self.time_limit.to_string())
-            .env("MOWMILL_N", region.len().to_string());
+            .env("MOWMILL_N", target.size().to_string());
         let token = confine::prepare(&mut cmd, self.memory_limit);
         let child = cmd.spawn().map_err(|e| {
             let memory = match self.memory_limit {
@@ -309,9 +304,76 @@ impl OutsideAlgorithm {
                 }
             )));
         }
-        read_tour(&tour_out, tour_bound(region.len())).map_err(|e| {
-            Error::invalid_output(format!("{}: {e}{}", self.name, stderr.note("stderr")))
-        })
+        read_tour(&tour_out, tour_bound(target.size()))
+            .and_then(|text| {
+                target
+                    .parse_tour(&text, &tour_out.display().to_string())
+                    .map_err(|e| format!("malformed tour: {e}"))
+            })
+            .map_err(|e| {
+                Error::invalid_output(format!("{}: {e}{}", self.name, stderr.note("stderr")))
+            })
+    }
+}
+
+/// An instance an outside program can solve: the file it is given, and how the tour file it
+/// writes reads back. Grid regions are given as `.grid` files (shifted into the quadrant, the
+/// walks shifted back) and answer with the tour JSON of `validate`; discrete instances are
+/// given as `.dm` files and answer with discrete tour JSON (`{"cycles": [[0, 1, ...]]}`).
+pub trait OutsideTarget {
+    /// The walks the program returns.
+    type Cover: Clone;
+    /// The name of the instance file in the program's scratch folder, and its text.
+    fn instance_file(&self) -> Result<(&'static str, String)>;
+    /// The walks in the tour file's `text` (`name` for messages), in this instance's terms.
+    fn parse_tour(&self, text: &str, name: &str) -> Result<Self::Cover>;
+    /// The number of pixels or vertices (`MOWMILL_N`; the tour file's size limit grows with
+    /// it).
+    fn size(&self) -> usize;
+}
+
+/// The shift that moves `region` into the quadrant of non-negative coordinates (the `.grid`
+/// format has none below 0).
+fn quadrant_shift(region: &Region) -> (i32, i32) {
+    let b = region.bbox();
+    ((-b.min_x).max(0), (-b.min_y).max(0))
+}
+
+impl OutsideTarget for Region {
+    type Cover = CycleCover;
+
+    fn instance_file(&self) -> Result<(&'static str, String)> {
+        let (dx, dy) = quadrant_shift(self);
+        let shifted = self.translated(dx, dy)?;
+        Ok((
+            "instance.grid",
+            GridFile::with_meta(shifted, &[]).to_text()?,
+        ))
+    }
+
+    fn parse_tour(&self, text: &str, name: &str) -> Result<CycleCover> {
+        let (dx, dy) = quadrant_shift(self);
+        Ok(shift(CycleCover::from_json(text, name)?, -dx, -dy))
+    }
+
+    fn size(&self) -> usize {
+        self.len()
+    }
+}
+
+impl OutsideTarget for crate::discrete::Discrete {
+    type Cover = crate::discrete::format::DiscreteCover;
+
+    fn instance_file(&self) -> Result<(&'static str, String)> {
+        Ok(("instance.dm", crate::discrete::format::to_text(self)))
+    }
+
+    fn parse_tour(&self, text: &str, name: &str) -> Result<Self::Cover> {
+        crate::discrete::format::DiscreteCover::from_json(text, name)
+    }
+
+    fn size(&self) -> usize {
+        self.len()
     }
 }
 
@@ -476,9 +538,9 @@ fn failure(
     format!("exited with {status}")
 }
 
-/// Reads the walk(s) at `path`: only a regular file (never a link, FIFO, device or folder,
-/// which could block or never end), at most `bound` bytes.
-fn read_tour(path: &Path, bound: u64) -> std::result::Result<CycleCover, String> {
+/// Reads the text of the tour file at `path`: only a regular file (never a link, FIFO, device
+/// or folder, which could block or never end), at most `bound` bytes, UTF-8.
+fn read_tour(path: &Path, bound: u64) -> std::result::Result<String, String> {
     use std::io::Read;
     let meta = std::fs::symlink_metadata(path)
         .map_err(|_| "exited 0 but wrote no tour file ({tour_out})".to_string())?;
@@ -522,9 +584,7 @@ fn read_tour(path: &Path, bound: u64) -> std::result::Result<CycleCover, String>
     if bytes.len() as u64 > bound {
         return Err(too_big(bytes.len() as u64));
     }
-    let text = String::from_utf8(bytes).map_err(|e| format!("malformed tour: not UTF-8: {e}"))?;
-    CycleCover::from_json(&text, &path.display().to_string())
-        .map_err(|e| format!("malformed tour: {e}"))
+    String::from_utf8(bytes).map_err(|e| format!("malformed tour: not UTF-8: {e}"))
 }
 
 fn file_kind(t: std::fs::FileType) -> &'static str {

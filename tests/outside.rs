@@ -166,3 +166,130 @@ fn solve_runs_the_python_example() {
     ]);
     assert_eq!(check.status.code(), Some(0));
 }
+
+/// `solve FILE.dm --command`: an outside program on a discrete instance gets the `.dm` file and
+/// answers in discrete tour JSON; its walk is recounted by the discrete checker, a walk that
+/// misses a vertex is invalid (exit 1), and options that do not apply there are refused.
+#[test]
+fn solve_runs_an_outside_program_on_a_discrete_instance() {
+    let dir = temp_dir("outside-discrete");
+    // A straight path 0 - 1 - 2: there and back is length 4 with two U-turns (4 turns).
+    let dm = dir.join("path.dm");
+    write(&dm, "discrete 3\ne 0 1\ne 1 2\nc 1 0 2\n");
+    let good = dir.join("good.sh");
+    write(
+        &good,
+        r#"grep -q '^discrete 3' "$1" && printf '{"model": "discrete", "cycles": [[0, 1, 2, 1]]}' > "$2""#,
+    );
+    let short = dir.join("short.sh");
+    write(
+        &short,
+        r#"printf '{"model": "discrete", "cycles": [[0, 1]]}' > "$2""#,
+    );
+    let (dm, tour) = (dm.to_str().unwrap(), dir.join("tour.json"));
+    let command = |script: &Path| format!("sh {} {{instance}} {{tour_out}}", script.display());
+    let o = mowmill(&[
+        "solve",
+        dm,
+        "--command",
+        &command(&good),
+        "--objective",
+        "turns",
+        "--json",
+        "--tour-out",
+        tour.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(
+        (&v["valid"], &v["value"], &v["length"], &v["turns"], &v["n"]),
+        (&true.into(), &4.into(), &4.into(), &4.into(), &3.into())
+    );
+    let check = mowmill(&["validate", dm, "--tour", tour.to_str().unwrap()]);
+    assert_eq!(check.status.code(), Some(0));
+    let o = mowmill(&["solve", dm, "--command", &command(&short)]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("INVALID"));
+    for extra in [
+        &["--merge", "naive"][..],
+        &["--exact"][..],
+        &["--objective", "lawn-length"][..],
+    ] {
+        let mut args = vec!["solve", dm, "--command", "sh x.sh {instance} {tour_out}"];
+        args.extend_from_slice(extra);
+        let o = mowmill(&args);
+        assert_eq!(o.status.code(), Some(2), "{extra:?}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains("does not apply"));
+    }
+    // Polygons with non-integral coordinates have no tour file an outside program could write.
+    let wkt = dir.join("half.wkt");
+    write(&wkt, "POLYGON ((0 0, 4.5 0, 4.5 1.5, 0 1.5, 0 0))\n");
+    let o = mowmill(&["solve", wkt.to_str().unwrap(), "--command", &command(&good)]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+/// A suite's `[[algorithm]]` runs on discrete families too: the Python example's doubled DFS
+/// tree is a valid tour of length 2(n - 1) on every hexagonal instance, within its claim.
+#[test]
+fn a_suite_runs_outside_programs_on_discrete_families() {
+    if Command::new("python3").arg("--version").output().is_err() {
+        eprintln!("python3 is not installed: the Python example is not run (the sh tests are)");
+        return;
+    }
+    let dir = temp_dir("outside-discrete-suite");
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/outside/dfs_tour.py");
+    let cfg = dir.join("suite.toml");
+    write(
+        &cfg,
+        &format!(
+            "name = \"outside-discrete\"\nseed = 3\n[[algorithm]]\nname = \"dfs-tour\"\n\
+             command = [\"python3\", \"{}\", \"{{instance}}\", \"{{tour_out}}\"]\n\
+             objectives = [\"length\", \"turns\"]\n\
+             guarantee = {{ objective = \"length\", factor = \"2\", against = \"opt\" }}\n\
+             [[family]]\nfamily = \"hex\"\nn = [6, 12]\ncount = 2\n\
+             [[exact]]\nobjective = \"length\"\nmax_n = 20\ntime_limit = 20\n",
+            example.display()
+        ),
+    );
+    let out = dir.join("run");
+    let o = mowmill(&[
+        "bench",
+        "--config",
+        cfg.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--jobs",
+        "1",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let (algo, objective, valid, error, within, length, n) = (
+        column(&out, "algorithm"),
+        column(&out, "objective"),
+        column(&out, "valid"),
+        column(&out, "error"),
+        column(&out, "within_guarantee"),
+        column(&out, "length"),
+        column(&out, "n"),
+    );
+    let rows = rows(&out);
+    let dfs: Vec<_> = rows.iter().filter(|r| &r[algo] == "dfs-tour").collect();
+    assert_eq!(dfs.len(), 8, "4 instances, 2 objectives");
+    for r in dfs {
+        assert_eq!((&r[valid], &r[error]), ("true", ""), "{r:?}");
+        let n: u64 = r[n].parse().unwrap();
+        assert_eq!(r[length].parse::<u64>().unwrap(), 2 * (n - 1), "{r:?}");
+        if &r[objective] == "length" {
+            assert_eq!(&r[within], "true", "{r:?}");
+        }
+    }
+}

@@ -7,6 +7,7 @@ use mowmill::algorithms::{self, Cutter, Merge, Objective, Options};
 use mowmill::evaluate::{self, Checked, Known, Reference, Subject};
 use mowmill::exact;
 use mowmill::instance::Instance;
+use mowmill::model::InstanceModel;
 use mowmill::outside::{OutsideAlgorithm, OutsideSpec};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -80,6 +81,34 @@ pub fn split_command(s: &str) -> Vec<String> {
         .unwrap_or_default()
 }
 
+/// The outside program of `--command` as an algorithm with one objective (no claim).
+fn outside_program(
+    a: &SolveArgs,
+    command: &str,
+    objective: Objective,
+    time_limit: f64,
+) -> Result<OutsideAlgorithm> {
+    let spec = OutsideSpec {
+        name: "outside".into(),
+        command: split_command(command),
+        objectives: vec![objective.to_string()],
+        guarantee: None,
+        memory_limit: a
+            .memory_limit
+            .as_ref()
+            .map(|m| mowmill::outside::MemoryLimit::Text(m.clone())),
+        time_limit,
+    };
+    Ok(
+        OutsideAlgorithm::from_spec(&spec, std::path::Path::new(".")).map_err(|e| {
+            match e.strip_prefix("memory_limit: ") {
+                Some(m) => mowmill::Error::invalid(format!("--memory-limit {m}")),
+                None => mowmill::Error::invalid(format!("--command: {e}")),
+            }
+        })?,
+    )
+}
+
 /// The default of `--time-limit`, in seconds.
 const DEFAULT_TIME_LIMIT: f64 = 60.0;
 
@@ -127,12 +156,48 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     }
     let kind = super::FileKind::of(&a.file);
     if kind == super::FileKind::Discrete {
-        let Some(algo) = &a.algo else {
-            bail!(mowmill::Error::invalid(
-                "outside programs (--command) run on grid instances only"
-            ));
-        };
         let model = format!("discrete instances ({})", a.file.display());
+        let Some(algo) = &a.algo else {
+            // An outside program on a discrete instance: the one pipeline, with the discrete
+            // checker's recount and the greedy rooks' bound; only --objective applies.
+            refuse_ignored(
+                &a,
+                &model,
+                &["--objective", "--cycle-cover", "--time-limit"],
+            )?;
+            let objective = wanted.unwrap_or(Objective::Length);
+            if !matches!(
+                objective,
+                Objective::Length | Objective::Turns | Objective::CcTurns
+            ) {
+                bail!(mowmill::Error::invalid(format!(
+                    "--objective {objective} does not apply to {model}; expected length, \
+                     turns or cc-turns"
+                )));
+            }
+            let command = a
+                .command
+                .as_deref()
+                .expect("clap requires --algo or --command");
+            let outside = outside_program(&a, command, objective, time_limit)?;
+            let inst = mowmill::discrete::generate::read(&a.file)?;
+            let subject = Subject::Outside(&outside);
+            let eval = evaluate::evaluate(
+                subject,
+                &inst,
+                &Options::default(),
+                &[objective],
+                &Reference::default(),
+            );
+            return report::<mowmill::discrete::Discrete>(
+                &a,
+                subject,
+                &eval,
+                objective,
+                inst.len() as u64,
+                None,
+            );
+        };
         let mut applies = vec!["--objective", "--cycle-cover", "--merge", "--exact"];
         if a.exact {
             applies.push("--time-limit");
@@ -162,6 +227,14 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             a.file.display()
         );
         refuse_ignored(&a, &model, &[])?;
+        if a.command.is_some() {
+            // Their walks have rational coordinates, which no tour file of an outside program
+            // carries.
+            bail!(mowmill::Error::invalid(format!(
+                "--command does not apply to {model}: outside programs run on grid regions and \
+                 discrete instances"
+            )));
+        }
         let algo = a.algo.as_deref().unwrap_or("corollary4");
         return super::ortho::solve(&a.file, algo, a.tour_out.as_deref(), a.json);
     }
@@ -191,24 +264,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             Subject::Registered(algo)
         }
         (None, Some(command)) => {
-            let objective = wanted.unwrap_or(Objective::Length);
-            let spec = OutsideSpec {
-                name: "outside".into(),
-                command: split_command(command),
-                objectives: vec![objective.to_string()],
-                guarantee: None,
-                memory_limit: a
-                    .memory_limit
-                    .as_ref()
-                    .map(|m| mowmill::outside::MemoryLimit::Text(m.clone())),
-                time_limit,
-            };
-            outside = OutsideAlgorithm::from_spec(&spec, std::path::Path::new(".")).map_err(
-                |e| match e.strip_prefix("memory_limit: ") {
-                    Some(m) => mowmill::Error::invalid(format!("--memory-limit {m}")),
-                    None => mowmill::Error::invalid(format!("--command: {e}")),
-                },
-            )?;
+            outside =
+                outside_program(&a, command, wanted.unwrap_or(Objective::Length), time_limit)?;
             Subject::Outside(&outside)
         }
         (None, None) => unreachable!("clap requires --algo or --command"),
@@ -267,6 +324,31 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         });
     }
     let eval = evaluate::evaluate(subject, &inst.region, &options, &[objective], &reference);
+    let exact_json = a.exact.then_some(exact_json);
+    report::<mowmill::region::Region>(
+        &a,
+        subject,
+        &eval,
+        objective,
+        inst.region.len() as u64,
+        exact_json,
+    )
+}
+
+/// Prints an evaluated run of `solve` (text, or JSON with `--json`), writes `--tour-out`, and
+/// gives the exit code: 1 when the output is invalid or a guarantee is violated, 2 when a
+/// registered algorithm refused the instance or an option, 3 when the algorithm (or outside
+/// program) failed. `n` is the instance's size (pixels or vertices); `exact` the exact
+/// solve's summary when `--exact` ran one.
+fn report<M: InstanceModel>(
+    a: &SolveArgs,
+    subject: Subject<'_>,
+    eval: &evaluate::Evaluation<M::Cover>,
+    objective: Objective,
+    n: u64,
+    exact: Option<serde_json::Value>,
+) -> Result<ExitCode> {
+    let options = &eval.options;
     if let Some(e) = &eval.error {
         // A registered algorithm that refused the region or an option (an error of exit code
         // 2, e.g. lawn-box with --cutter disk) is a usage error; any other failure of the
@@ -288,14 +370,14 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         return Ok(ExitCode::from(3));
     };
     if let Some(path) = &a.tour_out {
-        out.cover.write(path)?;
+        std::fs::write(path, M::walk_json(&out.cover) + "\n")
+            .map_err(|e| mowmill::Error::io(path, e))?;
     }
-    let n = inst.region.len() as u64;
     if a.json {
         let mut json = serde_json::json!({
             "algorithm": subject.name(),
             // The name bench rows give this run (options that differ from the defaults).
-            "variant": evaluate::variant_name(subject.name(), subject.objectives(), &options),
+            "variant": evaluate::variant_name(subject.name(), subject.objectives(), options),
             "objective": out.objective.name(),
             "turn_cost": out.objective.turn_cost(),
             "value": out.value,
@@ -319,8 +401,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 "coverage4": options.coverage4,
             },
         });
-        if a.exact {
-            json["exact"] = exact_json;
+        if let Some(exact) = exact {
+            json["exact"] = exact;
         }
         for (k, v) in &eval.certificates {
             json[k] = serde_json::json!(v);
@@ -337,7 +419,11 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     })
 }
 
-fn print_text(name: &str, out: &Checked, certificates: &std::collections::BTreeMap<String, i64>) {
+fn print_text<C>(
+    name: &str,
+    out: &Checked<C>,
+    certificates: &std::collections::BTreeMap<String, i64>,
+) {
     println!(
         "{name}: {} {} | length {}, turns {}, {} cycle(s), max coverage {} | {}",
         out.objective,
