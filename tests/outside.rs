@@ -12,6 +12,19 @@ fn write(path: &Path, text: &str) {
     std::fs::write(path, text).unwrap();
 }
 
+/// `mowmill bench` of the suite `cfg` into `out`, one job.
+fn bench(cfg: &Path, out: &Path) -> std::process::Output {
+    mowmill(&[
+        "bench",
+        "--config",
+        cfg.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--jobs",
+        "1",
+    ])
+}
+
 fn rows(dir: &Path) -> Vec<csv::StringRecord> {
     let mut r = csv::Reader::from_path(dir.join("results.csv")).unwrap();
     r.records().map(|x| x.unwrap()).collect()
@@ -49,15 +62,7 @@ fn every_failure_of_an_outside_program_is_a_row() {
     let cfg = dir.join("suite.toml");
     write(&cfg, &config);
     let out = dir.join("run");
-    let o = mowmill(&[
-        "bench",
-        "--config",
-        cfg.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--jobs",
-        "1",
-    ]);
+    let o = bench(&cfg, &out);
     // The invalid walk of `wrong` makes the run exit 1 once every row is written.
     assert_eq!(
         o.status.code(),
@@ -257,15 +262,7 @@ fn a_suite_runs_outside_programs_on_discrete_families() {
         ),
     );
     let out = dir.join("run");
-    let o = mowmill(&[
-        "bench",
-        "--config",
-        cfg.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--jobs",
-        "1",
-    ]);
+    let o = bench(&cfg, &out);
     assert_eq!(
         o.status.code(),
         Some(0),
