@@ -159,7 +159,8 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         let model = format!("discrete instances ({})", a.file.display());
         let Some(algo) = &a.algo else {
             // An outside program on a discrete instance: the one pipeline, with the discrete
-            // checker's recount and the greedy rooks' bound; only --objective applies.
+            // checker's recount and the greedy rooks' bound; --objective (or --cycle-cover),
+            // --time-limit and --memory-limit apply to it.
             refuse_ignored(
                 &a,
                 &model,
