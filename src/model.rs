@@ -451,7 +451,14 @@ impl InstanceModel for Discrete {
         cover.to_json()
     }
 
+    /// Lawn mowing has no discrete counterpart: an outside program that declares it gets an
+    /// error (a row with `error`), not a milling length under the lawn objective's name.
     fn recount(&self, cover: &DiscreteCover, objective: Objective, _: &Options) -> Result<Recount> {
+        if matches!(objective, Objective::LawnLength | Objective::LawnTsp) {
+            return Err(Error::invalid(format!(
+                "{objective} is not defined on discrete instances"
+            )));
+        }
         let report = crate::discrete::check::check(self, &cover.cycles);
         Ok(Recount::of(report, objective))
     }

@@ -239,7 +239,8 @@ fn solve_runs_an_outside_program_on_a_discrete_instance() {
 }
 
 /// A suite's `[[algorithm]]` runs on discrete families too: the Python example's doubled DFS
-/// tree is a valid tour of length 2(n - 1) on every hexagonal instance, within its claim.
+/// tree is a valid tour of length 2(n - 1) on every hexagonal instance, within its claim, and
+/// the lawn objective it declares is an error row there.
 #[test]
 fn a_suite_runs_outside_programs_on_discrete_families() {
     if Command::new("python3").arg("--version").output().is_err() {
@@ -254,7 +255,7 @@ fn a_suite_runs_outside_programs_on_discrete_families() {
         &format!(
             "name = \"outside-discrete\"\nseed = 3\n[[algorithm]]\nname = \"dfs-tour\"\n\
              command = [\"python3\", \"{}\", \"{{instance}}\", \"{{tour_out}}\"]\n\
-             objectives = [\"length\", \"turns\"]\n\
+             objectives = [\"length\", \"turns\", \"lawn-length\"]\n\
              guarantee = {{ objective = \"length\", factor = \"2\", against = \"opt\" }}\n\
              [[family]]\nfamily = \"hex\"\nn = [6, 12]\ncount = 2\n\
              [[exact]]\nobjective = \"length\"\nmax_n = 20\ntime_limit = 20\n",
@@ -280,7 +281,19 @@ fn a_suite_runs_outside_programs_on_discrete_families() {
     );
     let rows = rows(&out);
     let dfs: Vec<_> = rows.iter().filter(|r| &r[algo] == "dfs-tour").collect();
-    assert_eq!(dfs.len(), 8, "4 instances, 2 objectives");
+    assert_eq!(dfs.len(), 12, "4 instances, 3 objectives");
+    // Lawn mowing has no discrete counterpart: an error row, never a milling length.
+    let (lawn, dfs): (Vec<_>, Vec<_>) = dfs
+        .into_iter()
+        .partition(|r| &r[objective] == "lawn-length");
+    assert_eq!(lawn.len(), 4);
+    for r in lawn {
+        assert!(
+            r[error].contains("not defined on discrete instances"),
+            "{r:?}"
+        );
+        assert_eq!((&r[valid], &r[length]), ("", ""), "{r:?}");
+    }
     for r in dfs {
         assert_eq!((&r[valid], &r[error]), ("true", ""), "{r:?}");
         let n: u64 = r[n].parse().unwrap();

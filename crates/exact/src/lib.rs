@@ -95,7 +95,7 @@ use crate::bounds::LowerBound;
 use crate::region::Region;
 use crate::tour::CycleCover;
 use driver::{CutModel, Solved, Stop};
-use lp::{Deadline, Settings};
+use lp::{Deadline, Settings, as_columns};
 use serde::Serialize;
 use std::fmt;
 
@@ -626,10 +626,6 @@ fn solve_turns(
         .as_ref()
         .map(|x| CycleCover::new(model.walks(&model.counts(x))));
     Answer::from_solved(s, cover, lower)
-}
-
-fn as_columns(counts: &[u32]) -> Vec<f64> {
-    counts.iter().map(|&c| f64::from(c)).collect()
 }
 
 fn solve_lawn(

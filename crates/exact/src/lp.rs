@@ -63,6 +63,11 @@ impl Row {
     }
 }
 
+/// Integer counts (passages, edge multiplicities) as the columns of an LP solution.
+pub fn as_columns(counts: &[u32]) -> Vec<f64> {
+    counts.iter().map(|&c| f64::from(c)).collect()
+}
+
 /// A minimization model: columns with costs, bounds and integrality, and rows.
 #[derive(Clone, Debug, Default)]
 pub struct Formulation {

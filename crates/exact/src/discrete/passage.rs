@@ -9,7 +9,7 @@ use crate::Objective;
 use crate::cuts::{used_components, violated_cuts};
 use crate::driver::{self, CutModel, Stop};
 use crate::goal::{TurnGoal, tighten_columns};
-use crate::lp::{Deadline, Formulation, Row, Settings};
+use crate::lp::{Deadline, Formulation, Row, Settings, as_columns};
 use crate::walks::splice_walks;
 use mowmill_core::discrete::{Discrete, VertexWalk};
 use std::cell::Cell;
@@ -173,7 +173,7 @@ impl<'a> PassageModel<'a> {
     /// with.
     fn with_ports(&self, mut counts: Vec<u32>) -> Vec<u32> {
         if let Some(zcol) = self.zcol {
-            let x = Self::as_x(&counts);
+            let x = as_columns(&counts);
             for v in 0..self.inst.len() as u32 {
                 for p in 0..self.inst.degree(v) as u32 {
                     counts[zcol + self.global(v, p)] = u32::from(self.port_usage(&x, v, p) > 0.5);
@@ -406,10 +406,6 @@ impl<'a> PassageModel<'a> {
         x.iter().map(|&v| v.round().max(0.0) as u32).collect()
     }
 
-    fn as_x(counts: &[u32]) -> Vec<f64> {
-        counts.iter().map(|&c| f64::from(c)).collect()
-    }
-
     fn column(&self, v: u32, a: u32, b: u32) -> Option<usize> {
         let (a, b) = (a.min(b), a.max(b));
         (self.first[v as usize]..self.first[v as usize + 1])
@@ -517,7 +513,7 @@ impl<'a> PassageModel<'a> {
     /// Whether integer counts are feasible: the formulation's rows, and for tours one port
     /// component.
     fn is_feasible_counts(&self, counts: &[u32]) -> bool {
-        let x = Self::as_x(counts);
+        let x = as_columns(counts);
         self.formulation.is_feasible(&x, &[])
             && (!self.goal.is_tour() || self.port_components(&x, 0.5).1 == 1)
     }
@@ -526,7 +522,7 @@ impl<'a> PassageModel<'a> {
     /// expensive first), or, when some component visits every vertex, all but the cheapest
     /// such; coverage is kept and the cost does not grow.
     fn drop_redundant(&self, counts: &mut [u32]) {
-        let x = Self::as_x(counts);
+        let x = as_columns(counts);
         let (label, count) = self.port_components(&x, 0.5);
         if count <= 1 {
             return;
@@ -591,7 +587,7 @@ impl<'a> PassageModel<'a> {
     /// O(components · (Σ_v passages_v² + Σ_vw passages_v · passages_w) · V) time.
     fn connect(&self, mut counts: Vec<u32>) -> Vec<u32> {
         loop {
-            let x = Self::as_x(&counts);
+            let x = as_columns(&counts);
             let (label, count) = self.port_components(&x, 0.5);
             if count <= 1 {
                 return counts;
@@ -793,7 +789,7 @@ impl CutModel for PassageModel<'_> {
             counts = self.with_ports(self.connect(counts));
         }
         self.is_feasible_counts(&counts)
-            .then(|| Self::as_x(&counts))
+            .then(|| as_columns(&counts))
     }
 
     /// Bounds valid for every integer solution of model cost at most `target`:
@@ -893,7 +889,7 @@ pub(super) fn solve_passages(
             }
         })
         .filter(|c| model.is_feasible_counts(c))
-        .map(|c| PassageModel::as_x(&c));
+        .map(|c| as_columns(&c));
     let s = driver::run_with_constant(
         &model,
         start,
