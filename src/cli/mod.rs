@@ -148,8 +148,11 @@ pub fn print_exact_line(
     rounds: u32,
     message: Option<&str>,
 ) {
+    // At a time limit, the relative gap (value − bound) / value.
+    let gap = mowmill::exact::relative_gap(status == "time_limit", value, lower_bound)
+        .map_or(String::new(), |g| format!(", gap {:.2}%", 100.0 * g));
     println!(
-        "{objective} {status}: value {} lower bound {lower_bound} ({lb_source}) in {seconds:.2}s, {rounds} rounds{}",
+        "{objective} {status}: value {} lower bound {lower_bound} ({lb_source}) in {seconds:.2}s, {rounds} rounds{gap}{}",
         value.map_or("-".to_string(), |v| v.to_string()),
         message.map(|m| format!(" — {m}")).unwrap_or_default()
     );

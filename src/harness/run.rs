@@ -809,7 +809,8 @@ fn exact_applies<M: InstanceModel>(instance: &M, e: &ExactSpec) -> bool {
 
 /// The config's exact objectives on one instance: each row solved by `solve` (`None` where the
 /// objective does not apply), or taken from `done` when resuming; new rows are pushed to
-/// `rows`. Returns what they prove, for the algorithm rows to divide by.
+/// `rows`, after [`share_between_objectives`]. Returns what they prove, for the algorithm rows
+/// to divide by.
 fn exact_rows(
     rows: &mut Vec<Row>,
     spec: &InstanceSpec,
@@ -817,25 +818,98 @@ fn exact_rows(
     done: &HashMap<(String, String, String), Row>,
     solve: impl Fn(&ExactSpec) -> Option<Row>,
 ) -> Reference {
-    let mut reference = Reference::default();
+    // (row, whether it is new in this run).
+    let mut found: Vec<(Row, bool)> = Vec::new();
     for e in &config.exact {
         let name = exact_objective_name(e);
         let key = (spec.name.clone(), EXACT.to_string(), name.clone());
-        let row = match done.get(&key) {
-            Some(r) => r.clone(),
+        match done.get(&key) {
+            Some(r) => found.push((r.clone(), false)),
             None => {
-                let Some(row) = solve(e) else {
-                    continue;
-                };
-                rows.push(row.clone());
-                row
+                if let Some(row) = solve(e) {
+                    found.push((row, true));
+                }
             }
-        };
-        if let Ok(objective) = name.parse::<Objective>() {
-            reference.insert(objective, known_from(&row, &name));
+        }
+    }
+    share_between_objectives(&mut found);
+    let mut reference = Reference::default();
+    for (row, new) in found {
+        if let Ok(objective) = row.objective.parse::<Objective>() {
+            reference.insert(objective, known_from(&row, &row.objective));
+        }
+        if new {
+            rows.push(row);
         }
     }
     reference
+}
+
+/// Shares what the exact rows of one instance know between a cycle-cover objective and its
+/// tour ([`Objective::tour_counterpart`]: `cc-turns` and `turns`, `weighted-cc C` and
+/// `weighted C`), in both directions: every tour is a cycle cover of the same cost, so
+///
+/// * the cycle cover's value becomes the tour's when the tour is cheaper (its walk, recounted
+///   by the checker in the tour's row, is a valid cycle cover; the row's `cycles` becomes 1),
+/// * the tour's lower bound becomes the cycle cover's when that is higher (OPT_tour ≥ OPT_cc),
+///
+/// and either row is `optimal` when its value then meets its bound. Only new rows change
+/// (a resumed row is already written).
+fn share_between_objectives(found: &mut [(Row, bool)]) {
+    let usable = |r: &Row| r.error.is_empty() && r.valid != Some(false);
+    for c in 0..found.len() {
+        let Some(tour) = found[c]
+            .0
+            .objective
+            .parse::<Objective>()
+            .ok()
+            .and_then(Objective::tour_counterpart)
+        else {
+            continue;
+        };
+        let Some(t) = found
+            .iter()
+            .position(|(r, _)| r.objective.parse::<Objective>().ok() == Some(tour))
+        else {
+            continue;
+        };
+        let (cc, tr) = (found[c].0.clone(), found[t].0.clone());
+        if !usable(&cc) || !usable(&tr) {
+            continue;
+        }
+        if found[c].1
+            && let Some(v) = tr.value
+            && cc.value.is_none_or(|u| v < u)
+        {
+            let row = &mut found[c].0;
+            row.value = Some(v);
+            row.length = tr.length;
+            row.turns = tr.turns;
+            row.cycles = tr.cycles;
+            row.max_coverage = tr.max_coverage;
+            row.valid = tr.valid;
+            settle(row);
+        }
+        if found[t].1
+            && let Some(b) = cc.lower_bound
+            && tr.lower_bound.is_none_or(|l| b > l)
+        {
+            let row = &mut found[t].0;
+            row.lower_bound = Some(b);
+            settle(row);
+        }
+    }
+}
+
+/// An exact row after its value or bound moved: `optimal` when they meet.
+fn settle(row: &mut Row) {
+    if let (Some(v), Some(b)) = (row.value, row.lower_bound)
+        && v == b
+    {
+        row.opt_status = exact::Status::Optimal.to_string();
+        row.opt = Some(v);
+    }
+    row.compute_ratios();
 }
 
 /// What an exact row says about the optimum of its objective.

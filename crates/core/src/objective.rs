@@ -134,6 +134,18 @@ impl Objective {
         }
     }
 
+    /// The tour objective of a cycle-cover objective (`cc-turns`: `turns`; `weighted-cc C`:
+    /// `weighted C`): every tour is a cycle cover of the same cost, so the tour's best walk
+    /// bounds the cycle cover's optimum from above and the cycle cover's lower bound bounds
+    /// the tour's from below. `None` for the others.
+    pub fn tour_counterpart(self) -> Option<Objective> {
+        match self {
+            Objective::CcTurns => Some(Objective::Turns),
+            Objective::WeightedCc(c) => Some(Objective::Weighted(c)),
+            _ => None,
+        }
+    }
+
     /// Whether outputs must be a single closed walk.
     pub fn is_tour(self) -> bool {
         !matches!(self, Objective::CcTurns | Objective::WeightedCc(_))

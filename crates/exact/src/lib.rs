@@ -224,6 +224,9 @@ pub struct ExactResult<W = CycleCover> {
     pub coverage_cap: Option<u32>,
     /// The checker's largest number of visits of one pixel (vertex) in `cover`.
     pub max_coverage: Option<u32>,
+    /// `(value − lower_bound) / value` at a time limit with a walk (the MIP's relative gap;
+    /// `None` when optimal or without a walk).
+    pub gap: Option<f64>,
     #[serde(skip)]
     pub cover: Option<W>,
 }
@@ -250,6 +253,7 @@ impl<W> ExactResult<W> {
             n: 0,
             coverage_cap: None,
             max_coverage: None,
+            gap: None,
             cover: None,
         }
     }
@@ -380,9 +384,18 @@ impl<W> Answer<W> {
             message = r.accept(objective, cover, &report).or(message);
         }
         r.status = certify(&self.stop, r.value, r.lower_bound, &mut message);
+        r.gap = relative_gap(r.status == Status::TimeLimit, r.value, r.lower_bound);
         r.message = message;
         r
     }
+}
+
+/// The relative gap `(value − bound) / value` of a solve stopped at its time limit with a walk
+/// of value `value > 0` (`None` otherwise).
+pub fn relative_gap(time_limit: bool, value: Option<u64>, lower_bound: u64) -> Option<f64> {
+    value
+        .filter(|&v| time_limit && v > 0)
+        .map(|v| v.saturating_sub(lower_bound) as f64 / v as f64)
 }
 
 /// The status of a solve, the one rule for both models' certificates: `optimal` only when the

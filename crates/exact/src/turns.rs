@@ -640,6 +640,30 @@ impl CutModel for PassageModel<'_> {
     fn heuristic_caps(&self) -> Option<Vec<f64>> {
         Some(vec![2.0; self.formulation.num_cols()])
     }
+
+    fn elements(&self) -> usize {
+        self.region.len()
+    }
+
+    /// The pixels first reached by a breadth-first search from `centre` (at most `size`),
+    /// with their passage columns and one-pixel walks.
+    fn window(&self, centre: usize, size: usize) -> Vec<usize> {
+        let mut seen = std::collections::HashSet::from([centre]);
+        let mut queue = std::collections::VecDeque::from([centre]);
+        let mut columns = Vec::new();
+        while let Some(v) = queue.pop_front() {
+            columns.extend(self.first[v]..self.first[v + 1]);
+            if self.stay[v] != NONE {
+                columns.push(self.stay[v] as usize);
+            }
+            for &w in &self.nb[v] {
+                if w != NONE && seen.len() < size && seen.insert(w as usize) {
+                    queue.push_back(w as usize);
+                }
+            }
+        }
+        columns
+    }
 }
 
 impl PassageModel<'_> {

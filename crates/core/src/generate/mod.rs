@@ -30,7 +30,7 @@
 //! | `boundary` | `n`, `style`, `compactness` | exactly N pixels, 4-connected, every pixel a boundary pixel (an empty 4-neighbour, [`topology::is_boundary`]; the precondition of `boundary-cc`), holes any number: a shape of the style whose inner pixels lose themselves (pinholes, notches) or a neighbour (stairs, one-pixel links and one-pixel-thick parts). Fallback: two rows. |
 //! | `thin-arms` | `n`, `holes` H (0), `compactness` | a thin pocket grown pixel by pixel (corridors at any spacing, stairs, crossings with arms of one or two pixels; the more compact, the more branches), exactly N pixels and H holes. Fallback: the `thin` fallback. |
 //! | `pinholes` | `n`, `holes` H (required), `style`, `compactness` | exactly N pixels, 4-connected, exactly H holes of one cell each, often in columns or rows 2–4 cells apart (hole contours tangent to the strips between them), walls down to one pixel. Fallback: the `random-holed` staircase. |
-//! | `eroded` | `n` (at most 10⁶), `style` (`dense` or `sparse`; `mixed`, the default, draws one) | the instances of a published CPLEX study (a Master's thesis of 2016): the ⌈3√N⌉ square eroded at random, pixel by pixel, to exactly N pixels, 4-connected, any number of holes (module `eroded`). Fallback: the staircase of full rows. |
+//! | `eroded` | `n` (at most 10⁶), `style` (`dense` or `sparse`; `mixed`, the default, draws one) | the instances of a published CPLEX study (a Master's thesis of 2016): the square of side round(√(3N)) eroded at random by the study's own process, pixel by pixel, to exactly N pixels, 4-connected, any number of holes (module `eroded`). Fallback: the staircase of full rows. |
 //!
 //! # Shape styles
 //!

@@ -433,7 +433,7 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
     FamilyInfo {
         family: Family::Eroded,
         name: "eroded",
-        summary: "a square of side ~3 sqrt(n) eroded at random to n pixels, 4-connected; style dense or sparse (holes)",
+        summary: "a square of side ~sqrt(3n) eroded at random to n pixels (a 2016 thesis's process), 4-connected; style dense or sparse (holes)",
         params: &[Param::N, Param::Style],
         required: &[Param::N],
         random: true,

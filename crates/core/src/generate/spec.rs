@@ -33,7 +33,7 @@ use crate::error::Result;
 use crate::region::Pixel;
 use crate::region::Region;
 
-/// The largest `eroded` instance: its square has about 9N cells.
+/// The largest `eroded` instance: its square has about 3N cells.
 pub(super) const MAX_ERODED: usize = 1_000_000;
 
 /// Refuses a style the family does not draw: `dense` and `sparse` are `eroded`'s only, and
@@ -360,7 +360,7 @@ impl Spec {
         if self.family == Family::Eroded && self.n > MAX_ERODED {
             return Err(Error::invalid(format!(
                 "eroded: n = {} is more than this family's limit of {MAX_ERODED} pixels (it erodes a square of \
-                 about 9n cells)",
+                 about 3n cells)",
                 self.n
             )));
         }
