@@ -389,6 +389,17 @@ impl InstanceModel for Region {
             .map_err(|e| Error::invalid(format!("the summary: {e}")))?;
         // The minimum strip cover: the turn lower bound of Lemmas 4.2-4.4 (turn-cost paper).
         v["strip_cover"] = crate::strip_cover::min_strip_cover_size(self).into();
+        // Pixels with exactly two side neighbours (corridor and corner pixels).
+        let degree2 = (0..self.len())
+            .filter(|&i| {
+                crate::Dir::ALL
+                    .iter()
+                    .filter(|&&d| self.neighbor(i, d).is_some())
+                    .count()
+                    == 2
+            })
+            .count();
+        v["degree2"] = degree2.into();
         Ok(v)
     }
 

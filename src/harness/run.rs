@@ -1024,3 +1024,81 @@ fn algorithm_rows<C>(
     }));
     rows
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn exact_row(objective: &str, value: u64, lower_bound: u64) -> Row {
+        let mut row = Row {
+            algorithm: EXACT.into(),
+            objective: objective.into(),
+            value: Some(value),
+            turns: Some(value),
+            cycles: Some(3),
+            lower_bound: Some(lower_bound),
+            opt_status: exact::Status::TimeLimit.to_string(),
+            valid: Some(true),
+            ..Row::default()
+        };
+        row.compute_ratios();
+        row
+    }
+
+    /// A cheaper tour lowers the cycle cover's value (and proves it when it meets the bound);
+    /// the cycle cover's higher bound lifts the tour's.
+    #[test]
+    fn cycle_cover_and_tour_share_walks_and_bounds() {
+        let mut found = vec![
+            (exact_row("cc-turns", 446, 432), true),
+            (exact_row("turns", 434, 420), true),
+        ];
+        share_between_objectives(&mut found);
+        let (cc, tour) = (&found[0].0, &found[1].0);
+        assert_eq!(
+            (cc.value, cc.cycles, cc.lower_bound),
+            (Some(434), Some(3), Some(432))
+        );
+        assert_eq!(cc.opt_status, "time_limit");
+        assert_eq!(tour.lower_bound, Some(432));
+        assert_eq!(tour.opt_status, "time_limit");
+
+        // The tour meets the cycle cover's bound: both are optimal.
+        let mut found = vec![
+            (exact_row("turns", 432, 420), true),
+            (exact_row("cc-turns", 440, 432), true),
+        ];
+        share_between_objectives(&mut found);
+        for (row, _) in &found {
+            assert_eq!(
+                (row.value, row.opt),
+                (Some(432), Some(432)),
+                "{}",
+                row.objective
+            );
+            assert_eq!(row.opt_status, "optimal");
+        }
+
+        // Weighted objectives pair by their turn cost only; resumed rows do not change, and a
+        // row with an error gives nothing.
+        let mut found = vec![
+            (exact_row("weighted-cc-c50", 900, 800), true),
+            (exact_row("weighted-c20", 600, 100), true),
+            (exact_row("weighted-c50", 850, 700), false),
+            (exact_row("cc-turns", 500, 400), true),
+            (
+                Row {
+                    error: "boom".into(),
+                    ..exact_row("turns", 10, 900)
+                },
+                true,
+            ),
+        ];
+        let before = found.clone();
+        share_between_objectives(&mut found);
+        assert_eq!(found[0].0.value, Some(850));
+        for k in 1..5 {
+            assert_eq!(found[k], before[k], "row {k}");
+        }
+    }
+}
