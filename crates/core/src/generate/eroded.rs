@@ -73,7 +73,7 @@ pub(super) fn eroded_side(n: usize) -> usize {
     while (s + 1) * (s + 1) <= target {
         s += 1;
     }
-    if 4 * s * s + 4 * s + 1 <= 4 * target {
+    if 4 * s * s + 4 * s < 4 * target {
         s += 1;
     }
     s
