@@ -856,7 +856,14 @@ fn exact_rows(
 /// and either row is `optimal` when its value then meets its bound. Only new rows change
 /// (a resumed row is already written).
 fn share_between_objectives(found: &mut [(Row, bool)]) {
-    let usable = |r: &Row| r.error.is_empty() && r.valid != Some(false);
+    // Only solved rows share: an infeasible tour (a disconnected region) has no bound to lift.
+    let usable = |r: &Row| {
+        r.error.is_empty()
+            && r.valid != Some(false)
+            && [exact::Status::Optimal, exact::Status::TimeLimit]
+                .iter()
+                .any(|s| r.opt_status == s.to_string())
+    };
     for c in 0..found.len() {
         let Some(tour) = found[c]
             .0
@@ -1097,8 +1104,17 @@ mod tests {
         let before = found.clone();
         share_between_objectives(&mut found);
         assert_eq!(found[0].0.value, Some(850));
-        for k in 1..5 {
+        for k in 1..found.len() {
             assert_eq!(found[k], before[k], "row {k}");
         }
+
+        // An infeasible tour (a disconnected region) takes no bound.
+        let mut infeasible = exact_row("turns", 0, 0);
+        infeasible.opt_status = exact::Status::Infeasible.to_string();
+        infeasible.value = None;
+        let mut found = vec![(exact_row("cc-turns", 30, 28), true), (infeasible, true)];
+        let before = found.clone();
+        share_between_objectives(&mut found);
+        assert_eq!(found, before);
     }
 }
