@@ -304,21 +304,27 @@ impl<'m, M: CutModel> Loop<'m, M> {
         self.s.rounds += 1;
         if let Some(x) = &mip.x {
             let xi = self.round_integers(x);
-            if self.accepts(&xi) {
-                self.offer(xi, "heuristic mip");
-            } else {
-                let cuts = self.model.separate(&xi, true, self.deadline);
-                if let Some(r) = self.model.repair(&xi) {
-                    self.offer(r, "heuristic mip, repaired");
-                }
-                self.add_cuts(cuts);
+            self.take(xi, ("heuristic mip", "heuristic mip, repaired"));
+        }
+    }
+
+    /// Offers an integer solution of a heuristic MIP: as it is when the model accepts it,
+    /// else its repair, keeping the cuts it violates. `from` names the two cases in the log.
+    fn take(&mut self, xi: Vec<f64>, from: (&str, &str)) {
+        if self.accepts(&xi) {
+            self.offer(xi, from.0);
+        } else {
+            let cuts = self.model.separate(&xi, true, self.deadline);
+            if let Some(r) = self.model.repair(&xi) {
+                self.offer(r, from.1);
             }
+            self.add_cuts(cuts);
         }
     }
 
     /// The large-neighbourhood search (module docs): windows centred on the model's elements
     /// in a fixed scattered order, until its share of the time is spent, the incumbent meets
-    /// the bound, or every element has been a window's centre twice without an improvement.
+    /// the bound, or the windows since the last improvement hold 2n elements in all.
     fn lns_phase(&mut self) {
         let n = self.model.elements();
         if n == 0 || self.done() || self.s.best.is_none() {
@@ -338,7 +344,7 @@ impl<'m, M: CutModel> Loop<'m, M> {
             stride += 1;
         }
         let mut size = LNS_FIRST_SIZE.min(n);
-        let mut fruitless = 0usize;
+        // Elements in the windows since the last improvement.
         let mut covered = 0usize;
         let mut i = 0usize;
         while !phase.expired() && !self.deadline.expired() && !self.done() {
@@ -366,25 +372,18 @@ impl<'m, M: CutModel> Loop<'m, M> {
             if let Some(y) = &mip.x {
                 let yi = self.round_integers(y);
                 if self.value(&yi) < before.unwrap_or(u64::MAX) {
-                    if self.accepts(&yi) {
-                        self.offer(yi, "neighbourhood search");
-                    } else {
-                        let cuts = self.model.separate(&yi, true, self.deadline);
-                        if let Some(r) = self.model.repair(&yi) {
-                            self.offer(r, "neighbourhood search, repaired");
-                        }
-                        self.add_cuts(cuts);
-                    }
+                    self.take(
+                        yi,
+                        ("neighbourhood search", "neighbourhood search, repaired"),
+                    );
                 }
             }
-            covered += size;
-            if self.s.upper < before {
-                fruitless = 0;
-                covered = 0;
+            covered = if self.s.upper < before {
+                0
             } else {
-                fruitless += 1;
-            }
-            if covered >= 2 * n && fruitless > 0 {
+                covered + size
+            };
+            if covered >= 2 * n {
                 break;
             }
             // Grow a window that solved in a fraction of its time, shrink one that did not.
