@@ -302,7 +302,11 @@ impl InstanceModel for Region {
         match subject {
             Subject::Registered(a) => {
                 (a.precondition)(self)?;
-                (a.run)(self, options)
+                let options = Options {
+                    only: wanted.to_vec(),
+                    ..options.clone()
+                };
+                (a.run)(self, &options)
             }
             Subject::Outside(o) => o.run(self, wanted),
         }
@@ -335,7 +339,7 @@ impl InstanceModel for Region {
     }
 
     fn runs_by_default(&self, algorithm: &Algorithm) -> bool {
-        (algorithm.precondition)(self).is_ok()
+        algorithm.by_default && (algorithm.precondition)(self).is_ok()
     }
 
     fn has_run(_: &Algorithm) -> bool {

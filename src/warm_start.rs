@@ -30,8 +30,10 @@ pub fn exact_options() -> ExactOptions {
 /// incumbent from the start lets reduced-cost fixing remove more of the model. `None` for
 /// `lawn-tsp` or when no algorithm gives one.
 ///
-/// No algorithm starts after `stop_after` (half of the solve's time), and above
-/// [`START_MATCHING_LIMIT`] pixels the algorithms built on an endpoint matching are left out.
+/// No algorithm starts after `stop_after` (half of the solve's time), above
+/// [`START_MATCHING_LIMIT`] pixels the algorithms built on an endpoint matching are left out,
+/// and so are the ones not run by default. Each is asked for the requested objective only
+/// ([`Options::only`]).
 pub fn from_registry(request: &StartRequest<'_>) -> Option<CycleCover> {
     let StartRequest {
         region,
@@ -49,7 +51,11 @@ pub fn from_registry(request: &StartRequest<'_>) -> Option<CycleCover> {
         }
         _ => rep.turns,
     };
-    let options = Options::default();
+    // Only the requested objective: `lp-lns` then solves that one alone.
+    let options = Options {
+        only: vec![objective],
+        ..Options::default()
+    };
     let mut best: Option<(u64, CycleCover)> = None;
     for algorithm in REGISTRY {
         let milling = algorithm
@@ -59,7 +65,14 @@ pub fn from_registry(request: &StartRequest<'_>) -> Option<CycleCover> {
         let half_spent = stop_after.is_some_and(|t| std::time::Instant::now() > t);
         let slow =
             region.len() > START_MATCHING_LIMIT && MATCHING_ALGORITHMS.contains(&algorithm.name);
-        if !milling || half_spent || slow || (algorithm.precondition)(region).is_err() {
+        // Not the algorithms left out of default runs (`lp-lns`, itself the exact solver's
+        // search: starting the solver from it would repeat that search first).
+        if !milling
+            || !algorithm.by_default
+            || half_spent
+            || slow
+            || (algorithm.precondition)(region).is_err()
+        {
             continue;
         }
         // An algorithm that fails or panics only gives no start.

@@ -39,6 +39,12 @@ pub fn algos_command(a: AlgosArgs) -> Result<ExitCode> {
                     weighted.join(", ")
                 );
             }
+            if !a.by_default {
+                println!(
+                    "{:<18}   not run by default: name it in a suite family's `algorithms`",
+                    ""
+                );
+            }
         }
     }
     Ok(ExitCode::SUCCESS)
@@ -92,6 +98,7 @@ fn json() -> Result<serde_json::Value> {
             "guarantees": a.guarantees.iter().map(ToString::to_string).collect::<Vec<_>>(),
             "guarantee_details": details,
             "claims": claims,
+            "by_default": a.by_default,
         }));
     }
     Ok(serde_json::Value::Array(list))

@@ -52,6 +52,11 @@ pub struct ExactArgs {
     /// algorithms.
     #[arg(long, conflicts_with = "start")]
     pub no_warm_start: bool,
+    /// The primal side only (the search of the heuristic `lp-lns`: LP relaxation, then a
+    /// node-limited neighbourhood search from the start), no proof: the status is optimal
+    /// only when the walk meets the proven bound.
+    #[arg(long)]
+    pub heuristic: bool,
     /// Start from this tour file (a tour or cycle cover, as `--tour-out` writes); used when
     /// the checker accepts it for the objective.
     #[arg(long)]
@@ -98,6 +103,7 @@ pub fn exact_command(a: ExactArgs) -> Result<ExitCode> {
         max_coverage: a.max_coverage,
         starts: (!a.no_warm_start)
             .then_some(mowmill::warm_start::from_registry as mowmill::exact::StartFn),
+        heuristic: a.heuristic,
     };
     let result = exact::solve(&inst.region, objective, &opts);
     if let (Some(path), Some(cover)) = (&a.tour_out, &result.cover) {

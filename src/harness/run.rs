@@ -718,7 +718,11 @@ fn plan<'a, M: InstanceModel>(
                 .objectives()
                 .iter()
                 .copied()
-                .chain(weighted.iter().copied().filter(|&o| subject.reports(o)))
+                .chain(weighted.iter().copied().filter(|&o| {
+                    // An algorithm that reports a weighted objective itself (lp-lns) has it
+                    // once.
+                    subject.reports(o) && !subject.objectives().contains(&o)
+                }))
                 .collect();
             planned.push(Planned::Variant {
                 subject,

@@ -57,8 +57,9 @@ fn keep(best: &mut Option<BestWalk>, candidate: BestWalk) {
     }
 }
 
-/// The best checked walk of every registered grid algorithm (no `ortho` run: module docs)
-/// whose precondition `region` meets, in registry order (ties keep the first).
+/// The best checked walk of every registered grid algorithm run by default (no `ortho` run:
+/// module docs; not `lp-lns`, whose MIPs would dominate a hunt's time) whose precondition
+/// `region` meets, in registry order (ties keep the first).
 pub fn best_of_algorithms(
     region: &Region,
     objective: Objective,
@@ -67,6 +68,7 @@ pub fn best_of_algorithms(
     let mut best = None;
     for a in algorithms::REGISTRY {
         if a.ortho.is_some()
+            || !a.by_default
             || !a.objectives.iter().any(|&o| carries(o, objective))
             || (a.precondition)(region).is_err()
         {
@@ -115,6 +117,7 @@ pub fn exact_incumbent(
             warm_start: None,
             max_coverage: None,
             starts: Some(crate::warm_start::from_registry),
+            ..exact::ExactOptions::default()
         },
     );
     let proven = res.status == exact::Status::Optimal;

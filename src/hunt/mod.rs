@@ -486,6 +486,7 @@ impl OptCache {
                 warm_start: None,
                 max_coverage: None,
                 starts: Some(crate::warm_start::from_registry),
+                ..exact::ExactOptions::default()
             },
         );
         let opt = (res.status == exact::Status::Optimal)
@@ -1032,6 +1033,7 @@ pub fn hunt(
                         warm_start: None,
                         max_coverage: None,
                         starts: Some(crate::warm_start::from_registry),
+                        ..exact::ExactOptions::default()
                     },
                 );
                 f.optimal_walk = res.cover;

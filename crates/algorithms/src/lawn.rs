@@ -709,6 +709,7 @@ pub(crate) const LAWN_MST: Algorithm = Algorithm {
     run: lawn_mst,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 /// The registry entry of `lawn-christofides`: Christofides on the cell centres
@@ -758,6 +759,7 @@ pub(crate) const LAWN_CHRISTOFIDES: Algorithm = Algorithm {
     run: lawn_christofides,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 /// The registry entry of `lawn-2opt`: 2-opt and Or-opt started from the better of the MST and
@@ -809,6 +811,7 @@ pub(crate) const LAWN_TWO_OPT: Algorithm = Algorithm {
     run: lawn_two_opt,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 /// The registry entry of `lawn-box`: the shorter of the bounding-box rings of Fig. 9 and the
@@ -861,6 +864,7 @@ pub(crate) const LAWN_BOX: Algorithm = Algorithm {
     run: lawn_box,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

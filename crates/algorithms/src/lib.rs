@@ -87,7 +87,7 @@ mod turns;
 #[doc(hidden)]
 pub use matching::{self as endpoint_matching, turn_distance};
 #[doc(hidden)]
-pub use turns::{boundary_cc, coverage4, merge, strips_matching};
+pub use turns::{boundary_cc, coverage4, lp_lns, merge, strips_matching};
 pub(crate) use turns::{star_cover, strips_double, thin, thin_euler, visits};
 
 /// What a guarantee's factor multiplies.
@@ -640,11 +640,27 @@ impl GreedyOrder {
 pub struct Options {
     pub merge: Merge,
     pub cutter: Cutter,
+    /// The objectives wanted of this run (empty: all of the algorithm's). An algorithm that
+    /// computes each objective's walk separately skips the others ([`Options::wants`]);
+    /// the rest ignore it.
+    pub only: Vec<Objective>,
     /// Post-process tours into ones covering each pixel at most 4 times (Theorem 5.6).
     pub coverage4: bool,
     /// The scan order of the greedy rook placement of the star covers (a choice the paper
     /// leaves open, [`GreedyOrder`]); other algorithms ignore it.
     pub greedy_order: GreedyOrder,
+}
+
+impl Options {
+    /// Whether a run of an algorithm that produces `produced` is to compute `objective`:
+    /// [`only`](Self::only) is empty or names it, or names a weighted objective the algorithm
+    /// does not produce and `objective` carries ([`Objective::carriers`]).
+    pub fn wants(&self, objective: Objective, produced: &[Objective]) -> bool {
+        self.only.is_empty()
+            || self.only.iter().any(|o| {
+                *o == objective || (!produced.contains(o) && o.carriers().contains(&objective))
+            })
+    }
 }
 
 /// One result of an algorithm: closed walks for one objective (of pixels, or of the vertices
@@ -705,6 +721,10 @@ pub struct Algorithm {
     /// Its run on orthogonal polygons with arbitrary coordinates; `None` for the
     /// others.
     pub ortho: Option<OrthoRun>,
+    /// Whether a suite family without an `algorithms` list runs it (and `hunt`'s best known
+    /// walks and the exact solver's warm starts use it): false for `lp-lns`, whose MIPs would
+    /// multiply the time of the large suites; name it in `algorithms`.
+    pub by_default: bool,
 }
 
 impl Algorithm {
@@ -790,6 +810,7 @@ pub static REGISTRY: &[Algorithm] = &[
     star_cover::ALGORITHM,
     strips_double::ALGORITHM,
     strips_matching::ALGORITHM,
+    lp_lns::ALGORITHM,
     boundary_cc::ALGORITHM,
     thin::ALGORITHM_CC,
     thin::ALGORITHM_MERGE,

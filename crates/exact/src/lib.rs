@@ -137,6 +137,11 @@ pub struct ExactOptions {
     /// `mowmill::warm_start::from_registry` (the best cover of the registered approximation
     /// algorithms). `None`: no warm start unless `warm_start` is given.
     pub starts: Option<StartFn>,
+    /// The primal side only ([`driver::improve`]): the LP phase and a large-neighbourhood
+    /// search from the best start, its MIPs stopped after a number of nodes; no proof. The
+    /// status is `optimal` only when the walk meets the proven bound (then it is optimal);
+    /// otherwise `time_limit`. The heuristic algorithm `lp-lns` runs this from its rounding.
+    pub heuristic: bool,
 }
 
 /// What a warm-start source is asked for: a checker-valid cover of `region` for `objective`
@@ -163,6 +168,7 @@ impl Default for ExactOptions {
             warm_start: None,
             max_coverage: None,
             starts: None,
+            heuristic: false,
         }
     }
 }
@@ -472,6 +478,7 @@ pub fn solve(region: &Region, objective: Objective, opts: &ExactOptions) -> Exac
     let settings = Settings {
         threads: opts.threads.max(1),
         verbose: opts.verbose,
+        ..Settings::default()
     };
     let answer = if region.is_empty() {
         Answer::stopped(
@@ -583,12 +590,13 @@ fn solve_length(
             start = x;
         }
     }
-    let s = driver::run(
+    let s = driver::run_or_improve(
         &model,
         Some(start),
         (lower.value, lower.source),
         deadline,
         settings,
+        opts.heuristic,
     );
     let cover = s
         .best
@@ -633,6 +641,7 @@ fn solve_turns(
         constant,
         deadline,
         settings,
+        opts.heuristic,
     );
     let cover = s
         .best
@@ -672,12 +681,13 @@ fn solve_lawn(
             order = warm;
         }
     }
-    let s = driver::run(
+    let s = driver::run_or_improve(
         &model,
         Some(model.columns(&order)),
         (lower.value, lower.source),
         deadline,
         settings,
+        opts.heuristic,
     );
     let cover = s
         .best
@@ -736,6 +746,35 @@ pub fn best_lower_bound(
     }
 }
 
+/// The LP relaxation of a turn objective's passage model with all its connectivity cuts, as
+/// orientation weights per pixel (index as in `region`): `[horizontal, vertical]`, how much of
+/// the pixel's fractional passages run each way (a straight pass counts 1 for its
+/// orientation, a 90° turn 1/2 for each, a U-turn 1 for the orientation of its side). `None`
+/// for other objectives, a region of fewer than 2 pixels, a disconnected region for a tour,
+/// or an LP that does not converge within `time_limit` seconds. The heuristic `lp-lns`
+/// rounds these weights to a strip cover.
+pub fn lp_orientation(
+    region: &Region,
+    objective: Objective,
+    time_limit: Option<f64>,
+) -> Option<Vec<[f64; 2]>> {
+    let goal = goal::TurnGoal::of(objective)?;
+    if region.len() < 2 || (objective.is_tour() && not_connected(region)) {
+        return None;
+    }
+    let model = turns::PassageModel::new(region, goal, None);
+    if model.formulation().num_cols() == 0 {
+        return None;
+    }
+    let deadline = Deadline::new(time_limit);
+    let settings = Settings {
+        threads: 1,
+        ..Settings::default()
+    };
+    let x = driver::lp_solution(&model, &deadline, &settings)?;
+    Some(model.orientation(&x))
+}
+
 /// The LP relaxation bound of an objective's exact model with all its connectivity cuts
 /// (rounded up to even), or `None` if it does not converge in time or does not apply.
 pub(crate) fn lp_relaxation_bound(
@@ -747,6 +786,7 @@ pub(crate) fn lp_relaxation_bound(
     let settings = Settings {
         threads: 1,
         verbose: false,
+        ..Settings::default()
     };
     if region.len() < 3
         || (objective.is_tour() && objective != Objective::LawnTsp && not_connected(region))

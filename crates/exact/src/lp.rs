@@ -170,10 +170,14 @@ impl Deadline {
 }
 
 /// Solver settings shared by every HiGHS call of one exact solve.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Settings {
     pub threads: usize,
     pub verbose: bool,
+    /// A MIP stops after this many branch-and-bound nodes (HiGHS's `mip_max_nodes`): a work
+    /// limit, unlike a time limit the same on every machine, for the heuristic searches whose
+    /// answers must not depend on the machine's speed. `None`: no limit.
+    pub node_limit: Option<u32>,
 }
 
 /// HiGHS's log, sent to stderr so that stdout stays clean for `--json`.
@@ -213,12 +217,16 @@ fn configure(model: &mut Model, s: &Settings) {
     // in the bipartite grid), so an absolute gap below 2 proves optimality; no relative slack.
     model.set_option("mip_rel_gap", 0.0);
     model.set_option("mip_abs_gap", 1.99);
+    if let Some(nodes) = s.node_limit {
+        model.set_option("mip_max_nodes", nodes.min(i32::MAX as u32) as i32);
+    }
 }
 
 /// How a HiGHS call ended.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Outcome {
     Optimal,
+    /// Stopped at the time limit, or at a work limit (nodes, iterations, solutions).
     TimeLimit,
     Infeasible,
     Failed(String),
@@ -227,9 +235,10 @@ pub enum Outcome {
 fn outcome(status: HighsModelStatus) -> Outcome {
     match status {
         HighsModelStatus::Optimal => Outcome::Optimal,
-        HighsModelStatus::ReachedTimeLimit | HighsModelStatus::ReachedInterrupt => {
-            Outcome::TimeLimit
-        }
+        HighsModelStatus::ReachedTimeLimit
+        | HighsModelStatus::ReachedInterrupt
+        | HighsModelStatus::ReachedSolutionLimit
+        | HighsModelStatus::ReachedIterationLimit => Outcome::TimeLimit,
         HighsModelStatus::Infeasible => Outcome::Infeasible,
         s => Outcome::Failed(format!("HiGHS ended with status {s:?}")),
     }
@@ -520,6 +529,7 @@ mod tests {
         let s = Settings {
             threads: 1,
             verbose: false,
+            ..Settings::default()
         };
         let d = Deadline::new(Some(10.0));
         let mut lp = IncrementalLp::new(&f, s);

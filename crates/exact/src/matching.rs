@@ -23,6 +23,7 @@ pub fn min_perfect_matching(
     let settings = Settings {
         threads: 1,
         verbose: false,
+        ..Settings::default()
     };
     let m = solve_mip(
         &f,

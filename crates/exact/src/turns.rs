@@ -667,6 +667,21 @@ impl CutModel for PassageModel<'_> {
 }
 
 impl PassageModel<'_> {
+    /// How much of each pixel's passages at `x` runs horizontally and vertically: a passage
+    /// gives each of its two sides half its value, to the orientation of the side (a straight
+    /// pass 1 to its own, a turn 1/2 to each, a U-turn 1 to the side's). One-pixel walks of
+    /// `weighted-cc` count for neither.
+    pub(crate) fn orientation(&self, x: &[f64]) -> Vec<[f64; 2]> {
+        let mut out = vec![[0.0; 2]; self.region.len()];
+        for (k, p) in self.vars.iter().enumerate() {
+            for side in [p.a, p.b] {
+                // E = 0 and W = 2 are horizontal sides.
+                out[p.pixel][usize::from(side % 2)] += 0.5 * x[k];
+            }
+        }
+        out
+    }
+
     /// A simple feasible solution: every strip of a minimum strip cover walked there and back
     /// (4 turns each; a one-pixel strip becomes a step to a neighbour and back), merged into a
     /// tour when the goal asks for one.

@@ -485,6 +485,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     run: run_grid,
     discrete: Some(run_discrete),
     ortho: None,
+    by_default: true,
 };
 
 /// The star cover and its merged tour on a discrete instance, with the rook and merge counts

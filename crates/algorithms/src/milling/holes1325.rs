@@ -217,4 +217,5 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     run: |region, _| holes1325(region),
     discrete: None,
     ortho: None,
+    by_default: true,
 };

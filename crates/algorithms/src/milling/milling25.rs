@@ -493,4 +493,5 @@ pub(crate) const ALGORITHM: crate::Algorithm = crate::Algorithm {
     run: |region, _| milling25(region),
     discrete: None,
     ortho: None,
+    by_default: true,
 };

@@ -779,6 +779,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     run: |region, _| tsp65(region),
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

@@ -304,4 +304,5 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     run: |region, _| milling_two_opt(region),
     discrete: None,
     ortho: None,
+    by_default: true,
 };

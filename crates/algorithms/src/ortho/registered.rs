@@ -35,6 +35,7 @@ pub const COROLLARY4: Algorithm = Algorithm {
     run: grid_corollary4,
     discrete: None,
     ortho: Some(ortho_corollary4),
+    by_default: true,
 };
 
 /// Our reading of Theorem 5.7 of *Optimal covering tours with turn costs*:
@@ -71,6 +72,7 @@ pub const STRIPS_CONTOUR: Algorithm = Algorithm {
     run: grid_strips_contour,
     discrete: None,
     ortho: Some(ortho_strips_contour),
+    by_default: true,
 };
 
 /// Table 1's star-cover line for orthogonal polygons: [`star_contour`].
@@ -106,6 +108,7 @@ pub const STAR_CONTOUR: Algorithm = Algorithm {
     run: grid_star_contour,
     discrete: None,
     ortho: Some(ortho_star_contour),
+    by_default: true,
 };
 
 /// Where `star-contour` departs from the paper (module docs of `strips_contour`).

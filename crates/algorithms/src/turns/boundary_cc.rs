@@ -298,6 +298,7 @@ pub const ALGORITHM: Algorithm = Algorithm {
     run,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

@@ -10,6 +10,7 @@
 // `pub` only where algorithms/mod.rs re-exports a module for the integration tests.
 pub mod boundary_cc;
 pub mod coverage4;
+pub mod lp_lns;
 pub mod merge;
 pub(crate) mod star_cover;
 pub(crate) mod strips_double;

@@ -229,6 +229,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     run,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

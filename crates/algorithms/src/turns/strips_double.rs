@@ -149,6 +149,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     run,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

@@ -77,15 +77,21 @@ pub fn strip_floors(links: &[(usize, usize)]) -> Vec<u32> {
 /// O(N √N) for the strip cover; the matching dominates (see
 /// [`match_ports`](crate::endpoint_matching::match_ports)).
 pub(crate) fn strips_matching_cover(region: &Region) -> Result<StripMatchingCover> {
-    let cover = strip_cover(region);
-    let (links, ports) = strip_ports(region, &cover.strips);
+    matched_strips(region, &strip_cover(region).strips)
+}
+
+/// Any strips covering the region joined by a minimum-weight perfect matching of their ends
+/// under the turn distance (the construction above, for a strip cover that need not be
+/// minimum: `lp-lns` rounds its LP to one).
+pub(crate) fn matched_strips(region: &Region, strips: &[Strip]) -> Result<StripMatchingCover> {
+    let (links, ports) = strip_ports(region, strips);
     let partner: Vec<usize> = (0..ports.len()).map(|i| i ^ 1).collect();
     let floor = strip_floors(&links);
     let matching = match_ports(region, &ports, &partner, &floor)?;
     let cc = join_links(region, &links, &ports, &matching)?;
     Ok(StripMatchingCover {
         cover: cc,
-        s: cover.size(),
+        s: strips.len(),
         matching,
     })
 }
@@ -174,6 +180,7 @@ pub(crate) const ALGORITHM: Algorithm = Algorithm {
     run,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

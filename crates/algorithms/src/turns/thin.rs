@@ -220,6 +220,7 @@ pub(crate) const ALGORITHM_CC: Algorithm = Algorithm {
     run: run_cc,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 /// The registry entry of `thin-merge`: the optimal cycle cover of a thin pocket, merged free
@@ -278,6 +279,7 @@ pub(crate) const ALGORITHM_MERGE: Algorithm = Algorithm {
     run: run_merge,
     discrete: None,
     ortho: None,
+    by_default: true,
 };
 
 #[cfg(test)]

@@ -171,6 +171,7 @@ pub fn solve(inst: &Discrete, objective: Objective, opts: &DiscreteOptions) -> D
     let settings = Settings {
         threads: opts.threads.max(1),
         verbose: opts.verbose,
+        ..Settings::default()
     };
     let none = LowerBound {
         value: 0,

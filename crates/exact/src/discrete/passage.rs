@@ -897,6 +897,7 @@ pub(super) fn solve_passages(
         constant,
         deadline,
         settings,
+        false,
     );
     let walks = s.best.as_ref().map(|x| {
         let mut counts = model.counts(x);

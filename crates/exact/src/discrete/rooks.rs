@@ -284,6 +284,7 @@ pub(super) fn milp_rooks(
     let settings = Settings {
         threads: 1,
         verbose: false,
+        ..Settings::default()
     };
     // Values are integers: a gap below 1 proves optimality.
     let mip = solve_mip(
