@@ -433,7 +433,10 @@ proptest! {
                     rep.cycles
                 );
                 let v = o.value_of(&rep);
-                prop_assert!(v >= opt[&o], "{}: {o} {v} below the optimum {}", alg.name, opt[&o]);
+                // The weighted objectives an algorithm reports itself (lp-lns: C = 50) are
+                // solved here when first met.
+                let best = *opt.entry(o).or_insert_with(|| value(&r, o));
+                prop_assert!(v >= best, "{}: {o} {v} below the optimum {best}", alg.name);
             }
         }
     }
