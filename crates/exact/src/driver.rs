@@ -29,9 +29,9 @@
 //! incumbent, and nothing it solves is used as a bound (a window's optimum bounds nothing
 //! but the window).
 //!
-//! [`improve`] runs the primal side alone (LP phase, then the search from the caller's start),
-//! each window's MIP stopped after a number of branch-and-bound nodes rather than seconds: the
-//! heuristic algorithm `lp-lns` of the registry, which rounds the LP to its start itself. Its
+//! [`run_or_improve`] with `primal_only` runs the primal side alone (LP phase, then the
+//! search from the caller's start), each window's MIP stopped after a number of
+//! branch-and-bound nodes rather than seconds: the heuristic algorithm `lp-lns` of the registry, which rounds the LP to its start itself. Its
 //! answer's bound is still proven (the LP phase is the exact solver's). Rounding the LP inside
 //! the model (fixing the columns the LP leaves integral, or every column outside the LP's
 //! support, and solving the rest) was tried and dropped: on the thesis's 1000-pixel instances
@@ -90,9 +90,10 @@ const LNS_WINDOW_SECONDS: f64 = 3.0;
 /// when they run out of time.
 const LNS_FIRST_SIZE: usize = 150;
 
-/// [`improve`]'s node limit of a window's MIP: most windows solve in the root or a few nodes.
+/// The heuristic's node limit of a window's MIP ([`run_or_improve`] with `primal_only`): most
+/// windows solve in the root or a few nodes.
 const WINDOW_NODES: u32 = 200;
-/// [`improve`]'s first window size: smaller than [`LNS_FIRST_SIZE`], more windows in the
+/// The heuristic's first window size: smaller than [`LNS_FIRST_SIZE`], more windows in the
 /// same time (measured on the thesis's 1000-pixel instances: 100 reached the values of 150 in
 /// half the time).
 const IMPROVE_FIRST_SIZE: usize = 100;
@@ -351,8 +352,8 @@ impl<'m, M: CutModel> Loop<'m, M> {
     /// in a fixed scattered order, until its share of the time is spent, the incumbent meets
     /// the bound, or the windows since the last improvement hold 2n elements in all.
     ///
-    /// With a node limit (`nodes`, [`improve`]) each window's MIP stops after that many nodes
-    /// instead of [`LNS_WINDOW_SECONDS`], the window grows after a solved window and shrinks
+    /// With a node limit (`nodes`, the heuristic of [`run_or_improve`]) each window's MIP
+    /// stops after that many nodes instead of [`LNS_WINDOW_SECONDS`], the window grows after a solved window and shrinks
     /// after a stopped one, and the search may take all of the remaining time: its course
     /// then depends on the work done, not on the clock (the clock only stops it at the
     /// deadline).
@@ -585,7 +586,8 @@ impl<'m, M: CutModel> Loop<'m, M> {
             }
         }
     }
-    /// The primal side alone ([`improve`]): LP phase, node-limited search.
+    /// The primal side alone ([`run_or_improve`] with `primal_only`): LP phase, node-limited
+    /// search.
     fn improve(mut self) -> Solved {
         if self.done() {
             return self.finish(Stop::Optimal);
@@ -604,26 +606,6 @@ impl<'m, M: CutModel> Loop<'m, M> {
     }
 }
 
-/// The heuristic: [`run`]'s LP phase and large-neighbourhood search with node-limited MIPs
-/// (module docs), no proof. The answer's `lower` is still proven (the cheap
-/// bound or the LP's), and `stop` is `Optimal` only when the incumbent meets it; otherwise
-/// `TimeLimit`, whether the deadline or the search's own end stopped it.
-pub fn improve<M: CutModel>(
-    model: &M,
-    start: Option<Vec<f64>>,
-    lower: (u64, &'static str),
-    deadline: &Deadline,
-    settings: &Settings,
-) -> Solved {
-    let mut l = Loop::new(model, lower, deadline, settings);
-    if let Some(x) = start
-        && l.accepts(&x)
-    {
-        l.offer(x, "start");
-    }
-    l.improve()
-}
-
 /// Runs the loop. `start` is a feasible solution (the caller validated it), `lower` a proven
 /// bound with its source.
 pub fn run<M: CutModel>(
@@ -633,16 +615,14 @@ pub fn run<M: CutModel>(
     deadline: &Deadline,
     settings: &Settings,
 ) -> Solved {
-    let mut l = Loop::new(model, lower, deadline, settings);
-    if let Some(x) = start
-        && l.accepts(&x)
-    {
-        l.offer(x, "start");
-    }
-    l.run()
+    run_or_improve(model, start, lower, deadline, settings, false)
 }
 
-/// [`run`] (to prove) or [`improve`] (the primal side alone): `primal_only` chooses.
+/// [`run`] (to prove) or, with `primal_only`, the heuristic: the LP phase and the
+/// large-neighbourhood search with node-limited MIPs (module docs), no proof. The heuristic's
+/// `lower` is still proven (the cheap bound or the LP's), and its `stop` is `Optimal` only
+/// when the incumbent meets it, otherwise `TimeLimit`, whether the deadline or the search's
+/// own end stopped it.
 pub fn run_or_improve<M: CutModel>(
     model: &M,
     start: Option<Vec<f64>>,
@@ -651,15 +631,17 @@ pub fn run_or_improve<M: CutModel>(
     settings: &Settings,
     primal_only: bool,
 ) -> Solved {
-    if primal_only {
-        improve(model, start, lower, deadline, settings)
-    } else {
-        run(model, start, lower, deadline, settings)
+    let mut l = Loop::new(model, lower, deadline, settings);
+    if let Some(x) = start
+        && l.accepts(&x)
+    {
+        l.offer(x, "start");
     }
+    if primal_only { l.improve() } else { l.run() }
 }
 
-/// [`run_or_improve`] on a model whose objective leaves out a `constant` (parts of the instance outside
-/// it, such as isolated vertices' one-vertex walks): `lower` bounds the whole value, and the
+/// [`run_or_improve`] on a model whose objective leaves out a `constant` (parts of the
+/// instance outside it, such as isolated vertices' one-vertex walks): `lower` bounds the whole value, and the
 /// answer's values include the constant. A model without columns has one solution, the empty
 /// one, of value `constant`.
 pub fn run_with_constant<M: CutModel>(

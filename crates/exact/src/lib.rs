@@ -137,7 +137,7 @@ pub struct ExactOptions {
     /// `mowmill::warm_start::from_registry` (the best cover of the registered approximation
     /// algorithms). `None`: no warm start unless `warm_start` is given.
     pub starts: Option<StartFn>,
-    /// The primal side only ([`driver::improve`]): the LP phase and a large-neighbourhood
+    /// The primal side only ([`driver::run_or_improve`] with `primal_only`): the LP phase and a large-neighbourhood
     /// search from the best start, its MIPs stopped after a number of nodes; no proof. The
     /// status is `optimal` only when the walk meets the proven bound (then it is optimal);
     /// otherwise `time_limit`. The heuristic algorithm `lp-lns` runs this from its rounding.
