@@ -29,6 +29,9 @@
 //! 5. Each output then takes the cheapest walk, under its objective, of all the outputs it may
 //!    use (a tour is a cycle cover; the weighted walks often have fewer turns).
 //!
+//! Options: `merge` chooses how step 3 merges the rounding's cycles; `coverage4` rewrites every
+//! tour output by Theorem 5.6 at the end, as for the other tours.
+//!
 //! Every window's MIP stops after 200 branch-and-bound nodes, and the windows grow or shrink
 //! by whether they were solved, not by the clock; a safety limit of [`SAFETY_SECONDS`] +
 //! N / 100 s per objective ends a runaway search (and only then may the walk depend on the
@@ -78,9 +81,14 @@ const OBJECTIVES: &[Objective] = &[
 /// The walk of `objective` by the construction above, the search started from the cheapest
 /// of the rounding and the `earlier` walks it may use (checked; a tour objective only takes a
 /// single closed walk).
-pub fn lp_lns(region: &Region, objective: Objective, earlier: &[CycleCover]) -> Result<Output> {
+pub fn lp_lns(
+    region: &Region,
+    objective: Objective,
+    earlier: &[CycleCover],
+    merge: Merge,
+) -> Result<Output> {
     let limit = SAFETY_SECONDS + region.len() as f64 / 100.0;
-    let rounded = lp_rounded(region, objective, limit / 4.0);
+    let rounded = lp_rounded(region, objective, limit / 4.0, merge);
     let start = rounded
         .into_iter()
         .chain(earlier.iter().cloned())
@@ -108,14 +116,19 @@ pub fn lp_lns(region: &Region, objective: Objective, earlier: &[CycleCover]) -> 
 }
 
 /// Steps 1 to 3: the LP's strips joined by a minimum-weight matching of their ends, merged
-/// into a tour for the tour objectives; `None` when the LP does not converge in `seconds`.
-fn lp_rounded(region: &Region, objective: Objective, seconds: f64) -> Option<CycleCover> {
+/// into a tour for the tour objectives by `merge`; `None` when the LP does not converge in `seconds`.
+fn lp_rounded(
+    region: &Region,
+    objective: Objective,
+    seconds: f64,
+    merge: Merge,
+) -> Option<CycleCover> {
     let weights = lp_orientation(region, objective, Some(seconds))?;
     let cover = matched_strips(region, &lp_strips(region, &weights))
         .ok()?
         .cover;
     Some(if objective.is_tour() {
-        merge_cycles(region, &cover, Merge::Smart).0
+        merge_cycles(region, &cover, merge).0
     } else {
         cover
     })
@@ -127,7 +140,8 @@ fn lp_rounded(region: &Region, objective: Objective, seconds: f64) -> Option<Cyc
 /// weight along the strip), every strip whose pixels all lie on another kept strip dropped.
 pub fn lp_strips(region: &Region, weights: &[[f64; 2]]) -> Vec<Strip> {
     let n = region.len();
-    let mut candidates: Vec<Strip> = Vec::new();
+    // The candidate strips with their pixels.
+    let mut candidates: Vec<(Strip, Vec<usize>)> = Vec::new();
     for (o, horizontal) in [(0, true), (1, false)] {
         for s in strips(region, horizontal) {
             let pixels: Vec<usize> = s
@@ -140,37 +154,32 @@ pub fn lp_strips(region: &Region, weights: &[[f64; 2]]) -> Vec<Strip> {
                 h + v < 1e-9 || w >= 0.5 * (h + v) - 1e-9
             });
             if wanted {
-                candidates.push(s);
+                candidates.push((s, pixels));
             }
         }
     }
     let mut count = vec![0u32; n];
-    let members: Vec<Vec<usize>> = candidates
-        .iter()
-        .map(|s| {
-            s.pixels()
-                .map(|p| region.index_of(p).expect("strips lie in the region"))
-                .collect()
-        })
-        .collect();
-    for m in &members {
+    for (_, m) in &candidates {
         for &i in m {
             count[i] += 1;
         }
     }
-    let o_of = |s: &Strip| usize::from(!s.horizontal);
     let mass: Vec<f64> = candidates
         .iter()
-        .zip(&members)
-        .map(|(s, m)| m.iter().map(|&i| weights[i][o_of(s)]).sum())
+        .map(|(s, m)| {
+            m.iter()
+                .map(|&i| weights[i][usize::from(!s.horizontal)])
+                .sum()
+        })
         .collect();
     let mut order: Vec<usize> = (0..candidates.len()).collect();
     order.sort_by(|&a, &b| mass[a].total_cmp(&mass[b]).then(a.cmp(&b)));
     let mut keep = vec![true; candidates.len()];
     for k in order {
-        if members[k].iter().all(|&i| count[i] >= 2) {
+        let m = &candidates[k].1;
+        if m.iter().all(|&i| count[i] >= 2) {
             keep[k] = false;
-            for &i in &members[k] {
+            for &i in m {
                 count[i] -= 1;
             }
         }
@@ -178,7 +187,7 @@ pub fn lp_strips(region: &Region, weights: &[[f64; 2]]) -> Vec<Strip> {
     candidates
         .into_iter()
         .zip(keep)
-        .filter_map(|(s, k)| k.then_some(s))
+        .filter_map(|((s, _), k)| k.then_some(s))
         .collect()
 }
 
@@ -186,9 +195,27 @@ fn run(region: &Region, options: &Options) -> Result<Solution> {
     let mut solution: Solution = Solution::default();
     for &objective in OBJECTIVES.iter().filter(|&&o| options.wants(o, OBJECTIVES)) {
         let earlier: Vec<CycleCover> = solution.outputs.iter().map(|o| o.cover.clone()).collect();
-        solution.outputs.push(lp_lns(region, objective, &earlier)?);
+        solution
+            .outputs
+            .push(lp_lns(region, objective, &earlier, options.merge)?);
     }
     share(region, &mut solution.outputs);
+    if options.coverage4 {
+        // Theorem 5.6's rewrite of every tour output (as for the other tours), after sharing.
+        let mut stuck = 0;
+        for out in solution
+            .outputs
+            .iter_mut()
+            .filter(|o| o.objective.is_tour())
+        {
+            let (rewritten, s) = crate::coverage4::coverage4(region, &out.cover);
+            out.cover = rewritten;
+            stuck += s;
+        }
+        solution
+            .certificates
+            .insert("coverage4_stuck".to_string(), stuck as i64);
+    }
     Ok(solution)
 }
 
@@ -319,6 +346,25 @@ mod tests {
                 if out.objective == Objective::CcTurns {
                     assert!(rep.turns <= 4 * min_strip_cover_size(&region) as u64);
                 }
+            }
+        }
+    }
+
+    /// `coverage4` is honoured: every tour output covers each pixel at most 4 times.
+    #[test]
+    fn coverage4_rewrites_the_tours() {
+        let options = Options {
+            coverage4: true,
+            ..Options::default()
+        };
+        for region in regions().into_iter().take(8) {
+            let sol = run(&region, &options).unwrap();
+            assert!(sol.certificates.contains_key("coverage4_stuck"));
+            let stuck = sol.certificates["coverage4_stuck"];
+            for out in sol.outputs.iter().filter(|o| o.objective.is_tour()) {
+                let rep = check(&region, &out.cover, Mode::Milling);
+                assert!(rep.valid && rep.cycles == 1);
+                assert!(stuck > 0 || rep.max_coverage <= 4, "{:?}", out.objective);
             }
         }
     }
