@@ -350,8 +350,19 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
         t.is_multiple_of(2),
         "strip lines have two ends, so lone ends come in pairs"
     );
-    let dist: Vec<Vec<u32>> = ends.iter().map(|&a| bfs(region, a)).collect();
-    let at = |x: usize, y: usize| dist[x][ends[y]];
+    // Only the t × t distances between ends are kept (t whole distance arrays were 2.5 GB at
+    // 10^7 pixels with 100 holes), and each search stops once it has reached every end.
+    let mut slot = vec![u32::MAX; region.len()];
+    for (k, &e) in ends.iter().enumerate() {
+        slot[e] = k as u32;
+    }
+    let mut dist = vec![u32::MAX; region.len()];
+    let mut queue = Vec::with_capacity(region.len());
+    let table: Vec<Vec<u32>> = ends
+        .iter()
+        .map(|&a| distances_to_ends(region, a, &slot, t, &mut dist, &mut queue))
+        .collect();
+    let at = |x: usize, y: usize| table[x][y];
     // Maximum cardinality and weight `big − d` make the maximum-weight matching a perfect
     // matching of minimum total distance (every pair is reachable: the region is connected).
     let big = 2 + 2 * i128::from(
@@ -399,20 +410,42 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
     added
 }
 
-/// Breadth-first search from `a` in the grid graph: distances (u32::MAX where unreachable).
-fn bfs(region: &Region, a: usize) -> Vec<u32> {
-    let mut dist = vec![u32::MAX; region.len()];
+/// Breadth-first search from `a` in the grid graph, stopped once it has reached all `t` ends
+/// (`slot[p]` is the end number of pixel p, `u32::MAX` for other pixels): the distance to every
+/// end, by end number (`u32::MAX` where unreachable). `dist` (all `u32::MAX`) and `queue` are
+/// scratch space, left as they were found.
+fn distances_to_ends(
+    region: &Region,
+    a: usize,
+    slot: &[u32],
+    t: usize,
+    dist: &mut [u32],
+    queue: &mut Vec<u32>,
+) -> Vec<u32> {
+    let mut found = vec![u32::MAX; t];
+    let mut left = t;
     dist[a] = 0;
-    let mut queue = std::collections::VecDeque::from([a]);
-    while let Some(v) = queue.pop_front() {
+    queue.clear();
+    queue.push(a as u32);
+    let mut head = 0;
+    while head < queue.len() && left > 0 {
+        let v = queue[head] as usize;
+        head += 1;
+        if slot[v] != u32::MAX {
+            found[slot[v] as usize] = dist[v];
+            left -= 1;
+        }
         for w in region.neighbors(v) {
             if dist[w] == u32::MAX {
                 dist[w] = dist[v] + 1;
-                queue.push_back(w);
+                queue.push(w as u32);
             }
         }
     }
-    dist
+    for &v in queue.iter() {
+        dist[v as usize] = u32::MAX;
+    }
+    found
 }
 
 /// A shortest path from `a` to `b` in the grid graph: the breadth-first search from `a`,
