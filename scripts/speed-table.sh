@@ -5,6 +5,11 @@
 # stopped the run ("> T s" past the timeout, "exit K" for a failure).
 #
 #   scripts/speed-table.sh [--sizes "10000 100000 1000000"] [--timeout 300] [--rows "ALGO KIND..."]
+#                          [--csv FILE]
+#
+# --csv also writes every cell as a row of FILE (algorithm,instance,n,seconds,peak_mb,status;
+# status ok, finding for exit 1, timeout, exit K, none without a generator), the input of
+# `scripts/speed-plot.py FILE OUT.svg` (the log-log plot and the fitted exponents).
 #
 # --rows measures only the given rows (lines of an algorithm and its instance kinds, as in the
 # list at the end).
@@ -20,11 +25,13 @@ cd "$(dirname "$0")/.."
 sizes="10000 100000 1000000"
 timeout=300
 rows=""
+csv=""
 while [ $# -gt 0 ]; do
     case "$1" in
         --sizes) sizes="$2"; shift 2 ;;
         --timeout) timeout="$2"; shift 2 ;;
         --rows) rows="$2"; shift 2 ;;
+        --csv) csv="$2"; shift 2 ;;
         *) echo "usage: $0 [--sizes \"N1 N2 ...\"] [--timeout SECONDS]" >&2; exit 2 ;;
     esac
 done
@@ -32,6 +39,11 @@ cargo build --release --quiet
 bin=target/release/mowmill
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
+if [ -n "$csv" ]; then echo "algorithm,instance,n,seconds,peak_mb,status" >"$csv"; fi
+
+record() { # algo kind n seconds peak_mb status -> one CSV row, when asked for
+    if [ -n "$csv" ]; then echo "$1,$2,$3,$4,$5,$6" >>"$csv"; fi
+}
 
 instance() { # kind n -> path (generated once)
     local kind=$1 n=$2 f="$dir/$1-$2.grid"
@@ -55,16 +67,21 @@ measure() { # algo kind n -> one cell
     local f rc
     # The boundary generator gives up on its shape above about 10^5 pixels (its two-row
     # fallback would be timed instead).
-    if [ "$2" = bd ] && [ "$3" -gt 100000 ]; then echo "–"; return; fi
+    if [ "$2" = bd ] && [ "$3" -gt 100000 ]; then record "$1" "$2" "$3" "" "" none; echo "–"; return; fi
     f=$(instance "$2" "$3")
     rc=0
     timeout "$timeout" /usr/bin/time -f "%e %M" -o "$dir/time" "$bin" solve --algo "$1" "$f" \
         >/dev/null 2>"$dir/err" || rc=$?
     if [ "$rc" = 124 ]; then
+        record "$1" "$2" "$3" "$timeout" "" timeout
         echo "> $timeout s"
     elif [ "$rc" != 0 ] && [ "$rc" != 1 ]; then
+        record "$1" "$2" "$3" "" "" "exit $rc"
         echo "exit $rc"
     else
+        # shellcheck disable=SC2046 # two numbers: seconds and peak memory in MB
+        record "$1" "$2" "$3" $(awk '{ printf "%s %d", $1, $2 / 1024 }' "$dir/time") \
+            "$([ "$rc" = 1 ] && echo finding || echo ok)"
         awk '{ printf "%.2f s, %d MB", $1, $2 / 1024 }' "$dir/time"
         # Exit 1: the run finished but the checker or a guarantee failed (a finding).
         if [ "$rc" = 1 ]; then echo -n " (exit 1)"; fi
