@@ -196,13 +196,16 @@ impl KdTree {
         }
     }
 
-    /// Nearest point (by (key, id)) to point `i` in a component other than `own`.
+    /// Nearest point (by (key, id)) to point `i` in a component other than `own`, among those
+    /// at distance at most `limit` (the best its component has found so far: without it, the
+    /// queries from a large component's border searched far and took 6 s of the MST at 10^6).
     fn nearest_foreign(
         &self,
         p: &Points,
         root: &[usize],
         i: usize,
         own: usize,
+        limit: f64,
     ) -> Option<(u64, usize)> {
         let mut best: Option<(u64, usize, f64)> = None;
         let mut stack = vec![0usize];
@@ -216,7 +219,7 @@ impl KdTree {
             let dx = (node.min.0 - q.0).max(0.0).max(q.0 - node.max.0);
             let dy = (node.min.1 - q.1).max(0.0).max(q.1 - node.max.1);
             let bound = (dx * dx + dy * dy).sqrt();
-            if best.is_some_and(|b| bound > b.2 + 1e-9) {
+            if bound > best.map_or(limit, |b| b.2) + 1e-9 {
                 continue;
             }
             match node.children {
@@ -250,6 +253,71 @@ impl KdTree {
     }
 }
 
+/// The id of a lattice point of S: a dense array over the bounding box when it has at most
+/// [`PointIndex::DENSE_CELLS`] cells per point (a lookup is one load; the SipHash map it
+/// replaced took about 1 s of the MST at 10^6 points), else a hash map.
+enum PointIndex {
+    Dense {
+        min: (i64, i64),
+        width: i64,
+        height: i64,
+        ids: Vec<u32>,
+    },
+    Sparse(HashMap<Pixel, usize>),
+}
+
+impl PointIndex {
+    /// Cells of the bounding box per point up to which the dense array is used (4 bytes a cell).
+    const DENSE_CELLS: i64 = 16;
+
+    fn new(pts: &[Pixel]) -> PointIndex {
+        let (mut lo, mut hi) = ((i64::MAX, i64::MAX), (i64::MIN, i64::MIN));
+        for q in pts {
+            let (x, y) = (i64::from(q.x), i64::from(q.y));
+            lo = (lo.0.min(x), lo.1.min(y));
+            hi = (hi.0.max(x), hi.1.max(y));
+        }
+        let (width, height) = (hi.0 - lo.0 + 1, hi.1 - lo.1 + 1);
+        let dense = !pts.is_empty()
+            && pts.len() < u32::MAX as usize
+            && width
+                .checked_mul(height)
+                .is_some_and(|c| c <= Self::DENSE_CELLS * pts.len() as i64);
+        if !dense {
+            return PointIndex::Sparse(pts.iter().enumerate().map(|(i, &q)| (q, i)).collect());
+        }
+        let mut ids = vec![u32::MAX; (width * height) as usize];
+        for (i, q) in pts.iter().enumerate() {
+            ids[((i64::from(q.y) - lo.1) * width + i64::from(q.x) - lo.0) as usize] = i as u32;
+        }
+        PointIndex::Dense {
+            min: lo,
+            width,
+            height,
+            ids,
+        }
+    }
+
+    fn get(&self, q: Pixel) -> Option<usize> {
+        match self {
+            PointIndex::Dense {
+                min,
+                width,
+                height,
+                ids,
+            } => {
+                let (x, y) = (i64::from(q.x) - min.0, i64::from(q.y) - min.1);
+                if x < 0 || y < 0 || x >= *width || y >= *height {
+                    return None;
+                }
+                let id = ids[(y * width + x) as usize];
+                (id != u32::MAX).then_some(id as usize)
+            }
+            PointIndex::Sparse(map) => map.get(&q).copied(),
+        }
+    }
+}
+
 /// An exact minimum spanning tree of S: Kruskal on the unit lattice edges (the smallest
 /// possible distance), then Borůvka rounds joining components by their nearest foreign
 /// points, searched only from points with a lattice neighbour outside their component (a
@@ -257,7 +325,7 @@ impl KdTree {
 /// point along a lattice direction gets strictly closer). Ties are broken by (key, i, j).
 fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
     let n = p.len();
-    let index: HashMap<Pixel, usize> = p.pts.iter().enumerate().map(|(i, &q)| (q, i)).collect();
+    let index = PointIndex::new(&p.pts);
     let mut uf = UnionFind::new(n);
     let mut edges = Vec::with_capacity(n.saturating_sub(1));
     // All unit edges weigh the minimum, so any spanning forest of them belongs to an MST; a
@@ -278,7 +346,7 @@ fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
             };
             top.1 += 1;
             let q = Pixel::new(p.pts[v].x + dx, p.pts[v].y + dy);
-            if let Some(&w) = index.get(&q)
+            if let Some(w) = index.get(q)
                 && !seen[w]
             {
                 seen[w] = true;
@@ -288,22 +356,29 @@ fn minimum_spanning_tree(p: &Points) -> Vec<(usize, usize)> {
             }
         }
     }
-    while edges.len() + 1 < n {
-        let border: Vec<usize> = (0..n)
-            .filter(|&i| {
-                let ri = uf.find_mut(i);
-                p.unit_steps().iter().any(|&(dx, dy)| {
-                    let q = Pixel::new(p.pts[i].x + dx, p.pts[i].y + dy);
-                    index.get(&q).is_none_or(|&j| uf.find_mut(j) != ri)
-                })
+    // After the unit edges every lattice neighbour in S shares the point's component, so the
+    // points with a lattice neighbour outside S are the border of every later round too:
+    // computed once (recomputing it each round took most of lawn-mst's 5.4 s at 10^6).
+    let border: Vec<usize> = (0..n)
+        .filter(|&i| {
+            p.unit_steps().iter().any(|&(dx, dy)| {
+                index
+                    .get(Pixel::new(p.pts[i].x + dx, p.pts[i].y + dy))
+                    .is_none()
             })
-            .collect();
+        })
+        .collect();
+    // The tree's geometry does not change between rounds: built once, relabelled per round.
+    let mut tree = KdTree::new(p, border.clone());
+    while edges.len() + 1 < n {
         let root: Vec<usize> = (0..n).map(|i| uf.find_mut(i)).collect();
-        let mut tree = KdTree::new(p, border.clone());
         tree.label(&root);
         let mut best: HashMap<usize, (u64, usize, usize)> = HashMap::new();
         for &i in &border {
-            if let Some((k, j)) = tree.nearest_foreign(p, &root, i, root[i]) {
+            let limit = best
+                .get(&root[i])
+                .map_or(f64::INFINITY, |&(_, a, b)| p.dist(a, b));
+            if let Some((k, j)) = tree.nearest_foreign(p, &root, i, root[i], limit) {
                 let cand = (k, i.min(j), i.max(j));
                 let e = best.entry(root[i]).or_insert(cand);
                 if cand < *e {
