@@ -1,6 +1,11 @@
 //! `lawn-2opt`'s local search: the shared 2-opt / Or-opt / double-bridge search of
 //! [`crate::tsp_local`] on the cell centres in the motion's metric, with
 //! neighbour lists from a bucket grid.
+//!
+//! The kicks stay at [`tsp_local::default_kicks`] (20,000 at most): on gen lawn-scattered
+//! --n 1000000 --seed 1, `solve --algo lawn-2opt` takes 8.1 s and 0.23 GB with them (length
+//! 1,063,654 from the certified Christofides start; 1,057,348 from the exact one before, in
+//! 54 s and 3.8 GB), while 10^6 kicks reach 1,047,928 but take 98 s (about 90 µs a kick).
 
 use super::Points;
 use crate::lawn_check::centre;

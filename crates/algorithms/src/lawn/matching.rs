@@ -18,6 +18,14 @@
 //!   αTSP = 3/2 holds on every run. Above [`HANAN_LIMIT`] grid vertices (sparse lawns: few
 //!   points in a large box) the graph is the O(M log M) Manhattan spanner of a recursive
 //!   median split instead ([`l1_spanner`], also exact for every pair).
+//! - Beyond the exact solver's reach ([`exact_within_reach`]: more than [`SPANNER_ODD_LIMIT`]
+//!   odd nodes and a Hanan grid above [`EXACT_GRID_LIMIT`] vertices), any cutter: the greedy
+//!   near-minimum matching of [`near_minimum`] (`matching_optimal = 0`). Measured on gen
+//!   lawn-scattered --n 1000000 --seed 1 (103,438 odd nodes): exact 83,122 in about 20 s and
+//!   3.5 GB, greedy 93,726 (+12.8%) in well under a second; random-simple (72,144 odd nodes):
+//!   57,329 against 63,845 (+11.4%). The Christofides tour grows by 0.97% and 0.62%; for the
+//!   square cutter its 3/2 is then certified on the tour itself (`christofides` in the parent
+//!   module), with the exact matching as the fallback.
 //! - Euclidean motion (square-free, disk), more odd nodes: the L1-minimum matching (solved
 //!   as above, on the pixels for square-free, on the hexagon centres in milli-units for the
 //!   disk), improved by exchanging partners between near pairs under the Euclidean metric
@@ -44,6 +52,21 @@ pub(super) const COMPLETE_LIMIT: usize = 400;
 /// Above this many Hanan-grid vertices, the Manhattan spanner instead.
 pub(super) const HANAN_LIMIT: usize = 4_000_000;
 
+/// The most Hanan-grid vertices for which [`odd_matching`] solves the exact matching unasked.
+/// fusion-blossom keeps about 0.9 KB per grid vertex: `solve --algo lawn-christofides` on
+/// lawn-scattered 10^6 (103,438 odd nodes, a 4-million-vertex grid) took 30 s user and
+/// 3.8 GB, of which the matching 20 s and 3.5 GB; on lawn-scattered 10^5 (17,200 odd nodes)
+/// 1.7 s and 0.35 GB, still exact under this limit.
+pub(super) const EXACT_GRID_LIMIT: usize = 1_000_000;
+
+/// Up to this many odd nodes the exact matching is solved whatever the grid: the spanner route
+/// grows fast (measured 9.1 GB for 72,144 odd nodes of random-simple 10^6, and 24 GB for
+/// lawn-scattered's 103,438), but is small for sparse lawns of few odd nodes.
+pub(super) const SPANNER_ODD_LIMIT: usize = 4000;
+
+/// Candidate partners per odd node in [`near_minimum`]'s greedy rounds.
+const GREEDY_NEAR: usize = 8;
+
 /// Above this many odd nodes, fusion-blossom's partitioned solver (one thread, still exact).
 const SERIAL_LIMIT: usize = 4000;
 
@@ -59,9 +82,48 @@ pub(super) struct OddMatching {
     pub(super) lower_bound: f64,
 }
 
-/// A minimum (square cutter: always proven; Euclidean: proven up to [`COMPLETE_LIMIT`] odd
-/// nodes) perfect matching of `odd`, an even set of point ids.
+/// Whether the exact solver is within reach for `odd`: the complete graph up to
+/// [`COMPLETE_LIMIT`] nodes, the Hanan grid up to [`EXACT_GRID_LIMIT`] vertices, the spanner up
+/// to [`SPANNER_ODD_LIMIT`] nodes. Beyond, [`near_minimum`].
+pub(super) fn exact_within_reach(p: &Points, odd: &[usize]) -> bool {
+    if odd.len() <= COMPLETE_LIMIT || odd.len() <= SPANNER_ODD_LIMIT {
+        return true;
+    }
+    let distinct = |f: &dyn Fn(usize) -> i64| {
+        let mut v: Vec<i64> = odd.iter().map(|&i| f(i)).collect();
+        v.sort_unstable();
+        v.dedup();
+        v.len()
+    };
+    let (w, h) = match p.cutter {
+        Cutter::Square | Cutter::SquareFree => (
+            distinct(&|i| i64::from(p.pts[i].x)),
+            distinct(&|i| i64::from(p.pts[i].y)),
+        ),
+        // The disk's L1 matching runs on the hexagon centres in milli-units.
+        Cutter::Disk => (
+            distinct(&|i| (centre(p.cutter, p.pts[i]).0 * 1000.0).floor() as i64),
+            distinct(&|i| (centre(p.cutter, p.pts[i]).1 * 1000.0).floor() as i64),
+        ),
+    };
+    w.checked_mul(h).is_some_and(|v| v <= EXACT_GRID_LIMIT)
+}
+
+/// A perfect matching of `odd`, an even set of point ids: the minimum when
+/// [`exact_within_reach`] (square cutter: always proven; Euclidean: proven up to
+/// [`COMPLETE_LIMIT`] odd nodes), else the near-minimum one of [`near_minimum`] (not proven;
+/// the caller certifies the tour instead, see `christofides`).
 pub(super) fn odd_matching(p: &Points, odd: &[usize]) -> OddMatching {
+    if exact_within_reach(p, odd) {
+        minimum_matching(p, odd)
+    } else {
+        near_minimum(p, odd)
+    }
+}
+
+/// A minimum (square cutter: always proven; Euclidean: proven up to [`COMPLETE_LIMIT`] odd
+/// nodes) perfect matching of `odd`, an even set of point ids, at any size.
+pub(super) fn minimum_matching(p: &Points, odd: &[usize]) -> OddMatching {
     let weight_of = |pairs: &[(usize, usize)]| pairs.iter().map(|&(a, b)| p.dist(a, b)).sum();
     if odd.len() <= COMPLETE_LIMIT {
         return complete(p, odd);
@@ -285,6 +347,57 @@ fn euclidean(p: &Points, odd: &[usize]) -> Option<OddMatching> {
         optimal: weight <= lower,
         lower_bound: lower.min(weight),
     })
+}
+
+/// A near-minimum perfect matching of `odd` for when the exact solver is out of reach: greedy
+/// rounds over the [`GREEDY_NEAR`] nearest unmatched odd nodes (lightest candidate pair first,
+/// ties by ids; every round matches at least the closest remaining pair), then the pair
+/// exchanges of [`exchange_pairs`]. Not proven minimum (`optimal = false`); the lower bound is
+/// half a unit per node (distinct lattice points lie at least one unit apart).
+///
+/// # Complexity
+/// O(M log M) per round (bucket-grid neighbour lists), a few rounds (each keeps only the nodes
+/// whose candidates were all taken).
+pub(super) fn near_minimum(p: &Points, odd: &[usize]) -> OddMatching {
+    let mut mate = vec![usize::MAX; p.len()];
+    let mut left: Vec<usize> = odd.to_vec();
+    while !left.is_empty() {
+        let sub = Points {
+            cutter: p.cutter,
+            pts: left.iter().map(|&i| p.pts[i]).collect(),
+        };
+        let near = super::local::nearest_neighbours(&sub, GREEDY_NEAR.min(left.len() - 1));
+        let mut candidates: Vec<(u64, usize, usize)> = near
+            .iter()
+            .enumerate()
+            .flat_map(|(a, list)| list.iter().map(move |&b| (a.min(b), a.max(b))))
+            .map(|(a, b)| (sub.key(a, b), a, b))
+            .collect();
+        candidates.sort_unstable();
+        candidates.dedup();
+        for (_, a, b) in candidates {
+            let (a, b) = (left[a], left[b]);
+            if mate[a] == usize::MAX && mate[b] == usize::MAX {
+                mate[a] = b;
+                mate[b] = a;
+            }
+        }
+        left.retain(|&i| mate[i] == usize::MAX);
+    }
+    exchange_pairs(p, odd, &mut mate);
+    let mut pairs: Vec<(usize, usize)> = odd
+        .iter()
+        .filter(|&&a| a < mate[a])
+        .map(|&a| (a, mate[a]))
+        .collect();
+    pairs.sort_unstable();
+    let weight: f64 = pairs.iter().map(|&(a, b)| p.dist(a, b)).sum();
+    OddMatching {
+        pairs,
+        weight,
+        optimal: false,
+        lower_bound: (odd.len() / 2) as f64,
+    }
 }
 
 /// Local improvement of a perfect matching of `odd` (`mate` over point ids) under the
