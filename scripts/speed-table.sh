@@ -11,10 +11,10 @@
 #
 # Instances (seed 1): rs = random-simple, rh = random-holed --holes 100 (--no-cut for
 # holes1325, which needs no local cut vertices), band = the diagonal band B_k with k = N/5,
-# thin = thin pockets, bd = boundary (every pixel a boundary pixel, --compactness 0.2
-# --seed 2: seed 1 at 10^5 gives the generator's two-row fallback),
-# lawn = lawn-scattered. tsp65 needs a region without holes; thin-euler (a thin region whose
-# pixels all have even degree) has no generator of large instances and is left out.
+# thin = thin pockets, bd = boundary-rooms (every pixel a boundary pixel, exactly N, at every
+# size: the `boundary` family gives up on its shape above about 10^5 pixels), te =
+# thin-eulerian (thin, every pixel of even degree, N within N/50 + 32), lawn = lawn-scattered.
+# tsp65 needs a region without holes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes="10000 100000 1000000"
@@ -44,7 +44,8 @@ instance() { # kind n -> path (generated once)
             rh-nocut) "$bin" gen random-holed --n "$n" --holes 100 --no-cut --seed 1 --out "$f" ;;
             band) "$bin" gen band --k $((n / 5)) --out "$f" ;;
             thin) "$bin" gen thin --n "$n" --seed 1 --out "$f" ;;
-            bd) "$bin" gen boundary --n "$n" --compactness 0.2 --seed 2 --out "$f" ;;
+            bd) "$bin" gen boundary-rooms --n "$n" --seed 1 --out "$f" ;;
+            te) "$bin" gen thin-eulerian --n "$n" --seed 1 --out "$f" ;;
             lawn) "$bin" gen lawn-scattered --n "$n" --seed 1 --out "$f" ;;
         esac >/dev/null 2>&1
     fi
@@ -53,9 +54,6 @@ instance() { # kind n -> path (generated once)
 
 measure() { # algo kind n -> one cell
     local f rc
-    # The boundary generator gives up on its shape above about 10^5 pixels (its two-row
-    # fallback would be timed instead).
-    if [ "$2" = bd ] && [ "$3" -gt 100000 ]; then echo "–"; return; fi
     f=$(instance "$2" "$3")
     rc=0
     timeout "$timeout" /usr/bin/time -f "%e %M" -o "$dir/time" "$bin" solve --algo "$1" "$f" \
@@ -86,6 +84,7 @@ strips-matching rs rh band
 thin-cc thin
 thin-merge thin
 boundary-cc bd
+thin-euler te
 lawn-mst lawn rs
 lawn-christofides lawn rs
 lawn-2opt lawn rs
