@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # docs/measured.md's speed table: every registered algorithm, end to end (`mowmill solve`: parse, run,
-# merge, the checker's recount), on generated regions of 10^4, 10^5 and 10^6 pixels, one run
+# merge, the checker's recount), on generated regions of 10^5, 10^6 and 10^7 pixels (by default), one run
 # each, one thread. Prints a markdown table: wall seconds and peak memory per size, or what
 # stopped the run ("> T s" past the timeout, "exit K" for a failure).
 #
@@ -8,7 +8,7 @@
 #                          [--csv FILE]
 #
 # --csv also writes every cell as a row of FILE (algorithm,instance,n,seconds,peak_mb,status;
-# status ok, finding for exit 1, timeout, exit K, none without a generator), the input of
+# status ok, finding for exit 1, timeout, exit K), the input of
 # `scripts/speed-plot.py FILE OUT.svg` (the log-log plot and the fitted exponents).
 #
 # --rows measures only the given rows (lines of an algorithm and its instance kinds, as in the
@@ -16,13 +16,13 @@
 #
 # Instances (seed 1): rs = random-simple, rh = random-holed --holes 100 (--no-cut for
 # holes1325, which needs no local cut vertices), band = the diagonal band B_k with k = N/5,
-# thin = thin pockets, bd = boundary (every pixel a boundary pixel, --compactness 0.2
-# --seed 2: seed 1 at 10^5 gives the generator's two-row fallback),
-# lawn = lawn-scattered. tsp65 needs a region without holes; thin-euler (a thin region whose
-# pixels all have even degree) has no generator of large instances and is left out.
+# thin = thin pockets, bd = boundary-rooms (every pixel a boundary pixel, exactly N, at every
+# size: the `boundary` family gives up on its shape above about 10^5 pixels), te =
+# thin-eulerian (thin, every pixel of even degree, N within N/50 + 32), lawn = lawn-scattered.
+# tsp65 needs a region without holes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sizes="10000 100000 1000000"
+sizes="100000 1000000 10000000"
 timeout=300
 rows=""
 csv=""
@@ -56,7 +56,8 @@ instance() { # kind n -> path (generated once)
             rh-nocut) "$bin" gen random-holed --n "$n" --holes 100 --no-cut --seed 1 --out "$f" ;;
             band) "$bin" gen band --k $((n / 5)) --out "$f" ;;
             thin) "$bin" gen thin --n "$n" --seed 1 --out "$f" ;;
-            bd) "$bin" gen boundary --n "$n" --compactness 0.2 --seed 2 --out "$f" ;;
+            bd) "$bin" gen boundary-rooms --n "$n" --seed 1 --out "$f" ;;
+            te) "$bin" gen thin-eulerian --n "$n" --seed 1 --out "$f" ;;
             lawn) "$bin" gen lawn-scattered --n "$n" --seed 1 --out "$f" ;;
         esac >/dev/null 2>&1
     fi
@@ -65,9 +66,6 @@ instance() { # kind n -> path (generated once)
 
 measure() { # algo kind n -> one cell
     local f rc
-    # The boundary generator gives up on its shape above about 10^5 pixels (its two-row
-    # fallback would be timed instead).
-    if [ "$2" = bd ] && [ "$3" -gt 100000 ]; then record "$1" "$2" "$3" "" "" none; echo "–"; return; fi
     f=$(instance "$2" "$3")
     rc=0
     timeout "$timeout" /usr/bin/time -f "%e %M" -o "$dir/time" "$bin" solve --algo "$1" "$f" \
@@ -103,6 +101,7 @@ strips-matching rs rh band
 thin-cc thin
 thin-merge thin
 boundary-cc bd
+thin-euler te
 lawn-mst lawn rs
 lawn-christofides lawn rs
 lawn-2opt lawn rs

@@ -86,8 +86,14 @@ pub(super) fn boundary_canvas(n: usize, o: &ShapeOpts, rng: &mut Rng) -> Option<
         let &r = options.iter().find(|&&r| connected_without(&c, r))?;
         c.set(r, false);
     }
-    // Exactly n: add an empty cell only if it and its pixel neighbours keep an empty
-    // 4-neighbour; remove a pixel only if its ring is one run (connectivity kept).
+    reach_size(&mut c, n, rng).then_some(c)
+}
+
+/// Grows or erodes a connected canvas of boundary pixels to exactly `n` pixels, keeping both
+/// properties: add an empty cell only if it and its pixel neighbours keep an empty
+/// 4-neighbour; remove a pixel only if its ring is one run (connectivity kept). False when a
+/// pass over the candidates changes nothing.
+pub(super) fn reach_size(c: &mut Canvas, n: usize, rng: &mut Rng) -> bool {
     while c.count != n {
         let grow = c.count < n;
         let mut cells: Vec<u32> = (0..c.area())
@@ -116,10 +122,10 @@ pub(super) fn boundary_canvas(n: usize, o: &ShapeOpts, rng: &mut Rng) -> Option<
             }
         }
         if c.count == before {
-            return None;
+            return false;
         }
     }
-    Some(c)
+    true
 }
 
 /// The fallback of `boundary`: two rows, the upper one shorter by at most one pixel.

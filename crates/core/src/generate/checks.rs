@@ -17,6 +17,8 @@ pub(super) enum CutRule {
 #[derive(Clone, Debug)]
 pub(super) struct Promise {
     pub(super) n: usize,
+    /// How far the pixel count may lie from `n` (0: exactly n).
+    pub(super) n_slack: usize,
     pub(super) components: usize,
     pub(super) holes: usize,
     pub(super) cut: CutRule,
@@ -33,8 +35,13 @@ pub(super) struct Promise {
 
 /// Checks `promise`; returns the number of holes.
 pub(super) fn verify(region: &Region, promise: &Promise) -> std::result::Result<usize, String> {
-    if region.len() != promise.n {
-        return Err(format!("{} pixels instead of {}", region.len(), promise.n));
+    if region.len().abs_diff(promise.n) > promise.n_slack {
+        return Err(format!(
+            "{} pixels instead of {} (± {})",
+            region.len(),
+            promise.n,
+            promise.n_slack
+        ));
     }
     let comps = topology::components(region);
     if comps.count != promise.components {

@@ -31,6 +31,7 @@ pub(super) fn part_sizes(n: usize, parts: usize, rng: &mut Rng) -> Vec<usize> {
 pub(super) fn lawn_part(size: usize, o: &ShapeOpts, rng: &mut Rng) -> Vec<Pixel> {
     let promise = Promise {
         n: size,
+        n_slack: 0,
         components: 1,
         holes: 0,
         cut: CutRule::Any,

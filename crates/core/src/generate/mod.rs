@@ -126,6 +126,7 @@
 
 mod band;
 mod boundary;
+mod boundary_rooms;
 mod canvas;
 mod checks;
 mod comb;
@@ -151,6 +152,7 @@ mod styles;
 mod thin;
 mod thin43;
 mod thin_arms;
+mod thin_eulerian;
 mod windows;
 
 #[cfg(test)]

@@ -31,6 +31,8 @@ pub enum Family {
     Outlines,
     Ring,
     CorridorStar,
+    BoundaryRooms,
+    ThinEulerian,
 }
 
 /// A generator parameter (the field of [`GenParams`](super::GenParams) of the same name).
@@ -324,7 +326,7 @@ pub struct FamilyInfo {
 
 /// The registry, indexed by `Family as usize`. A new family adds a variant, a row here and an
 /// arm in `Spec::build`; `mowmill gen`, configs and the manifest read it from here.
-pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
+pub(super) const FAMILY_TABLE: [FamilyInfo; 22] = [
     FamilyInfo {
         family: Family::Rect,
         name: "rect",
@@ -511,6 +513,26 @@ pub(super) const FAMILY_TABLE: [FamilyInfo; 20] = [
         random: false,
         structured: true,
     },
+    // The two large-scale families (10^6 to 10^7 pixels in seconds) for boundary-cc and
+    // thin-euler, whose small families `boundary` and `outlines` do not scale.
+    FamilyInfo {
+        family: Family::BoundaryRooms,
+        name: "boundary-rooms",
+        summary: "every pixel a boundary pixel, at any size (linear time): rooms on a random tree with pinholes, notches, stairs, one-pixel links, holes",
+        params: &[Param::N, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+        structured: false,
+    },
+    FamilyInfo {
+        family: Family::ThinEulerian,
+        name: "thin-eulerian",
+        summary: "thin, every pixel of even degree, at any size (linear time): outlines of random rectangles added mod 2, crossings, holes; n within n/50 + 32",
+        params: &[Param::N, Param::Compactness],
+        required: &[Param::N],
+        random: true,
+        structured: false,
+    },
 ];
 
 impl FamilyInfo {
@@ -549,7 +571,7 @@ impl FamilyInfo {
 }
 
 impl Family {
-    pub const ALL: [Family; 20] = [
+    pub const ALL: [Family; 22] = [
         Family::Rect,
         Family::RandomSimple,
         Family::RandomHoled,
@@ -570,6 +592,8 @@ impl Family {
         Family::Outlines,
         Family::Ring,
         Family::CorridorStar,
+        Family::BoundaryRooms,
+        Family::ThinEulerian,
     ];
 
     /// The family's registry row.

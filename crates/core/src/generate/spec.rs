@@ -3,6 +3,7 @@
 
 use super::band::band_pixels;
 use super::boundary::{boundary_canvas, two_rows_pixels};
+use super::boundary_rooms::boundary_rooms_canvas;
 use super::checks::{CutRule, Promise, verify};
 use super::comb::{comb_count, comb_default_teeth, comb_length, comb_pixels};
 use super::corridor_star::{star_arm, star_count, star_pixels};
@@ -25,6 +26,7 @@ use super::staircase::{min_holed_pixels, rows_pixels, rows_plan};
 use super::styles::{ShapeOpts, Style};
 use super::thin::{min_thin_pixels, thin_pixels};
 use super::thin_arms::thin_arms_pixels;
+use super::thin_eulerian::{ring_outline_pixels, slack, thin_eulerian_pixels};
 use super::thin43::{thin43_holes, thin43_pixels};
 use super::windows::{windows_count, windows_panes, windows_pixels};
 use super::{GenParams, MAX_PIXELS, Provenance};
@@ -441,6 +443,13 @@ impl Spec {
                 self.holes,
                 min_thin_pixels(self.holes)
             ))),
+            Family::ThinEulerian if n < 8 || n + slack(n) > MAX_PIXELS => {
+                Err(Error::invalid(format!(
+                    "thin-eulerian needs 8 ≤ n ≤ {} (the smallest thin Eulerian region is the 3 x 3 ring; N may exceed n \
+                 by n/50 + 32), got {n}",
+                    MAX_PIXELS - slack(MAX_PIXELS) - 1
+                )))
+            }
             Family::LawnScattered if self.parts == 0 || self.parts > n => {
                 Err(Error::invalid(format!(
                     "lawn-scattered needs 1 ≤ parts ≤ n (got parts {} and n {n})",
@@ -474,6 +483,11 @@ impl Spec {
         };
         Promise {
             n: self.pixels(),
+            n_slack: if self.family == Family::ThinEulerian {
+                slack(self.n)
+            } else {
+                0
+            },
             components,
             holes,
             cut,
@@ -485,15 +499,21 @@ impl Spec {
                     | Family::Comb
                     | Family::DoubleComb
                     | Family::Outlines
+                    | Family::ThinEulerian
             ) || (self.family == Family::HoleLattice && self.pattern == Pattern::Staggered)
                 || (matches!(self.family, Family::Spiral | Family::Ring) && self.width == 1),
             separated: self.family == Family::LawnScattered,
             any_holes: matches!(
                 self.family,
-                Family::Boundary | Family::Eroded | Family::Outlines | Family::CorridorStar
+                Family::Boundary
+                    | Family::Eroded
+                    | Family::Outlines
+                    | Family::CorridorStar
+                    | Family::BoundaryRooms
+                    | Family::ThinEulerian
             ),
-            boundary_only: self.family == Family::Boundary,
-            even_degrees: self.family == Family::Outlines,
+            boundary_only: matches!(self.family, Family::Boundary | Family::BoundaryRooms),
+            even_degrees: matches!(self.family, Family::Outlines | Family::ThinEulerian),
         }
     }
 
@@ -570,6 +590,20 @@ impl Spec {
                 return self.with_attempts(
                     |rng, _| boundary_canvas(n, &o, rng).map(|c| c.pixels()),
                     |_| Some(two_rows_pixels(n)),
+                );
+            }
+            Family::BoundaryRooms => {
+                let compactness = o.compactness;
+                return self.with_attempts(
+                    |rng, _| boundary_rooms_canvas(n, compactness, rng).map(|c| c.pixels()),
+                    |_| Some(two_rows_pixels(n)),
+                );
+            }
+            Family::ThinEulerian => {
+                let compactness = o.compactness;
+                return self.with_attempts(
+                    |rng, _| thin_eulerian_pixels(n, compactness, rng),
+                    |_| Some(ring_outline_pixels(n)),
                 );
             }
             Family::ThinArms => {

@@ -68,6 +68,7 @@ fn assert_promises(f: &GridFile, p: &GenParams) {
     // The structured families take n as an approximate size (`structured_tests`).
     if let Some(n) = p.n
         && !structured(p.family)
+        && p.family != Family::ThinEulerian
     {
         assert_eq!(s.n, n, "exact n\n{r:?}");
     }
@@ -121,6 +122,23 @@ fn assert_promises(f: &GridFile, p: &GenParams) {
             assert!(cells.iter().all(|h| h.len() == 1), "one-pixel holes\n{r:?}");
         }
         Family::Eroded => assert_eq!(s.components, 1, "{r:?}"),
+        Family::BoundaryRooms => {
+            assert_eq!(s.components, 1, "{r:?}");
+            assert!(
+                (0..r.len()).all(|i| topology::is_boundary(r, i)),
+                "every pixel a boundary pixel\n{r:?}"
+            );
+        }
+        Family::ThinEulerian => {
+            let n = p.n.unwrap();
+            assert!(s.n.abs_diff(n) <= n / 50 + 32, "{} pixels for n = {n}", s.n);
+            assert_eq!(s.components, 1, "{r:?}");
+            assert!(s.thin, "thin\n{r:?}");
+            assert!(
+                (0..r.len()).all(|i| r.degree(i).is_multiple_of(2)),
+                "every degree even\n{r:?}"
+            );
+        }
         Family::Rect | Family::Donut | Family::Band | Family::Thin43 => {}
         // Checked with their formulas in `structured_tests`.
         Family::HoleLattice
@@ -186,7 +204,9 @@ fn registry_rows_match_the_enum_and_names_round_trip() {
             "windows",
             "outlines",
             "ring",
-            "corridor-star"
+            "corridor-star",
+            "boundary-rooms",
+            "thin-eulerian"
         ]
     );
     let e = "disc".parse::<Family>().unwrap_err().to_string();
@@ -511,6 +531,7 @@ fn staircases_keep_their_promises() {
                 };
                 let promise = Promise {
                     n,
+                    n_slack: 0,
                     components: 1,
                     holes,
                     cut,
@@ -560,6 +581,7 @@ fn thin_fallback_keeps_its_promises() {
             let region = Region::from_pixels(pixels).unwrap();
             let promise = Promise {
                 n,
+                n_slack: 0,
                 components: 1,
                 holes,
                 cut: CutRule::Any,
@@ -600,6 +622,7 @@ fn random_constructions_return_only_valid_regions() {
                     let mut rng = rng_for(seed, n as u64);
                     let promise = Promise {
                         n,
+                        n_slack: 0,
                         components: 1,
                         holes: 0,
                         cut: cut(false),
@@ -653,6 +676,7 @@ fn random_constructions_return_only_valid_regions() {
             let r = Region::from_pixels(pixels).unwrap();
             let promise = Promise {
                 n,
+                n_slack: 0,
                 components: 1,
                 holes,
                 cut: CutRule::Any,
@@ -933,4 +957,53 @@ fn band_pixels_follow_the_definition_in_linear_size() {
         assert_eq!(band_pixels(k), expected, "k = {k}");
     }
     assert_eq!(band_pixels(50_000).len(), 5 * 50_000 + 4);
+}
+
+/// The large-scale families at test sizes: their promises (checked by `assert_promises`
+/// independently of `verify`), determinism by seed, no fallback, and the features the module
+/// docs name (holes; one-pixel links or crossings).
+#[test]
+fn large_scale_families_keep_their_promises() {
+    for family in [Family::BoundaryRooms, Family::ThinEulerian] {
+        let mut features = 0;
+        for (i, n) in [300usize, 1000, 4000, 10_000].into_iter().enumerate() {
+            for c in [0.0, 0.5, 1.0] {
+                let seed = 11 + i as u64;
+                let p = GenParams {
+                    n: Some(n),
+                    compactness: Some(c),
+                    ..params(family, seed)
+                };
+                let (f, provenance) = generate_traced(&p).unwrap();
+                assert_promises(&f, &p);
+                assert_ne!(provenance, Provenance::Fallback, "{p:?}");
+                assert_eq!(
+                    f.to_text().unwrap(),
+                    generate(&p).unwrap().to_text().unwrap(),
+                    "deterministic"
+                );
+                let other = generate(&GenParams {
+                    seed: seed + 100,
+                    ..p.clone()
+                })
+                .unwrap();
+                assert_ne!(f.region, other.region, "the seed matters");
+                let r = &f.region;
+                let holes = topology::holes(r).count > 0;
+                let special = (0..r.len()).any(|i| match family {
+                    Family::ThinEulerian => r.degree(i) == 4,
+                    _ => {
+                        r.neighbor(i, Dir::N).is_none()
+                            && r.neighbor(i, Dir::S).is_none()
+                            && r.degree(i) == 2
+                    }
+                });
+                features += usize::from(holes && special);
+            }
+        }
+        assert!(
+            features >= 10,
+            "{family}: {features} of 12 with holes and links/crossings"
+        );
+    }
 }
