@@ -333,20 +333,26 @@ fn euclidean(p: &Points, odd: &[usize]) -> Option<OddMatching> {
         mate[odd[a]] = odd[b];
         mate[odd[b]] = odd[a];
     }
-    exchange_pairs(p, odd, &mut mate);
-    let mut pairs: Vec<(usize, usize)> = odd
-        .iter()
-        .filter(|&&a| a < mate[a])
-        .map(|&a| (a, mate[a]))
-        .collect();
-    pairs.sort_unstable();
-    let weight: f64 = pairs.iter().map(|&(a, b)| p.dist(a, b)).sum();
+    let (pairs, weight) = improved_pairs(p, odd, &mut mate);
     Some(OddMatching {
         pairs,
         weight,
         optimal: weight <= lower,
         lower_bound: lower.min(weight),
     })
+}
+
+/// The pairs of `mate` after the pair exchanges of [`exchange_pairs`], sorted, and their weight.
+fn improved_pairs(p: &Points, odd: &[usize], mate: &mut [usize]) -> (Vec<(usize, usize)>, f64) {
+    exchange_pairs(p, odd, mate);
+    let mut pairs: Vec<(usize, usize)> = odd
+        .iter()
+        .filter(|&&a| a < mate[a])
+        .map(|&a| (a, mate[a]))
+        .collect();
+    pairs.sort_unstable();
+    let weight = pairs.iter().map(|&(a, b)| p.dist(a, b)).sum();
+    (pairs, weight)
 }
 
 /// A near-minimum perfect matching of `odd` for when the exact solver is out of reach: greedy
@@ -384,14 +390,7 @@ pub(super) fn near_minimum(p: &Points, odd: &[usize]) -> OddMatching {
         }
         left.retain(|&i| mate[i] == usize::MAX);
     }
-    exchange_pairs(p, odd, &mut mate);
-    let mut pairs: Vec<(usize, usize)> = odd
-        .iter()
-        .filter(|&&a| a < mate[a])
-        .map(|&a| (a, mate[a]))
-        .collect();
-    pairs.sort_unstable();
-    let weight: f64 = pairs.iter().map(|&(a, b)| p.dist(a, b)).sum();
+    let (pairs, weight) = improved_pairs(p, odd, &mut mate);
     OddMatching {
         pairs,
         weight,
