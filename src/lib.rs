@@ -81,6 +81,7 @@ pub mod hunt;
 pub mod model;
 pub mod ortho;
 pub mod outside;
+pub mod report;
 pub mod tight;
 pub mod warm_start;
 

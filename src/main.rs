@@ -11,8 +11,8 @@ use std::process::ExitCode;
 
 mod cli;
 use cli::{
-    algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, orders::*, sample::*, solve::*,
-    tight::*,
+    algos::*, bench::*, exact::*, export::*, generate::*, hunt::*, orders::*, report::*, sample::*,
+    solve::*, tight::*,
 };
 
 #[derive(Parser)]
@@ -66,6 +66,9 @@ enum Command {
     Hunt(HuntArgs),
     /// Run a benchmark suite: instances x algorithms x exact objectives -> CSV, stats, plots.
     Bench(BenchArgs),
+    /// One self-contained HTML page of a run (claims, ratios, worst instances, findings,
+    /// time, errors), or of two runs side by side with --compare A B.
+    Report(ReportArgs),
     /// Draw a fixed random sample of runs' rows (with their instance files), or re-run a
     /// sample and compare every row with it (--check; exit 1 on a difference).
     Sample(SampleArgs),
@@ -208,6 +211,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             claims_command(&from, &tight, &hunt, out.as_deref(), findings.as_deref())
         }
         Command::Bench(args) => bench_command(args),
+        Command::Report(args) => report_command(args),
         Command::Sample(args) => sample_command(args),
         Command::Hunt(args) => hunt_command(args),
         Command::Exact(args) => exact_command(args),

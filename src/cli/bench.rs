@@ -51,6 +51,12 @@ pub struct BenchArgs {
     /// Defaults to SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT when those are set.
     #[arg(long, value_parser = parse_shard)]
     pub shard: Option<(usize, usize)>,
+    /// Write DIR/report.html at the end (the default; `mowmill report DIR` writes it again).
+    #[arg(long, overrides_with = "no_report")]
+    pub report: bool,
+    /// Leave out DIR/report.html.
+    #[arg(long)]
+    pub no_report: bool,
 }
 
 pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
@@ -251,6 +257,14 @@ pub fn bench_command(a: BenchArgs) -> Result<ExitCode> {
     let rows = harness::rows::read_rows(&out.join("results.csv"))?;
     let lines = harness::summary::lines(&rows);
     print!("{}", harness::summary::text(&lines, &out));
+    if !a.no_report {
+        // A report that cannot be made is said, not a failed run: the rows are what counts.
+        let page = out.join("report.html");
+        match mowmill::report::write(&out, &mowmill::report::Options::default(), &page) {
+            Ok(bytes) => println!("report: {} ({:.1} MB)", page.display(), bytes as f64 / 1e6),
+            Err(e) => eprintln!("report: not written: {e}"),
+        }
+    }
     Ok(if harness::summary::failed(&lines) {
         ExitCode::from(1)
     } else {

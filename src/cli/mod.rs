@@ -9,6 +9,7 @@ pub mod generate;
 pub mod hunt;
 pub mod orders;
 pub mod ortho;
+pub mod report;
 pub mod sample;
 pub mod solve;
 pub mod tight;
