@@ -109,15 +109,36 @@ pub fn table(id: &str, header: &[&str], rows: &[Vec<Cell>]) -> String {
     s
 }
 
-/// The colour class of a verdict (claims, tight families, the gate).
+/// The colour class of a verdict (claims, tight families, the gate): a verdict may carry a
+/// qualifier, e.g. `holds on few instances (14)`.
 pub fn verdict_class(verdict: &str) -> &'static str {
-    match verdict {
-        "holds" | "tight reproduced" | "reproduced" | "upper bound met" | "passed" | "improved" => {
-            "good"
-        }
-        "violated" | "contradicted" | "FAIL" | "failed" => "bad",
-        "differs" | "untested" | "not measured" | "worse" => "warn",
-        _ => "plain",
+    let v = verdict.trim();
+    if v.starts_with("holds on few") {
+        "warn"
+    } else if [
+        "holds",
+        "tight reproduced",
+        "reproduced",
+        "upper bound met",
+        "passed",
+        "improved",
+    ]
+    .iter()
+    .any(|g| v.starts_with(g))
+    {
+        "good"
+    } else if ["violated", "contradicted", "FAIL", "failed"]
+        .iter()
+        .any(|b| v.starts_with(b))
+    {
+        "bad"
+    } else if ["differs", "untested", "not measured", "worse"]
+        .iter()
+        .any(|w| v.starts_with(w))
+    {
+        "warn"
+    } else {
+        "plain"
     }
 }
 
@@ -207,7 +228,8 @@ td.num{text-align:right;font-variant-numeric:tabular-nums}
 .bad{background:#fcd5d5;color:#7f1d1d;font-weight:600}
 .warn{background:#fdf1c7;color:#713f12;font-weight:600}
 .plain{background:#eef1f6}
-.kv td:first-child{font-weight:600;white-space:nowrap}
+.kv{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:2px 18px;font-size:12.5px;margin:6px 0}
+.kv div{overflow-wrap:anywhere}.kv b{margin-right:6px}
 .figs{display:flex;flex-wrap:wrap;gap:14px;align-items:flex-start}
 .fig{border:1px solid #d5d9e2;padding:6px;background:#fafbfd}
 .fig p{margin:4px 0 0;font-size:12px;max-width:560px}
@@ -243,7 +265,7 @@ document.addEventListener('mouseover',function(e){var el=e.target;if(!el.closest
  tip.textContent=t.textContent;tip.hidden=false;});
 document.addEventListener('mousemove',function(e){if(!tip.hidden){tip.style.left=(e.clientX+12)+'px';tip.style.top=(e.clientY+12)+'px';}});
 document.addEventListener('mouseout',function(e){if(e.target.closest&&e.target.closest('svg.chart'))tip.hidden=true;});
-function selftest(){var out={};var claims=document.getElementById('claims-table');
+function selftest(){var out={};document.querySelectorAll('details').forEach(function(d){d.open=true;});var claims=document.getElementById('claims-table');
  out.claim_rows=claims?claims.tBodies[0].rows.length:0;
  out.verdicts=claims?Array.prototype.map.call(claims.tBodies[0].rows,function(r){return r.querySelector('td.verdict').textContent.trim();}):[];
  var imgs=document.querySelectorAll('img'),svgs=document.querySelectorAll('svg.chart'),broken=[];
@@ -256,7 +278,7 @@ function selftest(){var out={};var claims=document.getElementById('claims-table'
   var ok=true;for(var k=1;k<v.length;k++)if(v[k-1]>v[k])ok=false;sortBy(ths[j]);
   var w=Array.prototype.map.call(claims.tBodies[0].rows,function(r){return parseFloat(r.cells[j].textContent);});
   for(k=1;k<w.length;k++)if(w[k-1]<w[k])ok=false;out.sort_ok=ok;}}
- out.render_ms=Math.round(performance.now());var pre=document.getElementById('selftest-result');
+ out.resources=performance.getEntriesByType('resource').map(function(e){return e.name;});out.render_ms=Math.round(performance.now());var pre=document.getElementById('selftest-result');
  pre.textContent=JSON.stringify(out);pre.hidden=false;}
 if(location.hash==='#selftest'){if(document.readyState==='complete')selftest();else window.addEventListener('load',selftest);}
 })();
