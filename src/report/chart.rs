@@ -32,8 +32,8 @@ pub struct BoxRow {
 /// factor when it is within the axis.
 pub fn boxes(label: &str, rows: &[BoxRow], bound: Option<f64>) -> String {
     let row_h = 18.0;
-    let left = 230.0;
-    let width = 760.0;
+    let left = 210.0;
+    let width = 680.0;
     let plot_w = width - left - 20.0;
     let height = 30.0 + row_h * rows.len() as f64 + 28.0;
     let lo = rows
@@ -161,7 +161,7 @@ pub fn scatter(
     x_name: &str,
     y_name: &str,
 ) -> String {
-    let (width, height) = (520.0, 320.0);
+    let (width, height) = (500.0, 320.0);
     let (left, right, top, bottom) = (58.0, 140.0, 16.0, 40.0);
     let tx = |v: f64| if log_x { v.log10() } else { v };
     let ty = |v: f64| if log_y { v.log10() } else { v };
