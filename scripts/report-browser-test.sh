@@ -4,7 +4,7 @@
 # image, no empty chart), the table sort works, and no request left the page (Chromium's net
 # log holds only the file itself and data: URLs). Installs Debian's chromium when missing.
 #
-#   scripts/report-browser-test.sh RUN [SCREENSHOT.png]
+#   scripts/report-browser-test.sh RUN [SCREENSHOT.png [REPORT OPTIONS...]]
 #
 # RUN is a bench folder; its report is written again to a temporary file. With SCREENSHOT, the
 # first screen (1280 x 900) is saved there (README's docs/report.png comes from this).
@@ -12,6 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 run=${1:?usage: scripts/report-browser-test.sh RUN [SCREENSHOT.png]}
 shot=${2:-}
+shift $(( $# < 2 ? $# : 2 ))  # What is left goes to `mowmill report` (e.g. --tight DIR --hunt DIR).
 browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then
   echo "report-browser-test: installing chromium (headless)" >&2
@@ -23,7 +24,7 @@ fi
 command -v python3 >/dev/null || { echo "report-browser-test: python3 is needed" >&2; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-target/release/mowmill report "$run" --out "$tmp/report.html"
+target/release/mowmill report "$run" --out "$tmp/report.html" "$@"
 # The claims table the report must show, computed by the claims command itself when the run has
 # no claims.csv (a bench folder), else the run's own.
 if [ -f "$run/claims.csv" ]; then

@@ -72,3 +72,8 @@ if [ "$out" = results/validate ]; then
 else
   "$bin" sample --check "$out/sample" --jobs "${JOBS:-2}"
 fi
+
+# The run's page (docs/report.md): the committed results/validate/report.html.
+if [ "$out" = results/validate ]; then
+  "$bin" report "$out" --tight results/tight --hunt results/hunt
+fi

@@ -222,6 +222,8 @@ table{border-collapse:collapse;font-size:12.5px}
 th,td{border:1px solid #d5d9e2;padding:3px 6px;vertical-align:top;text-align:left}
 th{background:#eef1f6;cursor:pointer;white-space:nowrap;position:sticky;top:0}
 th.asc::after{content:" \25b2"}th.desc::after{content:" \25bc"}
+#claims-table td:nth-child(3){min-width:300px}
+#claims-table td:nth-child(1){min-width:110px}
 td.num{text-align:right;font-variant-numeric:tabular-nums}
 .scroll{max-height:640px;overflow:auto;margin:6px 0}
 .good{background:#d8f3dc;color:#14532d;font-weight:600}
