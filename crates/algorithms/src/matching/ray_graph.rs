@@ -7,9 +7,12 @@ use super::*;
 /// sharing a pixel grow quadratically where many rays cross), the LP route is taken instead.
 pub(super) const RAY_GRAPH_EDGES: usize = 4_000_000;
 
-/// Above this many link ends, fusion-blossom runs on a partition of the ray graph (its
-/// partitioned solver panicked on a ray graph of 8,274 ends; serially that takes 1 s).
-pub(super) const RAY_SERIAL_LIMIT: usize = 40_000;
+/// Above this many link ends, fusion-blossom would run on a partition of the ray graph: never.
+/// Its partitioned solver panicked on every ray-graph block above 40,000 ends that we measured
+/// (pointers.rs:143; first on 8,274 ends), and the serial retry then solved it again from the
+/// start, so the partitioned attempt only cost time (boundary-cc on boundary-rooms at 10^5
+/// pixels: 13.3 s and 1.67 GB with it, 6.45 s and 1.08 GB without; the same matchings).
+pub(super) const RAY_SERIAL_LIMIT: usize = usize::MAX;
 
 /// An exact minimum-weight perfect matching of boundary link ends (one heading each) over ALL
 /// pairs, as a minimum-weight perfect matching of vertices in a graph metric, solved by
