@@ -224,4 +224,25 @@ fn bad_folders_are_refused_with_exit_2() {
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("stats.csv"), "{err}");
+    // A manifest.json that is a FIFO is refused, not waited on.
+    let fifo = tmp.path().join("fifo");
+    std::fs::create_dir(&fifo).unwrap();
+    std::fs::write(
+        fifo.join("stats.csv"),
+        "family,size_bin,algorithm,objective\n",
+    )
+    .unwrap();
+    let made = Command::new("mkfifo")
+        .arg(fifo.join("manifest.json"))
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let o = mowmill(&["report", s(&fifo)]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("manifest.json"));
 }

@@ -217,7 +217,7 @@ fn load_as_discrete(from: &Path, name: &str) -> Option<crate::discrete::Discrete
 }
 
 /// A claim's name in file names: lower-case letters and digits, anything else `-`.
-fn claim_slug(claim: &str) -> String {
+pub(crate) fn claim_slug(claim: &str) -> String {
     claim
         .chars()
         .map(|ch| {

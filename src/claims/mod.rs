@@ -47,7 +47,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 pub mod evidence;
-mod findings;
+pub(crate) mod findings;
 mod measure;
 mod report;
 #[cfg(test)]

@@ -24,17 +24,10 @@ pub fn esc(text: &str) -> String {
     out
 }
 
-/// An anchor name made of `text`'s letters and digits (others become `-`).
+/// An anchor name made of `text`'s letters and digits (others become `-`), as finding files
+/// are named.
 pub fn anchor(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '-'
-            }
-        })
-        .collect()
+    crate::claims::findings::claim_slug(text)
 }
 
 /// One table cell: its HTML content and an optional class (e.g. a verdict colour).

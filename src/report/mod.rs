@@ -100,8 +100,10 @@ impl Run {
                 dir.display()
             )));
         }
-        let manifest = match std::fs::read(dir.join("manifest.json")) {
-            Ok(bytes) => {
+        let manifest_path = dir.join("manifest.json");
+        let manifest = match manifest_path.exists().then(|| read_regular(&manifest_path)) {
+            Some(bytes) => {
+                let bytes = bytes?;
                 let value: serde_json::Value = serde_json::from_slice(&bytes).map_err(|e| {
                     Error::parse(
                         &dir.join("manifest.json").display().to_string(),
@@ -112,7 +114,7 @@ impl Run {
                 })?;
                 Some((value, crate::harness::run::sha256_hex(&bytes)))
             }
-            Err(_) => None,
+            None => None,
         };
         let results = dir.join("results.csv");
         let rows = if results.is_file() {
@@ -173,6 +175,17 @@ impl Run {
             hunt,
         })
     }
+}
+
+/// The bytes of the regular file `path` (a FIFO or a device is refused, not waited on).
+fn read_regular(path: &Path) -> Result<Vec<u8>> {
+    use std::io::Read;
+    let mut file =
+        crate::input::open_regular(path, crate::input::MAX_INPUT_BYTES, "a manifest.json")?;
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes)
+        .map_err(|e| Error::io(path, e))?;
+    Ok(bytes)
 }
 
 /// The claims table of `rows`, as `mowmill claims` writes it, read back as a [`Table`].

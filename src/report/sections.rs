@@ -410,15 +410,19 @@ fn from_rows(rows: &[&Row], measure: &str) -> (Vec<BoxRow>, Vec<Series>) {
             ),
         });
     }
-    let series = series
+    (boxes, named_series(series))
+}
+
+/// One series per family, without a fitted line.
+fn named_series(by_family: BTreeMap<&str, Vec<Point>>) -> Vec<Series> {
+    by_family
         .into_iter()
         .map(|(name, points)| Series {
             name: name.to_string(),
             points,
             fit: None,
         })
-        .collect();
-    (boxes, series)
+        .collect()
 }
 
 fn from_stats(stats: &[&StatRow], measure: &str) -> (Vec<BoxRow>, Vec<Series>) {
@@ -457,15 +461,7 @@ fn from_stats(stats: &[&StatRow], measure: &str) -> (Vec<BoxRow>, Vec<Series>) {
             });
         }
     }
-    let series = series
-        .into_iter()
-        .map(|(name, points)| Series {
-            name: name.to_string(),
-            points,
-            fit: None,
-        })
-        .collect();
-    (boxes, series)
+    (boxes, named_series(series))
 }
 
 fn csv_table(id: &str, t: &Table) -> String {
