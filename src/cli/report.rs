@@ -44,7 +44,9 @@ pub fn report_command(a: ReportArgs) -> Result<ExitCode> {
             let bytes = report::write(run, &opts, &out)?;
             (out, bytes)
         }
-        (None, None) => unreachable!("clap requires RUN or --compare"),
+        (None, None) => {
+            return Err(mowmill::Error::invalid("report: expected RUN or --compare A B").into());
+        }
     };
     println!(
         "report: {} ({:.2} MB in {:.2} s)",

@@ -10,7 +10,7 @@ use super::Run;
 use super::html::{anchor, data_image, esc};
 use crate::algorithms::{Objective, find};
 use crate::error::{Error, Result};
-use crate::evaluate::{Subject, parse_variant};
+use crate::evaluate::{Subject, guarded, parse_variant};
 use crate::harness::rows::Row;
 use crate::harness::walks;
 use crate::model::{InstanceModel, Kind};
@@ -150,11 +150,6 @@ fn figure(file: &Path, row: &Row, run: &Run, what: &str, used: &mut usize) -> St
             esc(&e)
         ),
     }
-}
-
-/// `f`'s result, or its error or panic as text (a bad file must not end the report).
-fn guarded<T>(f: impl FnOnce() -> Result<T>) -> std::result::Result<T, String> {
-    crate::evaluate::guarded(f)
 }
 
 /// The ratio a worst case is ranked by: to OPT when known, else to the bound.
@@ -304,22 +299,26 @@ fn saved_findings(run: &Run) -> Vec<Finding> {
     by_stem.into_values().filter(|f| f.note.is_some()).collect()
 }
 
-/// The anchor of the finding that draws `witness` (`algorithm objective instance`), or the
-/// section's.
-pub fn witness_anchor(run: &Run, witness: &str) -> String {
-    let parts: Vec<&str> = witness.split_whitespace().collect();
-    if let (Some(alg), Some(inst)) = (parts.first(), parts.last()) {
-        if let Some(f) = saved_findings(run)
-            .iter()
-            .find(|f| f.stem.ends_with(inst) && f.stem.contains(alg))
-        {
-            return format!("finding-{}", anchor(&f.stem));
+/// The anchor of each witness's drawing (`algorithm objective instance`): the saved finding's,
+/// else the witness's own in Findings when the rows are here, else the section's. The
+/// findings folder is read once, however many claims ask.
+pub fn witness_anchors(run: &Run) -> impl Fn(&str) -> String + '_ {
+    let saved = saved_findings(run);
+    move |witness| {
+        let parts: Vec<&str> = witness.split_whitespace().collect();
+        if let (Some(alg), Some(inst)) = (parts.first(), parts.last()) {
+            if let Some(f) = saved
+                .iter()
+                .find(|f| f.stem.ends_with(inst) && f.stem.contains(alg))
+            {
+                return format!("finding-{}", anchor(&f.stem));
+            }
+            if run.rows.is_some() {
+                return format!("witness-{}", anchor(witness));
+            }
         }
-        if run.rows.is_some() {
-            return format!("witness-{}", anchor(witness));
-        }
+        "findings".into()
     }
-    "findings".into()
 }
 
 pub fn findings(run: &Run) -> String {

@@ -160,6 +160,7 @@ fn claims(run: &Run) -> String {
     let Some(t) = &run.claims else {
         return "<p>No claims table: the folder has neither claims.csv nor results.csv.</p>".into();
     };
+    let witness_anchor = drawings::witness_anchors(run);
     let mut rows = Vec::new();
     for r in &t.rows {
         let g = |k: &str| t.get(r, k);
@@ -169,7 +170,7 @@ fn claims(run: &Run) -> String {
         let witness_cell = if witness.is_empty() {
             Cell::text("")
         } else {
-            let target = drawings::witness_anchor(run, witness);
+            let target = witness_anchor(witness);
             Cell::html(format!(
                 r##"<a href="#{}">{}</a>"##,
                 esc(&target),

@@ -11,7 +11,8 @@ pub(super) const RAY_GRAPH_EDGES: usize = 4_000_000;
 /// Its partitioned solver panicked on every ray-graph block above 40,000 ends that we measured
 /// (pointers.rs:143; first on 8,274 ends), and the serial retry then solved it again from the
 /// start, so the partitioned attempt only cost time (boundary-cc on boundary-rooms at 10^5
-/// pixels: 13.3 s and 1.67 GB with it, 6.45 s and 1.08 GB without; the same matchings).
+/// pixels, `scripts/speed-table.sh`: 16.25 s and 1720 MB with it, 6.86 s and 1052 MB without;
+/// the same matching).
 pub(super) const RAY_SERIAL_LIMIT: usize = usize::MAX;
 
 /// An exact minimum-weight perfect matching of boundary link ends (one heading each) over ALL
