@@ -339,8 +339,9 @@ fn add_shorter_matching(
 /// every pair to the graph; returns the moves added (the minimum T-join value, T = `ends`).
 ///
 /// # Complexity
-/// O(t · N) for the t breadth-first searches plus O(t³) for the blossom algorithm on the
-/// complete graph of the t ≤ holes + 1 lone endpoints.
+/// O(t · N) for the t breadth-first searches (on the bounding-box raster when it has at most
+/// 16 N + 64 cells, so O(t · (16 N + 64)), else on the pixels) plus O(t³) for the blossom
+/// algorithm on the complete graph of the t ≤ holes + 1 lone endpoints.
 fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigraph) -> u64 {
     let t = ends.len();
     if t == 0 {
@@ -350,19 +351,30 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
         t.is_multiple_of(2),
         "strip lines have two ends, so lone ends come in pairs"
     );
-    // Only the t × t distances between ends are kept (t whole distance arrays were 2.5 GB at
-    // 10^7 pixels with 100 holes), and each search stops once it has reached every end.
-    let mut slot = vec![u32::MAX; region.len()];
-    for (k, &e) in ends.iter().enumerate() {
-        slot[e] = k as u32;
+    // The searches run on the bounding box as a bitmap where it is small (a few MB at 10^7
+    // pixels, so a search stays in cache) and on a flat neighbour table otherwise: through
+    // `Region::neighbors` they took 0.67 s each at 10^7 pixels.
+    match Raster::new(region) {
+        Some(raster) => join_lone_ends(&raster, region, ends, graph),
+        None => join_lone_ends(&Adjacency::new(region), region, ends, graph),
     }
-    let mut dist = vec![u32::MAX; region.len()];
-    let mut queue = Vec::with_capacity(region.len());
-    let table: Vec<Vec<u32>> = ends
+}
+
+/// [`add_lone_end_paths`] with its searches on `search_graph`.
+fn join_lone_ends<G: SearchGraph + Sync>(
+    search_graph: &G,
+    region: &Region,
+    ends: &[usize],
+    graph: &mut GridMultigraph,
+) -> u64 {
+    let t = ends.len();
+    let vertices: Vec<u32> = ends
         .iter()
-        .map(|&a| distances_to_ends(region, a, &slot, t, &mut dist, &mut queue))
+        .map(|&e| search_graph.vertex(region, e))
         .collect();
-    let at = |x: usize, y: usize| table[x][y];
+    let dist = end_distances(search_graph, &vertices);
+    let mut search = Search::new(search_graph.size());
+    let at = |x: usize, y: usize| dist[x][y];
     // Maximum cardinality and weight `big − d` make the maximum-weight matching a perfect
     // matching of minimum total distance (every pair is reachable: the region is connected).
     let big = 2 + 2 * i128::from(
@@ -402,7 +414,13 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
     );
     let mut added = 0;
     for (x, y) in pairs {
-        let path = shortest_path(region, ends[x], ends[y]);
+        let target = vertices[y];
+        search.run(search_graph, vertices[x], |v, _| v == target);
+        let path: Vec<usize> = search
+            .path_to_last()
+            .into_iter()
+            .map(|v| search_graph.pixel(region, v))
+            .collect();
         debug_assert_eq!(path.len() - 1, at(x, y) as usize);
         graph.add_path(region, &path);
         added += (path.len() - 1) as u64;
@@ -410,68 +428,248 @@ fn add_lone_end_paths(region: &Region, ends: &[usize], graph: &mut GridMultigrap
     added
 }
 
-/// Breadth-first search from `a` in the grid graph, stopped once it has reached all `t` ends
-/// (`slot[p]` is the end number of pixel p, `u32::MAX` for other pixels): the distance to every
-/// end, by end number (`u32::MAX` where unreachable). `dist` (all `u32::MAX`) and `queue` are
-/// scratch space, left as they were found.
-fn distances_to_ends(
-    region: &Region,
-    a: usize,
-    slot: &[u32],
-    t: usize,
-    dist: &mut [u32],
-    queue: &mut Vec<u32>,
-) -> Vec<u32> {
-    let mut found = vec![u32::MAX; t];
-    let mut left = t;
-    dist[a] = 0;
-    queue.clear();
-    queue.push(a as u32);
-    let mut head = 0;
-    while head < queue.len() && left > 0 {
-        let v = queue[head] as usize;
-        head += 1;
-        if slot[v] != u32::MAX {
-            found[slot[v] as usize] = dist[v];
-            left -= 1;
-        }
-        for w in region.neighbors(v) {
-            if dist[w] == u32::MAX {
-                dist[w] = dist[v] + 1;
-                queue.push(w as u32);
-            }
-        }
-    }
-    for &v in queue.iter() {
-        dist[v as usize] = u32::MAX;
-    }
-    found
+/// The grid graph of a region for breadth-first search: vertices `0..size()`, each with up to
+/// four neighbours (`u32::MAX` where there is none).
+trait SearchGraph {
+    fn size(&self) -> usize;
+    fn vertex(&self, region: &Region, pixel: usize) -> u32;
+    fn pixel(&self, region: &Region, v: u32) -> usize;
+    fn neighbors(&self, v: u32) -> [u32; 4];
 }
 
-/// A shortest path from `a` to `b` in the grid graph: the breadth-first search from `a`,
-/// stopped once it reaches `b` (the predecessors it has set are those of the whole search, so
-/// the path is the same).
-fn shortest_path(region: &Region, a: usize, b: usize) -> Vec<usize> {
-    let mut prev = vec![usize::MAX; region.len()];
-    prev[a] = a;
-    let mut queue = std::collections::VecDeque::from([a]);
-    'search: while let Some(v) = queue.pop_front() {
-        for w in region.neighbors(v) {
-            if prev[w] == usize::MAX {
-                prev[w] = v;
-                if w == b {
-                    break 'search;
+/// The grid graph as a flat table of the E, N, W, S neighbours of every pixel (16 bytes a
+/// pixel), for regions whose bounding box is too large for a [`Raster`].
+struct Adjacency(Vec<[u32; 4]>);
+
+impl Adjacency {
+    fn new(region: &Region) -> Adjacency {
+        Adjacency(
+            (0..region.len())
+                .map(|i| Dir::ALL.map(|d| region.neighbor(i, d).map_or(u32::MAX, |j| j as u32)))
+                .collect(),
+        )
+    }
+}
+
+impl SearchGraph for Adjacency {
+    fn size(&self) -> usize {
+        self.0.len()
+    }
+    fn vertex(&self, _: &Region, pixel: usize) -> u32 {
+        pixel as u32
+    }
+    fn pixel(&self, _: &Region, v: u32) -> usize {
+        v as usize
+    }
+    #[inline]
+    fn neighbors(&self, v: u32) -> [u32; 4] {
+        self.0[v as usize]
+    }
+}
+
+/// The grid graph as one bit per cell of the bounding box with a one-cell margin (so that
+/// every cell of the box has four cells around it): vertex = row · width + column.
+struct Raster {
+    width: usize,
+    min: (i32, i32),
+    inside: Vec<u64>,
+}
+
+impl Raster {
+    /// `None` when the box (with its margin) has more than 16 N + 64 cells, or more than
+    /// `u32::MAX`.
+    fn new(region: &Region) -> Option<Raster> {
+        let b = region.bbox();
+        let width = usize::try_from(i64::from(b.max_x) - i64::from(b.min_x) + 3).ok()?;
+        let height = usize::try_from(i64::from(b.max_y) - i64::from(b.min_y) + 3).ok()?;
+        let cells = width.checked_mul(height)?;
+        if cells > 16 * region.len() + 64 || cells >= u32::MAX as usize {
+            return None;
+        }
+        let mut raster = Raster {
+            width,
+            min: (b.min_x, b.min_y),
+            inside: vec![0; cells.div_ceil(64)],
+        };
+        for i in 0..region.len() {
+            let v = raster.vertex(region, i) as usize;
+            raster.inside[v / 64] |= 1 << (v % 64);
+        }
+        Some(raster)
+    }
+}
+
+impl SearchGraph for Raster {
+    fn size(&self) -> usize {
+        self.inside.len() * 64
+    }
+    fn vertex(&self, region: &Region, pixel: usize) -> u32 {
+        let p = region.pixel(pixel);
+        // Inside the box, so the differences fit and the cell number is below `u32::MAX`.
+        let (dx, dy) = (
+            (p.x - self.min.0) as usize + 1,
+            (p.y - self.min.1) as usize + 1,
+        );
+        (dy * self.width + dx) as u32
+    }
+    fn pixel(&self, region: &Region, v: u32) -> usize {
+        let (x, y) = (v as usize % self.width, v as usize / self.width);
+        let p =
+            mowmill_core::region::Pixel::new(self.min.0 + x as i32 - 1, self.min.1 + y as i32 - 1);
+        region.index_of(p).expect("a searched cell is a pixel")
+    }
+    #[inline]
+    fn neighbors(&self, v: u32) -> [u32; 4] {
+        // Cells of the region are never on the margin, so the four cells around exist.
+        let v = v as usize;
+        let cell = |w: usize| {
+            if self.inside[w / 64] >> (w % 64) & 1 == 1 {
+                w as u32
+            } else {
+                u32::MAX
+            }
+        };
+        [
+            cell(v + 1),
+            cell(v + self.width),
+            cell(v - 1),
+            cell(v - self.width),
+        ]
+    }
+}
+
+/// The distances between all the `ends` (vertices of `graph`), by end number (`u32::MAX` where
+/// unreachable). Only these t × t distances are kept (t whole distance arrays were 2.5 GB at
+/// 10^7 pixels with 100 holes). The ends are searched from in vertex order (row by row), and
+/// each search stops once it has reached the ends after its own (the earlier ones measured
+/// the distances to it), so later searches cover less and less of the region; the searches
+/// share the machine's threads.
+fn end_distances<G: SearchGraph + Sync>(graph: &G, ends: &[u32]) -> Vec<Vec<u32>> {
+    let t = ends.len();
+    let mut order: Vec<usize> = (0..t).collect();
+    order.sort_unstable_by_key(|&k| ends[k]);
+    // rank_of[v]: the place in `order` of the end at vertex v.
+    let rank_of: std::collections::HashMap<u32, usize> = order
+        .iter()
+        .enumerate()
+        .map(|(r, &k)| (ends[k], r))
+        .collect();
+    let mut is_end = vec![0u64; graph.size().div_ceil(64)];
+    for &v in ends {
+        is_end[v as usize / 64] |= 1 << (v % 64);
+    }
+    // One search from the end of rank r: the distances to the ends of ranks > r, by rank.
+    let from_rank = |r: usize, search: &mut Search| -> Vec<u32> {
+        let mut found = vec![u32::MAX; t];
+        let mut left = t - r - 1;
+        if left > 0 {
+            search.run(graph, ends[order[r]], |v, level| {
+                if is_end[v as usize / 64] >> (v % 64) & 1 == 1 {
+                    let s = rank_of[&v];
+                    if s > r {
+                        found[s] = level;
+                        left -= 1;
+                    }
                 }
-                queue.push_back(w);
+                left == 0
+            });
+        }
+        found
+    };
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |k| k.get())
+        .min(t.max(1));
+    let mut by_rank: Vec<Vec<u32>> = vec![Vec::new(); t];
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..threads)
+            .map(|k| {
+                let from_rank = &from_rank;
+                scope.spawn(move || {
+                    let mut search = Search::new(graph.size());
+                    (k..t)
+                        .step_by(threads)
+                        .map(|r| (r, from_rank(r, &mut search)))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        for worker in workers {
+            for (r, row) in worker.join().expect("a search thread does not panic") {
+                by_rank[r] = row;
             }
         }
+    });
+    let mut dist = vec![vec![0; t]; t];
+    for r in 0..t {
+        for s in r + 1..t {
+            let (x, y) = (order[r], order[s]);
+            dist[x][y] = by_rank[r][s];
+            dist[y][x] = by_rank[r][s];
+        }
     }
-    let mut path = vec![b];
-    while *path.last().expect("non-empty") != a {
-        path.push(prev[*path.last().expect("non-empty")]);
+    dist
+}
+
+/// Breadth-first search with reusable scratch space: a visited bit per vertex and the queue of
+/// (vertex, index of its parent in the queue).
+struct Search {
+    visited: Vec<u64>,
+    queue: Vec<(u32, u32)>,
+    /// Where the last search stopped in the queue.
+    last: usize,
+}
+
+impl Search {
+    fn new(size: usize) -> Search {
+        Search {
+            visited: vec![0; size.div_ceil(64)],
+            queue: Vec::new(),
+            last: 0,
+        }
     }
-    path.reverse();
-    path
+
+    /// Searches from `a`, calling `stop(v, distance)` once for every reached vertex in order of
+    /// distance, until it returns true (that vertex is then [`Search::path_to_last`]'s end) or
+    /// all is reached.
+    fn run<G: SearchGraph>(&mut self, graph: &G, a: u32, mut stop: impl FnMut(u32, u32) -> bool) {
+        for &(v, _) in &self.queue {
+            self.visited[v as usize / 64] &= !(1 << (v % 64));
+        }
+        self.queue.clear();
+        self.queue.push((a, u32::MAX));
+        self.visited[a as usize / 64] |= 1 << (a % 64);
+        let (mut head, mut level, mut level_end) = (0, 0, 1);
+        while head < self.queue.len() {
+            if head == level_end {
+                level += 1;
+                level_end = self.queue.len();
+            }
+            let v = self.queue[head].0;
+            self.last = head;
+            if stop(v, level) {
+                return;
+            }
+            for w in graph.neighbors(v) {
+                if w != u32::MAX && self.visited[w as usize / 64] >> (w % 64) & 1 == 0 {
+                    self.visited[w as usize / 64] |= 1 << (w % 64);
+                    self.queue.push((w, head as u32));
+                }
+            }
+            head += 1;
+        }
+    }
+
+    /// The path from the last search's start to the vertex where it stopped, by parent links.
+    fn path_to_last(&self) -> Vec<u32> {
+        let mut k = self.last;
+        let mut path = vec![self.queue[k].0];
+        while self.queue[k].1 != u32::MAX {
+            k = self.queue[k].1 as usize;
+            path.push(self.queue[k].0);
+        }
+        path.reverse();
+        path
+    }
 }
 
 /// The registry entry of `milling25`: contours, strips and the shorter matchings, walked as one
@@ -528,3 +726,92 @@ pub(crate) const ALGORITHM: crate::Algorithm = crate::Algorithm {
     ortho: None,
     by_default: true,
 };
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mowmill_core::generate::{Family, GenParams, Style, generate};
+
+    /// Distances by a plain breadth-first search through `Region::neighbors`.
+    fn plain_distances(region: &Region, a: usize) -> Vec<u32> {
+        let mut dist = vec![u32::MAX; region.len()];
+        dist[a] = 0;
+        let mut queue = std::collections::VecDeque::from([a]);
+        while let Some(v) = queue.pop_front() {
+            for w in region.neighbors(v) {
+                if dist[w] == u32::MAX {
+                    dist[w] = dist[v] + 1;
+                    queue.push_back(w);
+                }
+            }
+        }
+        dist
+    }
+
+    /// Both search graphs give the plain search's distances between ends and paths of that
+    /// length through 4-adjacent pixels, on random holed regions of every style (the raster
+    /// also on its own margin: regions touching the box on every side).
+    #[test]
+    fn searches_agree_with_a_plain_breadth_first_search() {
+        let styles = [Style::Blob, Style::Rectangles, Style::Snake, Style::Rooms];
+        let mut checked = 0;
+        for seed in 0..120u64 {
+            let Ok(file) = generate(&GenParams {
+                n: Some(30 + (seed as usize * 53) % 600),
+                holes: Some((seed as usize / 4) % 10),
+                style: Some(styles[seed as usize % 4]),
+                ..GenParams::new(Family::RandomHoled, seed)
+            }) else {
+                continue;
+            };
+            let region = file.region;
+            let n = region.len();
+            let ends: Vec<usize> = (0..8).map(|k| (k * 7919 + seed as usize) % n).collect();
+            let mut ends = ends;
+            ends.sort_unstable();
+            ends.dedup();
+            let plain: Vec<Vec<u32>> = ends
+                .iter()
+                .map(|&a| {
+                    let d = plain_distances(&region, a);
+                    ends.iter().map(|&b| d[b]).collect()
+                })
+                .collect();
+            let raster = Raster::new(&region).expect("a generated region fills its box enough");
+            let table = Adjacency::new(&region);
+            for (graph, name) in [(&raster as &dyn Check, "raster"), (&table, "table")] {
+                graph.check(&region, &ends, &plain, name);
+            }
+            checked += 1;
+        }
+        assert!(checked >= 100, "only {checked} regions generated");
+    }
+
+    trait Check {
+        fn check(&self, region: &Region, ends: &[usize], plain: &[Vec<u32>], name: &str);
+    }
+
+    impl<G: SearchGraph + Sync> Check for G {
+        fn check(&self, region: &Region, ends: &[usize], plain: &[Vec<u32>], name: &str) {
+            let vertices: Vec<u32> = ends.iter().map(|&e| self.vertex(region, e)).collect();
+            assert_eq!(end_distances(self, &vertices), plain, "{name}");
+            let mut search = Search::new(self.size());
+            for x in 0..ends.len() {
+                for y in 0..ends.len() {
+                    let target = vertices[y];
+                    search.run(self, vertices[x], |v, _| v == target);
+                    let path: Vec<usize> = search
+                        .path_to_last()
+                        .into_iter()
+                        .map(|v| self.pixel(region, v))
+                        .collect();
+                    assert_eq!(path.len() as u32 - 1, plain[x][y], "{name}");
+                    assert_eq!((path[0], *path.last().unwrap()), (ends[x], ends[y]));
+                    for step in path.windows(2) {
+                        assert!(region.neighbors(step[0]).any(|w| w == step[1]), "{name}");
+                    }
+                }
+            }
+        }
+    }
+}
