@@ -117,7 +117,7 @@ impl<'a> Walks<'a> {
                 walk
             })
             .collect();
-        let rings = Rings::new(&walks, region.len());
+        let rings = Rings::by_key(&walks, region.len());
         let mut coverage = vec![0; region.len()];
         for &p in &rings.key {
             coverage[p as usize] += 1;
@@ -437,7 +437,7 @@ impl<'a> Walks<'a> {
         for p in 0..self.region.len() {
             for &x in self.visits(p) {
                 for &z in self.visits(p) {
-                    if x < z && !self.rings.same_input(x, z) {
+                    if self.rings.precedes(x, z) && !self.rings.same_input(x, z) {
                         let axes = (self.straight_axis(x), self.straight_axis(z));
                         if matches!(axes, (Some(a), Some(b)) if a != b) {
                             crossing.push((x, z));
@@ -473,7 +473,7 @@ impl<'a> Walks<'a> {
                 for q in region.neighbors(p) {
                     for l in self.rings.index().range(q) {
                         let z = self.rings.index().node(l);
-                        if x < z
+                        if self.rings.precedes(x, z)
                             && !self.rings.same_input(x, z)
                             && self.root_of(x) != self.root_of(z)
                         {

@@ -92,6 +92,9 @@ pub(crate) struct Rings {
     /// Nodes per merged walk, kept at its union-find root.
     size: Vec<usize>,
     index: Visits,
+    /// The number each input node has in walk order when [`Rings::by_key`] numbered the nodes
+    /// by key (empty otherwise); detour copies have their own number in both.
+    walk_order: Vec<u32>,
 }
 
 impl Rings {
@@ -106,6 +109,7 @@ impl Rings {
             cycles: UnionFind::new(walks.len()),
             size: Vec::with_capacity(walks.len()),
             index: Visits::default(),
+            walk_order: Vec::new(),
         };
         for (c, walk) in walks.iter().enumerate() {
             let first = r.key.len() as u32;
@@ -121,6 +125,74 @@ impl Rings {
         }
         r.index = Visits::of(&r.key, n);
         r
+    }
+
+    /// The rings of `walks` as [`Rings::new`] makes them, but numbered by key (and by walk
+    /// order at one key), so that nodes at nearby keys lie near each other in memory: a merge
+    /// that sweeps the keys in order then touches memory in order (at 10^7 pixels, walk order
+    /// made most node accesses cache misses). The merge's results do not change:
+    /// [`Rings::precedes`] and [`Rings::walks`] still follow walk order, and the nodes at one
+    /// key keep their order.
+    pub(crate) fn by_key(walks: &[Vec<u32>], n: usize) -> Rings {
+        let nodes: usize = walks.iter().map(Vec::len).sum();
+        // A counting sort by key: start[p] is the first number of key p's nodes.
+        let mut start = vec![0u32; n + 1];
+        for &p in walks.iter().flatten() {
+            start[p as usize + 1] += 1;
+        }
+        for p in 0..n {
+            start[p + 1] += start[p];
+        }
+        let mut fill = start.clone();
+        let number: Vec<u32> = walks
+            .iter()
+            .flatten()
+            .map(|&p| {
+                fill[p as usize] += 1;
+                fill[p as usize] - 1
+            })
+            .collect();
+        drop(fill);
+        let mut r = Rings {
+            key: vec![0; nodes],
+            next: vec![0; nodes],
+            prev: vec![0; nodes],
+            cycle: vec![0; nodes],
+            cycles: UnionFind::new(walks.len()),
+            size: walks.iter().map(Vec::len).collect(),
+            index: Visits {
+                start,
+                nodes: (0..nodes as u32).collect(),
+                known_settled: vec![false; n],
+            },
+            walk_order: vec![0; nodes],
+        };
+        let mut first = 0;
+        for (c, walk) in walks.iter().enumerate() {
+            let m = walk.len();
+            for (k, &key) in walk.iter().enumerate() {
+                let node = number[first + k] as usize;
+                r.key[node] = key;
+                r.next[node] = number[first + (k + 1) % m];
+                r.prev[node] = number[first + (k + m - 1) % m];
+                r.cycle[node] = c as u32;
+                r.walk_order[node] = (first + k) as u32;
+            }
+            first += m;
+        }
+        r
+    }
+
+    /// The number node `n` has in walk order (its own number unless [`Rings::by_key`] numbered
+    /// the nodes).
+    fn walk_number(&self, n: u32) -> u32 {
+        self.walk_order.get(n as usize).copied().unwrap_or(n)
+    }
+
+    /// Whether node `a` comes before node `b` in walk order (input walks one after the other,
+    /// then detour copies as they are made): the order merges break ties by.
+    pub(crate) fn precedes(&self, a: u32, b: u32) -> bool {
+        self.walk_number(a) < self.walk_number(b)
     }
 
     /// The number of nodes (detour copies included).
@@ -203,11 +275,16 @@ impl Rings {
         self.size[root as usize] = nodes;
     }
 
-    /// The rings as walks of keys, each from its lowest node (nodes left unlinked skipped).
+    /// The rings as walks of keys, each from its first node in walk order (nodes left unlinked
+    /// skipped).
     pub(crate) fn walks(&self) -> Vec<Vec<u32>> {
         let mut seen = vec![false; self.len()];
         let mut out = Vec::new();
-        for start in 0..self.len() as u32 {
+        let mut by_walk_order: Vec<u32> = (0..self.len() as u32).collect();
+        for (new, &old) in self.walk_order.iter().enumerate() {
+            by_walk_order[old as usize] = new as u32;
+        }
+        for start in by_walk_order {
             if seen[start as usize] || self.next[start as usize] == NONE {
                 continue;
             }
