@@ -39,6 +39,7 @@ impl Pixel {
     /// The direction of a unit move from `self` to `other`, if they are 4-adjacent.
     ///
     /// Computed in `i64`, so that pixels 2^32 − 1 apart are never taken for neighbours.
+    #[inline]
     pub fn dir_to(self, other: Pixel) -> Option<Dir> {
         let delta = |a: i32, b: i32| i64::from(b) - i64::from(a);
         match (delta(self.x, other.x), delta(self.y, other.y)) {
@@ -137,6 +138,7 @@ impl Dir {
 
     /// Turn cost of changing heading from `self` to `next`: 0 straight, 1 for 90°, 2 for a
     /// U-turn (turn-cost paper, Section 2).
+    #[inline]
     pub fn turn_to(self, next: Dir) -> u32 {
         match (next.index() + 4 - self.index()) % 4 {
             0 => 0,
@@ -411,6 +413,7 @@ impl Region {
     }
 
     /// Number of pixels, N.
+    #[inline]
     pub fn len(&self) -> usize {
         self.pixels.len()
     }
@@ -424,6 +427,7 @@ impl Region {
         &self.pixels
     }
 
+    #[inline]
     pub fn pixel(&self, i: usize) -> Pixel {
         self.pixels[i]
     }
@@ -467,6 +471,7 @@ impl Region {
     /// # Complexity
     /// O(1) when the bounding box has at most 4N cells; else O(log r) for r runs in the row of
     /// `p` (plus O(log rows) when some rows between the lowest and the highest are empty).
+    #[inline]
     pub fn index_of(&self, p: Pixel) -> Option<usize> {
         if !self.dense.is_empty() {
             let b = &self.bbox;
@@ -494,6 +499,7 @@ impl Region {
     }
 
     /// Index of the neighbour of pixel `i` in direction `d`, if present. O(1).
+    #[inline]
     pub fn neighbor(&self, i: usize, d: Dir) -> Option<usize> {
         let p = self.pixels[i];
         match d {
@@ -518,6 +524,7 @@ impl Region {
 
     /// The 4-neighbours of pixel `i` in the region (its grid-graph neighbours), in the order
     /// E, N, W, S.
+    #[inline]
     pub fn neighbors(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
         Dir::ALL
             .into_iter()
@@ -525,6 +532,7 @@ impl Region {
     }
 
     /// Number of grid-graph neighbours of pixel `i`.
+    #[inline]
     pub fn degree(&self, i: usize) -> usize {
         self.neighbors(i).count()
     }

@@ -70,28 +70,56 @@ pub struct Labels {
 /// numbered in the order of their first pixel. The crate's one component labelling: callers
 /// use this rather than a search of their own.
 ///
+/// Found on the rows' maximal runs: runs of adjacent rows that overlap in x are joined in a
+/// union-find, then every run writes its component into its pixels (a search pixel by pixel
+/// was 40% of milling25's time at 10^6 pixels).
+///
 /// # Complexity
-/// O(N) time and space.
+/// O(N + R α(R)) time and O(N) space for R runs.
 pub fn components(region: &Region) -> Labels {
-    let n = region.len();
-    let mut label = vec![u32::MAX; n];
-    let mut count = 0;
-    let mut stack = Vec::new();
-    for s in 0..n {
-        if label[s] != u32::MAX {
+    // Every run as (x0, x1, first pixel), row after row; row r's runs are
+    // runs[row_start[r]..row_start[r + 1]].
+    let mut runs: Vec<(i32, i32, usize)> = Vec::new();
+    let mut row_start = vec![0];
+    let mut row_y = Vec::with_capacity(region.row_count());
+    for r in 0..region.row_count() {
+        let (y, row) = region.row_runs(r);
+        runs.extend(row);
+        row_start.push(runs.len());
+        row_y.push(y);
+    }
+    let mut uf = UnionFind::<u32>::new(runs.len());
+    for r in 1..row_y.len() {
+        if i64::from(row_y[r]) - i64::from(row_y[r - 1]) != 1 {
             continue;
         }
-        label[s] = count;
-        stack.push(s);
-        while let Some(i) = stack.pop() {
-            for j in region.neighbors(i) {
-                if label[j] == u32::MAX {
-                    label[j] = count;
-                    stack.push(j);
-                }
+        // The runs of two adjacent rows, both sorted by x, joined where they overlap.
+        let (mut i, mut j) = (row_start[r - 1], row_start[r]);
+        while i < row_start[r] && j < row_start[r + 1] {
+            let (a, b) = (runs[i], runs[j]);
+            if a.0 <= b.1 && b.0 <= a.1 {
+                uf.union(i as u32, j as u32);
+            }
+            if a.1 < b.1 {
+                i += 1;
+            } else {
+                j += 1;
             }
         }
-        count += 1;
+    }
+    // Runs come in pixel order, so numbering roots as they first appear numbers the
+    // components in the order of their first pixel.
+    let mut label = vec![u32::MAX; region.len()];
+    let mut number = vec![u32::MAX; runs.len()];
+    let mut count = 0;
+    for (k, &(x0, x1, first)) in runs.iter().enumerate() {
+        let root = uf.find_mut(k as u32) as usize;
+        if number[root] == u32::MAX {
+            number[root] = count;
+            count += 1;
+        }
+        let len = (i64::from(x1) - i64::from(x0) + 1) as usize;
+        label[first..first + len].fill(number[root]);
     }
     Labels {
         label,
@@ -865,6 +893,32 @@ mod tests {
         count
     }
 
+    /// Component labels by a search pixel by pixel through `Region::contains`, components
+    /// numbered in the order of their first pixel.
+    fn reference_labels(r: &Region) -> Vec<u32> {
+        let mut label = vec![u32::MAX; r.len()];
+        let mut count = 0;
+        for s in 0..r.len() {
+            if label[s] != u32::MAX {
+                continue;
+            }
+            label[s] = count;
+            let mut stack = vec![r.pixel(s)];
+            while let Some(p) = stack.pop() {
+                for d in Dir::ALL {
+                    if let Some(j) = r.index_of(p.step(d))
+                        && label[j] == u32::MAX
+                    {
+                        label[j] = count;
+                        stack.push(p.step(d));
+                    }
+                }
+            }
+            count += 1;
+        }
+        label
+    }
+
     /// Euler characteristic V − E + F of the pixel complex (pixels, 4-adjacent pairs and 2×2
     /// blocks); with a 4-connected region and an 8-connected complement it equals
     /// components − holes.
@@ -913,7 +967,9 @@ mod tests {
             let cells = reference_hole_cells(&r);
             prop_assert_eq!(h.count, cells.len());
             prop_assert_eq!(h.hole_cells(), cells.clone());
-            let c = components(&r).count;
+            let labels = components(&r);
+            prop_assert_eq!(&labels.label, &reference_labels(&r));
+            let c = labels.count;
             prop_assert_eq!(c, reference_component_count(&r));
             prop_assert_eq!(c as i64 - h.count as i64, euler_characteristic(&r));
             // Every cell of the box grown by one gets its complement component.
