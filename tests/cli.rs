@@ -983,3 +983,34 @@ fn claims_saves_findings_from_the_walks_the_run_kept() {
         );
     }
 }
+
+/// Where `solve`'s time went: the JSON's `phases` (parse, precondition, run, check, each a
+/// non-negative number of seconds, the run equal to `seconds`), the text's `time:` line with
+/// `--timings`, and `--timings` refused where no phases are printed (exit 2).
+#[test]
+fn solve_reports_where_the_time_went() {
+    let args = ["solve", "instances/fixtures/rect-2x3.grid", "--algo", "tsp65"];
+    let j = json(&mowmill(&[&args[..], &["--json"]].concat()));
+    let phases = &j["phases"];
+    for key in ["parse", "precondition", "run", "check"] {
+        let s = phases[key].as_f64().unwrap_or(-1.0);
+        assert!(s >= 0.0, "{key}: {phases}");
+    }
+    assert_eq!(phases["run"], j["seconds"]);
+    let o = mowmill(&[&args[..], &["--timings"]].concat());
+    let text = String::from_utf8_lossy(&o.stdout);
+    let line = text.lines().find(|l| l.trim_start().starts_with("time:"));
+    let line = line.unwrap_or_else(|| panic!("no time line in {text}"));
+    for part in ["parse ", "precondition ", "run ", "check "] {
+        assert!(line.contains(part), "{line}");
+    }
+    let o = mowmill(&["solve", "instances/fixtures/rect-2x3.grid", "--algo", "tsp65"]);
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("time:"));
+    let dir = temp_dir("timings");
+    let wkt = dir.join("half.wkt");
+    std::fs::write(&wkt, "POLYGON((0 0, 2.5 0, 2.5 2, 0 2, 0 0))\n").unwrap();
+    let args = ["solve", wkt.to_str().unwrap(), "--algo", "corollary4"];
+    let o = mowmill(&[&args[..], &["--timings"]].concat());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--timings does not apply"));
+}

@@ -51,6 +51,10 @@ pub struct SolveArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Also print where the time went: parse, precondition, run, check (the JSON has it always,
+    /// as `phases`).
+    #[arg(long)]
+    pub timings: bool,
     /// Write the walk(s) of the printed output to this tour file.
     #[arg(long)]
     pub tour_out: Option<PathBuf>,
@@ -125,6 +129,7 @@ fn refuse_ignored(a: &SolveArgs, model: &str, applies: &[&str]) -> Result<()> {
         ("--turn-cost", a.turn_cost.is_some()),
         ("--objective", a.objective.is_some()),
         ("--cycle-cover", a.cycle_cover),
+        ("--timings", a.timings),
     ];
     if let Some((option, _)) = given.iter().find(|(o, g)| *g && !applies.contains(o)) {
         let expected = if applies.is_empty() {
@@ -164,7 +169,7 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
             refuse_ignored(
                 &a,
                 &model,
-                &["--objective", "--cycle-cover", "--time-limit"],
+                &["--objective", "--cycle-cover", "--time-limit", "--timings"],
             )?;
             let objective = wanted.unwrap_or(Objective::Length);
             if !matches!(
@@ -190,13 +195,19 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 &[objective],
                 &Reference::default(),
             );
+            let phases = Phases {
+                parse: None,
+                precondition: None,
+                run: eval.seconds,
+                check: eval.check_seconds,
+            };
             return report::<mowmill::discrete::Discrete>(
                 &a,
                 subject,
                 &eval,
                 objective,
                 inst.len() as u64,
-                None,
+                (None, phases),
             );
         };
         let mut applies = vec!["--objective", "--cycle-cover", "--merge", "--exact"];
@@ -239,7 +250,10 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         let algo = a.algo.as_deref().unwrap_or("corollary4");
         return super::ortho::solve(&a.file, algo, a.tour_out.as_deref(), a.json);
     }
+    let parsing = std::time::Instant::now();
     let inst = Instance::read(&a.file)?;
+    let parse_seconds = parsing.elapsed().as_secs_f64();
+    let mut precondition_seconds = 0.0;
     let mut options = Options {
         coverage4: a.coverage4,
         ..Options::default()
@@ -260,8 +274,10 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
                 ))
             })?;
             // A precondition the user's instance misses is bad input (exit 2).
+            let checking = std::time::Instant::now();
             (algo.precondition)(&inst.region)
                 .with_context(|| format!("{} does not apply to {}", algo.name, a.file.display()))?;
+            precondition_seconds = checking.elapsed().as_secs_f64();
             Subject::Registered(algo)
         }
         (None, Some(command)) => {
@@ -278,7 +294,13 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
         Subject::Registered(_) => evaluate::relevant_options(subject.objectives()),
         Subject::Outside(_) => (false, false, false),
     };
-    let mut applies = vec!["--objective", "--cycle-cover", "--turn-cost", "--exact"];
+    let mut applies = vec![
+        "--objective",
+        "--cycle-cover",
+        "--turn-cost",
+        "--exact",
+        "--timings",
+    ];
     for (option, relevant) in [
         ("--merge", merge),
         ("--cutter", cutter),
@@ -326,28 +348,46 @@ pub fn solve_command(a: SolveArgs) -> Result<ExitCode> {
     }
     let eval = evaluate::evaluate(subject, &inst.region, &options, &[objective], &reference);
     let exact_json = a.exact.then_some(exact_json);
+    let phases = Phases {
+        parse: Some(parse_seconds),
+        precondition: Some(precondition_seconds),
+        run: eval.seconds,
+        check: eval.check_seconds,
+    };
     report::<mowmill::region::Region>(
         &a,
         subject,
         &eval,
         objective,
         inst.region.len() as u64,
-        exact_json,
+        (exact_json, phases),
     )
+}
+
+/// Where a run of `solve` spent its wall time, in seconds: reading the file (with the region's
+/// indexes), the algorithm's precondition (component and hole counts), the run itself (with
+/// its merge), and the checker's recount with the lower bounds. `None` where not timed.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+struct Phases {
+    parse: Option<f64>,
+    precondition: Option<f64>,
+    run: f64,
+    check: f64,
 }
 
 /// Prints an evaluated run of `solve` (text, or JSON with `--json`), writes `--tour-out`, and
 /// gives the exit code: 1 when the output is invalid or a guarantee is violated, 2 when a
 /// registered algorithm refused the instance or an option, 3 when the algorithm (or outside
 /// program) failed. `n` is the instance's size (pixels or vertices); `exact` the exact
-/// solve's summary when `--exact` ran one.
+/// solve's summary when `--exact` ran one; `phases` where the time went (JSON key `phases`,
+/// and a `time:` line of text with `--timings`).
 fn report<M: InstanceModel>(
     a: &SolveArgs,
     subject: Subject<'_>,
     eval: &evaluate::Evaluation<M::Cover>,
     objective: Objective,
     n: u64,
-    exact: Option<serde_json::Value>,
+    (exact, phases): (Option<serde_json::Value>, Phases),
 ) -> Result<ExitCode> {
     let options = &eval.options;
     if let Some(e) = &eval.error {
@@ -396,6 +436,7 @@ fn report<M: InstanceModel>(
             "opt_status": out.opt_status,
             "n": n,
             "seconds": eval.seconds,
+            "phases": phases,
             "options": {
                 "merge": options.merge.to_string(),
                 "cutter": options.cutter.to_string(),
@@ -411,6 +452,16 @@ fn report<M: InstanceModel>(
         println!("{}", serde_json::to_string_pretty(&json)?);
     } else {
         print_text(subject.name(), out, &eval.certificates);
+        if a.timings {
+            let seconds = |s: Option<f64>| s.map_or("–".to_string(), |s| format!("{s:.3} s"));
+            println!(
+                "  time: parse {}, precondition {}, run {}, check {}",
+                seconds(phases.parse),
+                seconds(phases.precondition),
+                seconds(Some(phases.run)),
+                seconds(Some(phases.check)),
+            );
+        }
     }
     let violated = out.within_guarantee == Some(false);
     Ok(if out.valid && !violated {
