@@ -989,7 +989,12 @@ fn claims_saves_findings_from_the_walks_the_run_kept() {
 /// `--timings`, and `--timings` refused where no phases are printed (exit 2).
 #[test]
 fn solve_reports_where_the_time_went() {
-    let args = ["solve", "instances/fixtures/rect-2x3.grid", "--algo", "tsp65"];
+    let args = [
+        "solve",
+        "instances/fixtures/rect-2x3.grid",
+        "--algo",
+        "tsp65",
+    ];
     let j = json(&mowmill(&[&args[..], &["--json"]].concat()));
     let phases = &j["phases"];
     for key in ["parse", "precondition", "run", "check"] {
@@ -1004,7 +1009,12 @@ fn solve_reports_where_the_time_went() {
     for part in ["parse ", "precondition ", "run ", "check "] {
         assert!(line.contains(part), "{line}");
     }
-    let o = mowmill(&["solve", "instances/fixtures/rect-2x3.grid", "--algo", "tsp65"]);
+    let o = mowmill(&[
+        "solve",
+        "instances/fixtures/rect-2x3.grid",
+        "--algo",
+        "tsp65",
+    ]);
     assert!(!String::from_utf8_lossy(&o.stdout).contains("time:"));
     let dir = temp_dir("timings");
     let wkt = dir.join("half.wkt");
