@@ -414,13 +414,7 @@ fn join_lone_ends<G: SearchGraph + Sync>(
     );
     let mut added = 0;
     for (x, y) in pairs {
-        let target = vertices[y];
-        search.run(search_graph, vertices[x], |v, _| v == target);
-        let path: Vec<usize> = search
-            .path_to_last()
-            .into_iter()
-            .map(|v| search_graph.pixel(region, v))
-            .collect();
+        let path = search.path(search_graph, region, vertices[x], vertices[y]);
         debug_assert_eq!(path.len() - 1, at(x, y) as usize);
         graph.add_path(region, &path);
         added += (path.len() - 1) as u64;
@@ -659,6 +653,16 @@ impl Search {
         }
     }
 
+    /// A shortest path from vertex `a` to vertex `b` of `graph`, as pixels of `region`: the
+    /// search from `a`, stopped at `b`, walked back by parent links.
+    fn path<G: SearchGraph>(&mut self, graph: &G, region: &Region, a: u32, b: u32) -> Vec<usize> {
+        self.run(graph, a, |v, _| v == b);
+        self.path_to_last()
+            .into_iter()
+            .map(|v| graph.pixel(region, v))
+            .collect()
+    }
+
     /// The path from the last search's start to the vertex where it stopped, by parent links.
     fn path_to_last(&self) -> Vec<u32> {
         let mut k = self.last;
@@ -798,13 +802,7 @@ mod tests {
             let mut search = Search::new(self.size());
             for x in 0..ends.len() {
                 for y in 0..ends.len() {
-                    let target = vertices[y];
-                    search.run(self, vertices[x], |v, _| v == target);
-                    let path: Vec<usize> = search
-                        .path_to_last()
-                        .into_iter()
-                        .map(|v| self.pixel(region, v))
-                        .collect();
+                    let path = search.path(self, region, vertices[x], vertices[y]);
                     assert_eq!(path.len() as u32 - 1, plain[x][y], "{name}");
                     assert_eq!((path[0], *path.last().unwrap()), (ends[x], ends[y]));
                     for step in path.windows(2) {
